@@ -1,0 +1,54 @@
+# Helpers shared by every layer's CMakeLists.txt.
+
+# Warnings (as errors unless MECHSIM_WERROR is off) on mechsim's own targets only.
+function(mechsim_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+                                           -Wconversion -Wno-sign-conversion)
+  if(MECHSIM_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+# mechsim_library(NAME SOURCES ... DEPS ...): one layer folder = one library `mechsim_<NAME>`.
+# Headers are included as "<layer>/<file>.hpp" from src/.
+function(mechsim_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(mechsim_${name} ${ARG_SOURCES})
+  target_include_directories(mechsim_${name} PUBLIC "${PROJECT_SOURCE_DIR}/src")
+  target_link_libraries(mechsim_${name} PUBLIC ${ARG_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  mechsim_warnings(mechsim_${name})
+endfunction()
+
+# mechsim_test(NAME SOURCES ... DEPS ... [LABELS ...]): a GoogleTest program run by CTest.
+# LABELS defaults to "unit"; the sanitizer build runs the "unit" label only. Other labels in use:
+# "conformance" (data-driven suites over ../shared), "scenario" (whole simulations), "cli".
+# Tests find ../shared through MECHSIM_SHARED_DIR and skip when it is absent.
+function(mechsim_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  if(NOT ARG_LABELS)
+    set(ARG_LABELS unit)
+  endif()
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gmock GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE
+    MECHSIM_SHARED_DIR="${MECHSIM_SHARED_DIR}"
+    MECHSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    MECHSIM_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    MECHSIM_EXE="${PROJECT_BINARY_DIR}/bin/mechsim")
+  mechsim_warnings(${name})
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+                       PROPERTIES TIMEOUT 300 LABELS "${ARG_LABELS}")
+endfunction()
+
+# mechsim_benchmark(NAME SOURCES ... DEPS ...): a Google Benchmark program (not run by CTest).
+function(mechsim_benchmark name)
+  if(NOT MECHSIM_BENCHMARKS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} benchmark::benchmark)
+  target_compile_definitions(${name} PRIVATE MECHSIM_SHARED_DIR="${MECHSIM_SHARED_DIR}"
+                                             MECHSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  mechsim_warnings(${name})
+endfunction()

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package mechsim needs to build, test and run. Idempotent.
+# Usage: scripts/install-deps.sh [--with-ros]
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libmujoco-dev libqhull-dev libgl-dev libopengl-dev libegl-dev
+  liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libyaml-cpp-dev libcli11-dev
+  libeigen3-dev nlohmann-json3-dev libtiff-dev libpng-dev libassimp-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  gnuplot-nox
+)
+if [[ "${1:-}" == "--with-ros" ]]; then
+  packages+=(ros-core-dev libroscpp-dev libactionlib-dev libtf2-ros-dev ros-std-msgs
+             ros-geometry-msgs ros-nav-msgs ros-sensor-msgs ros-rosgraph-msgs ros-std-srvs python3-genmsg python3-gencpp)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

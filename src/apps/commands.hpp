@@ -1,0 +1,23 @@
+#pragma once
+// Each `mechsim` subcommand lives in its own cmd_<name>.cpp and registers itself here.
+// A command reports a user error by throwing UserError (or any std::exception): main prints
+// "mechsim <command>: error: <message>" on stderr and exits with status 1.
+
+#include <CLI/CLI.hpp>
+#include <stdexcept>
+
+namespace mechsim::apps {
+
+struct UserError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Exit status a command wants when it did not throw (e.g. `check` found errors: 1).
+struct CommandResult {
+  int exit_code = 0;
+};
+
+void add_xacro_command(CLI::App& app, CommandResult& result);
+void add_check_command(CLI::App& app, CommandResult& result);
+
+}  // namespace mechsim::apps
