@@ -1,0 +1,34 @@
+#pragma once
+// mechsim's xacro: expands xacro documents with the semantics of ROS Noetic's xacro
+// (in-order processing). Drop-in for `xacro FILE name:=value ...`.
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mechsim::description {
+
+struct XacroOptions {
+  std::map<std::string, std::string> args;      // name:=value mappings from the command line
+  std::map<std::string, std::string> packages;  // --package NAME=DIR, searched before ROS_PACKAGE_PATH
+};
+
+// An expansion failure. what() is the full message: the problem, then the file and line, then
+// the include/macro stack ("  in macro 'x' called from FILE:LINE" lines), as xacro prints it.
+class XacroError : public std::runtime_error {
+ public:
+  explicit XacroError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// Expands the file at `path`; returns the output document exactly as `xacro path -o OUT` writes
+// it (XML declaration, generated-file banner, 2-space indentation). Throws XacroError.
+std::string expand_xacro_file(const std::string& path, const XacroOptions& options);
+
+// Expands a document held in memory; `source_name` names it in messages and in the banner, and
+// relative includes resolve from the current working directory. Throws XacroError.
+std::string expand_xacro_string(std::string_view document, const std::string& source_name,
+                                const XacroOptions& options);
+
+}  // namespace mechsim::description
