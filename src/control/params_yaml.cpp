@@ -1,0 +1,104 @@
+// Reading Params from YAML with yaml-cpp.
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "control/params.hpp"
+#include "control/params_node.hpp"
+
+namespace mechsim::control {
+namespace {
+
+std::string where(const std::string& source, const YAML::Mark& mark) {
+  return source + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& source, const std::string& path) {
+  auto out = std::make_unique<Params::Node>();
+  out->line = in.Mark().line + 1;
+  switch (in.Type()) {
+    case YAML::NodeType::Undefined:
+    case YAML::NodeType::Null:
+      out->kind = Params::Kind::Null;
+      break;
+    case YAML::NodeType::Scalar:
+      out->kind = Params::Kind::Scalar;
+      out->text = in.Scalar();
+      // yaml-cpp tags plain scalars "?" and quoted ones "!".
+      out->scalar = in.Tag() == "!" ? ScalarType::Quoted : ScalarType::Plain;
+      break;
+    case YAML::NodeType::Sequence: {
+      out->kind = Params::Kind::List;
+      std::size_t i = 0;
+      for (const YAML::Node& item : in) {
+        out->list.push_back(convert(item, source, path + "[" + std::to_string(i++) + "]"));
+      }
+      break;
+    }
+    case YAML::NodeType::Map:
+      out->kind = Params::Kind::Map;
+      for (const auto& entry : in) {
+        if (!entry.first.IsScalar()) {
+          throw ParamsError(where(source, entry.first.Mark()) + ": parameter " + path +
+                                ": map keys must be plain names",
+                            path);
+        }
+        const std::string key = entry.first.Scalar();
+        const std::string child_path = join_param_path(path, key);
+        if (key.empty() || key.find('/') != std::string::npos) {
+          throw ParamsError(where(source, entry.first.Mark()) + ": parameter " + child_path +
+                                ": a key must be non-empty and contain no '/'",
+                            child_path);
+        }
+        for (const auto& existing : out->map) {
+          if (existing.first == key) {
+            throw ParamsError(where(source, entry.first.Mark()) + ": parameter " + child_path +
+                                  ": duplicate key (first at line " + std::to_string(existing.second->line) + ")",
+                              child_path);
+          }
+        }
+        out->map.emplace_back(key, convert(entry.second, source, child_path));
+      }
+      break;
+  }
+  return out;
+}
+
+Params load(const std::string& text, const std::string& source) {
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ParamsError(where(source, e.mark) + ": malformed YAML: " + e.msg, "/");
+  }
+  auto tree = std::make_shared<Params::Tree>();
+  tree->source = source;
+  if (doc.IsNull() || !doc.IsDefined()) {
+    tree->root = std::make_unique<Params::Node>();
+    tree->root->kind = Params::Kind::Map;  // an empty document is an empty parameter tree
+  } else if (!doc.IsMap()) {
+    throw ParamsError(where(source, doc.Mark()) + ": the top level of a parameter file must be a map", "/");
+  } else {
+    tree->root = convert(doc, source, "/");
+  }
+  return ParamsAccess::make(std::move(tree));
+}
+
+}  // namespace
+
+Params Params::from_yaml_string(std::string_view yaml, const std::string& source_name) {
+  return load(std::string(yaml), source_name);
+}
+
+Params Params::from_yaml_file(const std::string& file_path) {
+  std::ifstream in(file_path, std::ios::binary);
+  if (!in) throw ParamsError(file_path + ": cannot open the parameter file", "/");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ParamsError(file_path + ": error while reading the parameter file", "/");
+  return load(text.str(), file_path);
+}
+
+}  // namespace mechsim::control
