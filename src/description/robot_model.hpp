@@ -158,13 +158,23 @@ struct Transmission {
 struct GazeboLinkProperties {
   std::optional<double> mu1, mu2, kp, kd, min_depth, max_vel;
   std::optional<bool> self_collide;
-  std::optional<bool> gravity;
-  std::string material;
+  std::optional<bool> gravity;  // also set (negated) by <turnGravityOff>
+  std::string material;         // <material>NAME</material> or <material value="NAME"/>
+  int line = 0;                 // the first <gazebo reference> element naming the link
+};
+
+// <gazebo reference="joint"> properties (Gazebo's joint stops and ODE options).
+struct GazeboJointProperties {
+  std::optional<double> stop_kp, stop_kd;  // joint-limit stop stiffness (N m/rad) and damping
+  std::optional<double> fudge_factor;
+  std::optional<bool> provide_feedback, implicit_spring_damper;
+  int line = 0;
 };
 
 struct GazeboPlugin {
   std::string name, filename;
   std::string reference;  // the gazebo element's reference, empty for the robot
+  std::string sensor;     // the enclosing <sensor>'s name; empty for a model plugin
   std::map<std::string, std::string> parameters;  // simple child elements: name -> trimmed text
   XmlNode xml;
 };
@@ -177,7 +187,8 @@ struct RobotModel {
   std::vector<Joint> joints;  // document order
   std::vector<Transmission> transmissions;
   std::map<std::string, GazeboLinkProperties> gazebo_links;  // by link name
-  std::vector<GazeboPlugin> plugins;
+  std::vector<GazeboPlugin> plugins;  // document order; model and sensor plugins
+  std::map<std::string, GazeboJointProperties> gazebo_joints;  // by joint name
 
   const Link* link(const std::string& link_name) const;     // null when absent
   const Joint* joint(const std::string& joint_name) const;  // null when absent
