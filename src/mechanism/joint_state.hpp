@@ -2,6 +2,7 @@
 // Per-instance mutable state of joints and actuators (the "data" half of the model/data split).
 
 #include <cstdint>
+#include <limits>
 
 namespace mechsim::mechanism {
 
@@ -18,6 +19,10 @@ struct JointState {
   double commanded_position = 0.0;  // rad or m
   double commanded_velocity = 0.0;  // rad/s or m/s
   HardwareInterface command_mode = HardwareInterface::Effort;
+  // The position command let through by the previous tick's safety limits, the origin of the
+  // one-period reachability bound (ros_control's joint-limits semantics). NaN when the joint
+  // was not position-commanded on the previous tick.
+  double last_position_command = std::numeric_limits<double>::quiet_NaN();  // rad or m
 };
 
 struct ActuatorState {

@@ -2,8 +2,9 @@
 // The mechanism of one robot: joints, actuators and the transmissions between them, built once
 // from a description::RobotModel (MechanismModel, immutable) plus the per-instance state
 // (MechanismState). Hot-path functions take (const MechanismModel&, MechanismState&) and neither
-// allocate nor throw.
+// allocate nor throw. build_mechanism (mechanism/build_mechanism.hpp) makes a MechanismModel.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,10 +12,9 @@
 
 #include "description/robot_model.hpp"
 #include "mechanism/joint_state.hpp"
+#include "mechanism/transmission.hpp"
 
 namespace mechsim::mechanism {
-
-class Transmission;  // mechanism/transmission.hpp
 
 struct JointInfo {
   std::string name;
@@ -24,15 +24,26 @@ struct JointInfo {
   std::optional<description::SafetyController> safety;
   std::optional<description::Mimic> mimic;
   // Hardware interfaces the transmissions make available for this joint (Effort if the
-  // transmission names none, as the PR2 format does).
+  // transmission names none, as the PR2 format does). Empty for passive and simulated joints,
+  // which no controller may command.
   std::vector<HardwareInterface> interfaces;
+  // What the joint is to its transmission. The physics applies commanded efforts to Actuated
+  // joints; Passive joints (PR2 gripper fingers) follow the transmission; SimulatedActuated joints
+  // (PR2 Gazebo screw joints) carry the PR2 screw torque for a backend that models the screw.
+  JointRole role = JointRole::Actuated;
+  int transmission = -1;  // index into MechanismModel::transmissions
+  int line = 0;           // the URDF <joint> element's line
+
+  bool has_interface(HardwareInterface hw) const;
 };
 
 struct ActuatorInfo {
   std::string name;
+  int transmission = -1;  // index into MechanismModel::transmissions
 };
 
 struct MechanismModel {
+  std::string source;                  // the description's file, for messages
   std::vector<JointInfo> joints;       // only joints driven by a transmission (+ passive ones)
   std::vector<ActuatorInfo> actuators;
   std::vector<std::unique_ptr<const Transmission>> transmissions;
@@ -44,6 +55,11 @@ struct MechanismModel {
 struct MechanismState {
   std::vector<JointState> joints;        // indexed like MechanismModel::joints
   std::vector<ActuatorState> actuators;  // indexed like MechanismModel::actuators
+  // Non-finite commands (NaN, inf) that enforce_safety_limits replaced since the state was made.
+  std::uint64_t rejected_commands = 0;
 };
+
+// A state sized for `model`, everything at rest and zero.
+MechanismState make_state(const MechanismModel& model);
 
 }  // namespace mechsim::mechanism

@@ -25,10 +25,14 @@ void propagate_joint_to_actuator_effort(const MechanismModel& model, MechanismSt
 // Actuator commands -> joint commands (what the physics applies).
 void propagate_actuator_to_joint_effort(const MechanismModel& model, MechanismState& state);
 
-// Clamps each joint's commanded effort to its effort limit and, where the joint has a
+// Clamps each actuated joint's commanded effort to its effort limit and, where the joint has a
 // <safety_controller>, to the PR2's position- and velocity-dependent bounds. Position and
-// velocity commands are clamped ros_control-style (position into the soft or hard limits,
-// velocity to the velocity limit). Non-finite commands are replaced by 0 effort.
-void enforce_safety_limits(const MechanismModel& model, MechanismState& state);
+// velocity commands are clamped ros_control-style (position into the soft or hard limits and
+// within one period of travel at the velocity limit, velocity to the velocity limit). Non-finite
+// commands are replaced (effort and velocity by 0, position by the last good one) and counted in
+// state.rejected_commands. The laws are in mechanism/safety_limits.hpp. `period` in s.
+inline constexpr double kDefaultPeriod = 0.001;  // s, the 1 kHz tick
+void enforce_safety_limits(const MechanismModel& model, MechanismState& state, double period);
+void enforce_safety_limits(const MechanismModel& model, MechanismState& state);  // kDefaultPeriod
 
 }  // namespace mechsim::mechanism

@@ -1,0 +1,45 @@
+#include "mechanism/transmission_factory.hpp"
+
+#include <array>
+#include <string_view>
+
+#include "mechanism/simple_transmission.hpp"
+#include "mechanism/transmission_builder.hpp"
+
+namespace mechsim::mechanism {
+
+namespace {
+
+using Builder = std::unique_ptr<Transmission> (*)(TransmissionBuilder&);
+
+struct TypeEntry {
+  std::string_view name;
+  Builder build;
+};
+
+// "SimpleTransmission" without a package is the pre-Electric PR2 spelling.
+constexpr std::array kTypes{
+    TypeEntry{"transmission_interface/SimpleTransmission", &build_simple_transmission},
+    TypeEntry{"pr2_mechanism_model/SimpleTransmission", &build_simple_transmission},
+    TypeEntry{"SimpleTransmission", &build_simple_transmission},
+};
+
+}  // namespace
+
+std::unique_ptr<Transmission> build_transmission(TransmissionBuilder& builder) {
+  const std::string& type = builder.spec().type;
+  for (const TypeEntry& t : kTypes)
+    if (t.name == type) return t.build(builder);
+  std::string known;
+  for (const TypeEntry& t : kTypes) known += (known.empty() ? "" : ", ") + std::string(t.name);
+  builder.fail(type.empty() ? "no transmission type given (known: " + known + ")"
+                            : "unknown transmission type '" + type + "' (known: " + known + ")");
+}
+
+std::vector<std::string> known_transmission_types() {
+  std::vector<std::string> out;
+  for (const TypeEntry& t : kTypes) out.emplace_back(t.name);
+  return out;
+}
+
+}  // namespace mechsim::mechanism
