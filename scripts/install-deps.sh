@@ -12,8 +12,15 @@ packages=(
   gnuplot-nox
 )
 if [[ "${1:-}" == "--with-ros" ]]; then
-  packages+=(ros-core-dev libroscpp-dev libactionlib-dev libtf2-ros-dev ros-std-msgs
-             ros-geometry-msgs ros-nav-msgs ros-sensor-msgs ros-rosgraph-msgs ros-std-srvs python3-genmsg python3-gencpp)
+  # ROS 1 (Noetic-era, as Debian packages it) for src/ros: roscpp and actionlib, the C++ headers
+  # of the message packages mechsim exchanges, their .msg definitions under /usr/share/<pkg>/msg
+  # (gencpp's include paths), and the generators (genaction.py ships with ros-actionlib-msgs).
+  packages+=(ros-core-dev libroscpp-dev libactionlib-dev libtf2-ros-dev
+             libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libnav-msgs-dev libsensor-msgs-dev
+             libtrajectory-msgs-dev libactionlib-msgs-dev libtf2-msgs-dev libros-rosgraph-msgs-dev
+             ros-std-msgs ros-std-srvs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs
+             ros-trajectory-msgs ros-actionlib-msgs ros-tf2-msgs ros-rosgraph-msgs
+             python3-genmsg python3-gencpp python3-empy)
 fi
 
 missing=()

@@ -4,7 +4,7 @@
 # tests in the second.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --with-ros
 scripts/build.sh release
 ctest --test-dir build/release --output-on-failure -j 2
 scripts/build.sh asan
