@@ -1,0 +1,312 @@
+#include "physics/body_plan.hpp"
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "physics/physics_error.hpp"
+#include "physics/transform.hpp"
+
+namespace mechsim::physics {
+namespace {
+
+using description::JointType;
+using description::Link;
+using description::RobotModel;
+
+bool massless(const Link& link) { return !link.inertial || !(link.inertial->mass > 0.0); }
+
+double parse_double(const std::string& text, const std::string& what) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == 0 || !std::isfinite(v)) throw std::invalid_argument(text);
+    return v;
+  } catch (const std::exception&) {
+    throw PhysicsError(what + ": '" + text + "' is not a number");
+  }
+}
+
+// Unit vectors u, v with (u, v, n) right-handed and orthonormal.
+std::pair<Vec3, Vec3> plane_basis(const Vec3& n) {
+  const Vec3 seed = std::fabs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  Vec3 u{n.y * seed.z - n.z * seed.y, n.z * seed.x - n.x * seed.z, n.x * seed.y - n.y * seed.x};
+  const double nu = std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+  u = {u.x / nu, u.y / nu, u.z / nu};
+  const Vec3 v{n.y * u.z - n.z * u.y, n.z * u.x - n.x * u.z, n.x * u.y - n.y * u.x};
+  return {v, u};  // v x u = n  ->  (v, u, n) right-handed
+}
+
+Vec3 unit(const Vec3& a, const std::string& joint) {
+  const double n = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+  if (!(n > 1e-12)) throw PhysicsError("joint '" + joint + "': axis has zero length");
+  return {a.x / n, a.y / n, a.z / n};
+}
+
+class Planner {
+ public:
+  Planner(const RobotModel& robot, const BuildOptions& options) : robot_(robot), options_(options) {}
+
+  BodyPlan run() {
+    const Link* root = robot_.link(robot_.root_link);
+    if (root == nullptr) throw PhysicsError("robot '" + robot_.name + "': root link '" + robot_.root_link + "' not found");
+    const SpawnPose& s = options_.spawn;
+    const Pose X_W_spawn{{s.x, s.y, s.z}, quat_from_rpy(s.roll, s.pitch, s.yaw)};
+    if (root->name == "world") {
+      plan_.fixed_to_world = true;
+      visit(*root, -1, X_W_spawn);
+    } else {
+      PlannedBody body;
+      body.name = root->name;
+      body.X_PB = X_W_spawn;
+      body.inertial = root->inertial;
+      PlannedJoint free;
+      free.name = root->name + ":free";
+      free.kind = PlannedJoint::Kind::Free;
+      body.joints.push_back(free);
+      plan_.bodies.push_back(std::move(body));
+      visit(*root, 0, Pose{});
+    }
+    plan_mimics();
+    plan_differential();
+    return std::move(plan_);
+  }
+
+ private:
+  const description::GazeboLinkProperties& gz(const std::string& link) const {
+    auto it = robot_.gazebo_links.find(link);
+    return it == robot_.gazebo_links.end() ? no_gazebo_ : it->second;
+  }
+
+  void add_geoms(const Link& link, int body, const Pose& X_BL) {
+    const auto& g = gz(link.name);
+    double mu = options_.contact.sliding_friction;
+    if (g.mu1 && g.mu2) {
+      mu = 0.5 * (*g.mu1 + *g.mu2);
+      if (*g.mu1 != *g.mu2)
+        plan_.warnings.push_back("link '" + link.name + "': anisotropic friction mu1=" + std::to_string(*g.mu1) +
+                                 " mu2=" + std::to_string(*g.mu2) + " approximated by their mean " +
+                                 std::to_string(mu) + " (MuJoCo geoms have one sliding coefficient)");
+    } else if (g.mu1) {
+      mu = *g.mu1;
+    } else if (g.mu2) {
+      mu = *g.mu2;
+    }
+    if (g.gravity && !*g.gravity)
+      plan_.warnings.push_back("link '" + link.name + "': <gravity>false</gravity> is not supported; gravity applies");
+    std::vector<PlannedGeom>& out = body < 0 ? plan_.world_geoms : plan_.bodies[body].geoms;
+    for (std::size_t i = 0; i < link.collisions.size(); ++i) {
+      PlannedGeom geom;
+      geom.name = link.name + "/collision/" + std::to_string(i);
+      geom.link = link.name;
+      geom.X_BG = compose(X_BL, link.collisions[i].origin);
+      geom.geometry = link.collisions[i].geometry;
+      geom.self_collide = g.self_collide.value_or(false);
+      geom.friction = mu;
+      out.push_back(std::move(geom));
+    }
+    if (!options_.visuals) return;
+    for (std::size_t i = 0; i < link.visuals.size(); ++i) {
+      PlannedGeom geom;
+      geom.name = link.name + "/visual/" + std::to_string(i);
+      geom.link = link.name;
+      geom.X_BG = compose(X_BL, link.visuals[i].origin);
+      geom.geometry = link.visuals[i].geometry;
+      geom.visual = true;
+      geom.rgba = link.visuals[i].rgba;
+      out.push_back(std::move(geom));
+    }
+  }
+
+  // Places `link` (whose frame is X_BL in body `body`) and recursively its children.
+  void visit(const Link& link, int body, const Pose& X_BL) {
+    if (++depth_guard_ > robot_.links.size() + 1)
+      throw PhysicsError("robot '" + robot_.name + "': the link tree has a cycle at '" + link.name + "'");
+    plan_.link_frames.push_back({link.name, body, X_BL});
+    add_geoms(link, body, X_BL);
+    for (const std::string& joint_name : link.child_joints) {
+      const description::Joint* joint = robot_.joint(joint_name);
+      if (joint == nullptr) throw PhysicsError("link '" + link.name + "': child joint '" + joint_name + "' not found");
+      const Link* child = robot_.link(joint->child_link);
+      if (child == nullptr)
+        throw PhysicsError("joint '" + joint->name + "' (line " + std::to_string(joint->line) + "): child link '" +
+                           joint->child_link + "' not found");
+      const Pose X_BC = compose(X_BL, joint->origin);
+      const bool movable = joint->type != JointType::Fixed;
+      if (massless(*child)) {
+        if (movable) {
+          plan_.warnings.push_back("joint '" + joint->name + "': its child link '" + child->name +
+                                   "' has no mass, so it is merged into '" + link.name +
+                                   "' and the joint is not simulated (Gazebo drops such links too)");
+          plan_.dropped_joints.push_back(joint->name);
+        }
+        visit(*child, body, X_BC);
+        continue;
+      }
+      PlannedBody nb;
+      nb.name = child->name;
+      nb.parent = body;
+      nb.X_PB = X_BC;
+      nb.inertial = child->inertial;
+      add_joints(*joint, nb);
+      const int index = static_cast<int>(plan_.bodies.size());
+      plan_.bodies.push_back(std::move(nb));
+      if (body >= 0) add_exclude(plan_.bodies[body].name, child->name);
+      visit(*child, index, Pose{});
+    }
+  }
+
+  void add_exclude(const std::string& a, const std::string& b) {
+    if (a == b) return;
+    if (excluded_.insert(a < b ? std::make_pair(a, b) : std::make_pair(b, a)).second) plan_.excludes.emplace_back(a, b);
+  }
+
+  void add_joints(const description::Joint& joint, PlannedBody& body) {
+    PlannedJoint pj;
+    pj.name = joint.name;
+    pj.urdf_joint = joint.name;
+    if (joint.dynamics) {
+      pj.damping = joint.dynamics->damping;
+      pj.frictionloss = joint.dynamics->friction;
+    }
+    if (joint.limits) {
+      pj.effort_limit = joint.limits->effort;
+      pj.velocity_limit = joint.limits->velocity;
+    }
+    const auto set_range = [&](PlannedJoint& j) {
+      if (!joint.limits) return;
+      if (!(joint.limits->lower < joint.limits->upper)) {
+        if (joint.limits->lower == joint.limits->upper && joint.limits->lower == 0.0) return;  // "no limits"
+        throw PhysicsError("joint '" + joint.name + "' (line " + std::to_string(joint.line) + "): lower limit " +
+                           std::to_string(joint.limits->lower) + " is not below upper limit " +
+                           std::to_string(joint.limits->upper));
+      }
+      j.limited = true;
+      j.lower = joint.limits->lower;
+      j.upper = joint.limits->upper;
+    };
+    switch (joint.type) {
+      case JointType::Revolute:
+        pj.kind = PlannedJoint::Kind::Hinge;
+        pj.axis = unit(joint.axis, joint.name);
+        pj.one_dof_urdf = true;
+        set_range(pj);
+        body.joints.push_back(pj);
+        break;
+      case JointType::Continuous:
+        pj.kind = PlannedJoint::Kind::Hinge;
+        pj.axis = unit(joint.axis, joint.name);
+        pj.one_dof_urdf = true;
+        body.joints.push_back(pj);
+        break;
+      case JointType::Prismatic:
+        pj.kind = PlannedJoint::Kind::Slide;
+        pj.axis = unit(joint.axis, joint.name);
+        pj.one_dof_urdf = true;
+        set_range(pj);
+        body.joints.push_back(pj);
+        break;
+      case JointType::Planar: {
+        const Vec3 n = unit(joint.axis, joint.name);
+        const auto [u, v] = plane_basis(n);
+        PlannedJoint a = pj, b = pj, c = pj;
+        a.name = joint.name + ":x", a.kind = PlannedJoint::Kind::Slide, a.axis = u;
+        b.name = joint.name + ":y", b.kind = PlannedJoint::Kind::Slide, b.axis = v;
+        c.name = joint.name + ":yaw", c.kind = PlannedJoint::Kind::Hinge, c.axis = n;
+        body.joints.insert(body.joints.end(), {a, b, c});
+        break;
+      }
+      case JointType::Floating: {
+        if (body.parent < 0) {
+          pj.kind = PlannedJoint::Kind::Free;
+          body.joints.push_back(pj);
+        } else {
+          // MuJoCo allows free joints on top-level bodies only: three slides and a ball.
+          const char* names[3] = {":x", ":y", ":z"};
+          const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+          for (int i = 0; i < 3; ++i) {
+            PlannedJoint s = pj;
+            s.name = joint.name + names[i];
+            s.kind = PlannedJoint::Kind::Slide;
+            s.axis = axes[i];
+            body.joints.push_back(s);
+          }
+          PlannedJoint ball = pj;
+          ball.name = joint.name + ":ball";
+          ball.kind = PlannedJoint::Kind::Ball;
+          body.joints.push_back(ball);
+        }
+        break;
+      }
+      case JointType::Fixed: break;
+    }
+  }
+
+  bool simulated_one_dof(const std::string& name) const {
+    for (const PlannedBody& b : plan_.bodies)
+      for (const PlannedJoint& j : b.joints)
+        if (j.name == name && j.one_dof_urdf) return true;
+    return false;
+  }
+
+  void plan_differential() {
+    for (const description::GazeboPlugin& p : robot_.plugins) {
+      if (p.filename.find("differential") == std::string::npos) continue;
+      const auto get = [&](const char* key) -> std::string {
+        auto it = p.parameters.find(key);
+        if (it == p.parameters.end())
+          throw PhysicsError("gazebo plugin '" + p.name + "' (" + p.filename + "): missing <" + key + ">");
+        return it->second;
+      };
+      PlannedDifferential d;
+      d.plugin = p.name;
+      d.joint_a = get("jointA");
+      d.joint_b = get("jointB");
+      d.force_constant = parse_double(get("forceConstant"), "gazebo plugin '" + p.name + "' <forceConstant>");
+      for (const std::string* j : {&d.joint_a, &d.joint_b})
+        if (!simulated_one_dof(*j))
+          throw PhysicsError("gazebo plugin '" + p.name + "': joint '" + *j + "' is not a simulated 1-DOF joint");
+      plan_.differential = d;
+      return;
+    }
+  }
+
+  void plan_mimics() {
+    for (const description::Joint& joint : robot_.joints) {
+      if (!joint.mimic) continue;
+      if (!simulated_one_dof(joint.name) || !simulated_one_dof(joint.mimic->joint)) {
+        plan_.warnings.push_back("joint '" + joint.name + "' mimics '" + joint.mimic->joint +
+                                 "', but one of them is not a simulated 1-DOF joint: no constraint");
+        continue;
+      }
+      if (options_.differential == DifferentialMode::PluginLaw && is_differential_pair(joint.name, joint.mimic->joint))
+        continue;
+      plan_.mimics.push_back({joint.name, joint.mimic->joint, joint.mimic->multiplier, joint.mimic->offset});
+    }
+  }
+
+  bool is_differential_pair(const std::string& a, const std::string& b) const {
+    for (const description::GazeboPlugin& p : robot_.plugins) {
+      if (p.filename.find("differential") == std::string::npos) continue;
+      auto ja = p.parameters.find("jointA"), jb = p.parameters.find("jointB");
+      if (ja == p.parameters.end() || jb == p.parameters.end()) continue;
+      if ((ja->second == a && jb->second == b) || (ja->second == b && jb->second == a)) return true;
+    }
+    return false;
+  }
+
+  const RobotModel& robot_;
+  const BuildOptions& options_;
+  BodyPlan plan_;
+  std::set<std::pair<std::string, std::string>> excluded_;
+  std::size_t depth_guard_ = 0;
+  description::GazeboLinkProperties no_gazebo_;
+};
+
+}  // namespace
+
+BodyPlan plan_bodies(const description::RobotModel& robot, const BuildOptions& options) {
+  return Planner(robot, options).run();
+}
+
+}  // namespace mechsim::physics

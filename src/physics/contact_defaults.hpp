@@ -1,0 +1,33 @@
+#pragma once
+// The one place where mechsim states its contact parameters. Every collision geom of a robot
+// and of the world gets these unless the description overrides them (gazebo <mu1>/<mu2>).
+//
+// Why these values: Gazebo's ODE surface default is mu = 1 (mechsim follows it so a URDF
+// without <mu1> behaves as in Gazebo); torsional and rolling friction and the soft-contact
+// parameters are MuJoCo's own defaults, which are stable at 1 ms steps.
+
+#include <array>
+
+namespace mechsim::physics {
+
+struct ContactDefaults {
+  // Sliding friction coefficient (dimensionless) used when a link has no gazebo mu1/mu2.
+  double sliding_friction = 1.0;
+  // Torsional (m) and rolling (m) friction coefficients, MuJoCo's friction[1], friction[2].
+  double torsional_friction = 0.005;
+  double rolling_friction = 0.0001;
+  // MuJoCo solref: (time constant s, damping ratio). time constant >= 2 timesteps.
+  std::array<double, 2> solref{0.02, 1.0};
+  // MuJoCo solimp: (dmin, dmax, width m, midpoint, power).
+  std::array<double, 5> solimp{0.9, 0.95, 0.001, 0.5, 2.0};
+  // Distance (m) at which contacts become active; 0 = only on penetration.
+  double margin = 0.0;
+  // Contact dimensionality: 3 = normal + 2D sliding friction (Gazebo ODE's pyramid model).
+  int condim = 3;
+  // Sliding friction of the ground plane / terrain. Robot geoms carry a higher MuJoCo
+  // priority, so a contact with the ground uses the robot link's friction, as ODE's
+  // min(mu_a, mu_b) does against Gazebo's high-friction ground plane.
+  double ground_friction = 1.0;
+};
+
+}  // namespace mechsim::physics

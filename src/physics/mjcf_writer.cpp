@@ -1,0 +1,310 @@
+#include "physics/mjcf_writer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "physics/mesh_loader.hpp"
+#include "physics/physics_error.hpp"
+#include "physics/transform.hpp"
+
+namespace mechsim::physics {
+namespace {
+
+using description::GeometryType;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
+}
+
+std::string escape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string vec(const Vec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+std::string quat(const Quat& q) { return num(q.w) + " " + num(q.x) + " " + num(q.y) + " " + num(q.z); }
+std::string pose_attrs(const Pose& X) { return " pos=\"" + vec(X.position) + "\" quat=\"" + quat(X.orientation) + "\""; }
+
+std::string mesh_key(const std::string& path, const Vec3& s) { return path + "|" + vec(s); }
+
+// Rotates the inertia tensor given in frame I into the link frame: I_L = R I_I R^T.
+std::array<double, 6> inertia_in_link_frame(const description::Inertial& in) {
+  const Quat& q = in.origin.orientation;
+  const double R[3][3] = {
+      {1 - 2 * (q.y * q.y + q.z * q.z), 2 * (q.x * q.y - q.z * q.w), 2 * (q.x * q.z + q.y * q.w)},
+      {2 * (q.x * q.y + q.z * q.w), 1 - 2 * (q.x * q.x + q.z * q.z), 2 * (q.y * q.z - q.x * q.w)},
+      {2 * (q.x * q.z - q.y * q.w), 2 * (q.y * q.z + q.x * q.w), 1 - 2 * (q.x * q.x + q.y * q.y)}};
+  const double I[3][3] = {{in.ixx, in.ixy, in.ixz}, {in.ixy, in.iyy, in.iyz}, {in.ixz, in.iyz, in.izz}};
+  double RI[3][3] = {}, out[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) RI[i][j] += R[i][k] * I[k][j];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) out[i][j] += RI[i][k] * R[j][k];
+  return {out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]};
+}
+
+class Writer {
+ public:
+  Writer(const BodyPlan& plan, const std::vector<MeshAsset>& meshes, const BuildOptions& options,
+         const std::set<std::string>& skip)
+      : plan_(plan), options_(options) {
+    for (const MeshAsset& m : meshes) {
+      if (!m.error.empty() || skip.count(m.name)) continue;
+      usable_[mesh_key(m.path, m.scale)] = &m;
+    }
+    for (const MeshAsset& m : meshes) all_[mesh_key(m.path, m.scale)] = &m;
+    children_.resize(plan.bodies.size());
+    for (std::size_t i = 0; i < plan.bodies.size(); ++i)
+      if (plan.bodies[i].parent >= 0) children_[plan.bodies[i].parent].push_back(i);
+  }
+
+  MjcfDocument write(const std::string& model_name) {
+    const ContactDefaults& c = options_.contact;
+    x_ << "<mujoco model=\"" << escape(model_name) << "\">\n";
+    x_ << "  <compiler angle=\"radian\" inertiafromgeom=\"false\" balanceinertia=\"true\"/>\n";
+    const char* integrator = options_.integrator == Integrator::Euler ? "Euler"
+                             : options_.integrator == Integrator::Rk4 ? "RK4"
+                                                                      : "implicit";
+    x_ << "  <option timestep=\"" << num(options_.timestep) << "\" integrator=\"" << integrator
+       << "\" gravity=\"0 0 " << num(-options_.world.gravity) << "\"/>\n";
+    x_ << "  <size njmax=\"4000\" nconmax=\"1000\"/>\n";
+    x_ << "  <default>\n    <geom condim=\"" << c.condim << "\" friction=\"" << num(c.sliding_friction) << " "
+       << num(c.torsional_friction) << " " << num(c.rolling_friction) << "\" solref=\"" << num(c.solref[0]) << " "
+       << num(c.solref[1]) << "\" solimp=\"" << num(c.solimp[0]) << " " << num(c.solimp[1]) << " "
+       << num(c.solimp[2]) << " " << num(c.solimp[3]) << " " << num(c.solimp[4]) << "\" margin=\""
+       << num(c.margin) << "\"/>\n  </default>\n";
+    write_assets();
+    x_ << "  <worldbody>\n";
+    write_world();
+    for (const PlannedGeom& g : plan_.world_geoms) write_geom(g, 2);
+    for (std::size_t i = 0; i < plan_.bodies.size(); ++i)
+      if (plan_.bodies[i].parent < 0) write_body(i, 2);
+    x_ << "  </worldbody>\n";
+    if (!plan_.excludes.empty()) {
+      x_ << "  <contact>\n";
+      for (const auto& [a, b] : plan_.excludes)
+        x_ << "    <exclude body1=\"" << escape(a) << "\" body2=\"" << escape(b) << "\"/>\n";
+      x_ << "  </contact>\n";
+    }
+    if (!plan_.mimics.empty()) {
+      x_ << "  <equality>\n";
+      for (const PlannedMimic& m : plan_.mimics)
+        x_ << "    <joint name=\"mimic:" << escape(m.follower) << "\" joint1=\"" << escape(m.follower)
+           << "\" joint2=\"" << escape(m.leader) << "\" polycoef=\"" << num(m.offset) << " " << num(m.multiplier)
+           << " 0 0 0\"/>\n";
+      x_ << "  </equality>\n";
+    }
+    write_actuators();
+    x_ << "</mujoco>\n";
+    doc_.xml = x_.str();
+    return std::move(doc_);
+  }
+
+ private:
+  void write_assets() {
+    std::vector<const MeshAsset*> used;
+    for (const auto& [key, m] : usable_) used.push_back(m);
+    std::sort(used.begin(), used.end(), [](const MeshAsset* a, const MeshAsset* b) { return a->name < b->name; });
+    const bool terrain = options_.world.kind == WorldSpec::Kind::Heightmap;
+    if (used.empty() && !terrain) return;
+    x_ << "  <asset>\n";
+    for (const MeshAsset* m : used)
+      x_ << "    <mesh name=\"" << m->name << "\" file=\"" << m->vfs_file << "\" scale=\"" << vec(m->scale) << "\"/>\n";
+    if (terrain) {
+      const Heightmap& h = *options_.world.terrain;
+      const auto [lo, hi] = std::minmax_element(h.heights.begin(), h.heights.end());
+      const double range = std::max(static_cast<double>(*hi - *lo), 1e-6);
+      // MuJoCo elevation = data * size[2] with data normalised to [0, 1]; the geom sits at the
+      // grid's lowest height, so absolute height = min + normalised * (max - min).
+      x_ << "    <hfield name=\"" << kTerrainName << "\" nrow=\"" << h.rows << "\" ncol=\"" << h.cols
+         << "\" size=\"" << num(h.size_x / 2) << " " << num(h.size_y / 2) << " " << num(range) << " "
+         << num(std::max(1.0, 0.1 * range)) << "\"/>\n";
+    }
+    x_ << "  </asset>\n";
+  }
+
+  void write_world() {
+    const ContactDefaults& c = options_.contact;
+    const std::string friction = num(c.ground_friction) + " " + num(c.torsional_friction) + " " + num(c.rolling_friction);
+    if (options_.world.kind == WorldSpec::Kind::Heightmap) {
+      if (!options_.world.terrain) throw PhysicsError("world: heightmap world without a heightmap");
+      const Heightmap& h = *options_.world.terrain;
+      const double lo = static_cast<double>(*std::min_element(h.heights.begin(), h.heights.end()));
+      x_ << "    <geom name=\"" << kTerrainName << "\" type=\"hfield\" hfield=\"" << kTerrainName << "\" pos=\"0 0 "
+         << num(lo) << "\" contype=\"1\" conaffinity=\"1\" priority=\"0\" friction=\"" << friction << "\"/>\n";
+    } else if (options_.world.ground_plane) {
+      x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""
+         << " priority=\"0\" friction=\"" << friction << "\"/>\n";
+    }
+  }
+
+  void write_body(std::size_t index, int indent) {
+    const PlannedBody& b = plan_.bodies[index];
+    const std::string pad(static_cast<std::size_t>(indent) * 2, ' ');
+    x_ << pad << "<body name=\"" << escape(b.name) << "\"" << pose_attrs(b.X_PB) << ">\n";
+    if (b.inertial) {
+      const auto I = inertia_in_link_frame(*b.inertial);
+      x_ << pad << "  <inertial pos=\"" << vec(b.inertial->origin.position) << "\" mass=\"" << num(b.inertial->mass)
+         << "\" fullinertia=\"" << num(I[0]) << " " << num(I[1]) << " " << num(I[2]) << " " << num(I[3]) << " "
+         << num(I[4]) << " " << num(I[5]) << "\"/>\n";
+    }
+    for (const PlannedJoint& j : b.joints) write_joint(j, pad + "  ");
+    for (const PlannedGeom& g : b.geoms) write_geom(g, indent + 1);
+    for (std::size_t child : children_[index]) write_body(child, indent + 1);
+    x_ << pad << "</body>\n";
+  }
+
+  void write_joint(const PlannedJoint& j, const std::string& pad) {
+    if (j.kind == PlannedJoint::Kind::Free) {
+      x_ << pad << "<freejoint name=\"" << escape(j.name) << "\"/>\n";
+      return;
+    }
+    const char* type = j.kind == PlannedJoint::Kind::Hinge ? "hinge" : j.kind == PlannedJoint::Kind::Slide ? "slide" : "ball";
+    x_ << pad << "<joint name=\"" << escape(j.name) << "\" type=\"" << type << "\"";
+    if (j.kind != PlannedJoint::Kind::Ball) x_ << " axis=\"" << vec(j.axis) << "\"";
+    if (j.limited) x_ << " limited=\"true\" range=\"" << num(j.lower) << " " << num(j.upper) << "\"";
+    else x_ << " limited=\"false\"";
+    if (j.damping != 0.0) x_ << " damping=\"" << num(j.damping) << "\"";
+    if (j.frictionloss != 0.0) x_ << " frictionloss=\"" << num(j.frictionloss) << "\"";
+    x_ << "/>\n";
+  }
+
+  void write_geom(const PlannedGeom& g, int indent) {
+    const std::string pad(static_cast<std::size_t>(indent) * 2, ' ');
+    std::ostringstream shape;
+    const description::Geometry& geo = g.geometry;
+    switch (geo.type) {
+      case GeometryType::Box:
+        shape << " type=\"box\" size=\"" << num(geo.size.x / 2) << " " << num(geo.size.y / 2) << " " << num(geo.size.z / 2) << "\"";
+        break;
+      case GeometryType::Cylinder:
+        shape << " type=\"cylinder\" size=\"" << num(geo.radius) << " " << num(geo.length / 2) << "\"";
+        break;
+      case GeometryType::Sphere: shape << " type=\"sphere\" size=\"" << num(geo.radius) << "\""; break;
+      case GeometryType::Mesh: {
+        const std::string what = (g.visual ? "visual" : "collision") + std::string(" geom '") + g.name + "'";
+        if (geo.mesh_path.empty()) {
+          doc_.warnings.push_back(what + ": mesh '" + geo.mesh_uri + "' could not be resolved to a file; left out");
+          return;
+        }
+        const std::string key = mesh_key(geo.mesh_path, geo.mesh_scale);
+        auto it = usable_.find(key);
+        if (it == usable_.end()) {
+          auto any = all_.find(key);
+          const std::string why = any != all_.end() && !any->second->error.empty() ? any->second->error
+                                                                                   : "MuJoCo could not compile it";
+          doc_.warnings.push_back(what + ": mesh '" + geo.mesh_path + "' unsupported (" + why + "); left out");
+          return;
+        }
+        shape << " type=\"mesh\" mesh=\"" << it->second->name << "\"";
+        break;
+      }
+    }
+    x_ << pad << "<geom name=\"" << escape(g.name) << "\"" << shape.str() << pose_attrs(g.X_BG);
+    if (g.visual) {
+      x_ << " contype=\"0\" conaffinity=\"0\" group=\"1\"";
+      if (g.rgba) x_ << " rgba=\"" << num((*g.rgba)[0]) << " " << num((*g.rgba)[1]) << " " << num((*g.rgba)[2]) << " " << num((*g.rgba)[3]) << "\"";
+    } else {
+      // bit 0: world; bit 1: this robot. Links without selfCollide do not accept bit 1, so two
+      // of them never touch; a selfCollide link touches every link (SDF: collide if either).
+      x_ << " contype=\"2\" conaffinity=\"" << (g.self_collide ? 3 : 1) << "\" group=\"0\" priority=\"1\" friction=\""
+         << num(g.friction) << " " << num(options_.contact.torsional_friction) << " "
+         << num(options_.contact.rolling_friction) << "\"";
+    }
+    x_ << "/>\n";
+  }
+
+  void write_actuators() {
+    bool any = false;
+    for (const PlannedBody& b : plan_.bodies)
+      for (const PlannedJoint& j : b.joints) {
+        if (!j.one_dof_urdf) continue;
+        if (!any) x_ << "  <actuator>\n";
+        any = true;
+        // Effort mode by default: force = ctrl. Position/velocity servos change gain and bias
+        // at run time; forcerange bounds every mode by the joint's effort limit.
+        x_ << "    <general name=\"" << escape(j.name) << "\" joint=\"" << escape(j.name)
+           << "\" gaintype=\"fixed\" gainprm=\"1\" biastype=\"affine\" biasprm=\"0 0 0\" ctrllimited=\"false\"";
+        if (j.effort_limit > 0.0)
+          x_ << " forcelimited=\"true\" forcerange=\"" << num(-j.effort_limit) << " " << num(j.effort_limit) << "\"";
+        x_ << "/>\n";
+      }
+    if (any) x_ << "  </actuator>\n";
+  }
+
+  const BodyPlan& plan_;
+  const BuildOptions& options_;
+  std::map<std::string, const MeshAsset*> usable_, all_;
+  std::vector<std::vector<std::size_t>> children_;
+  std::ostringstream x_;
+  MjcfDocument doc_;
+};
+
+void collect_from(const std::vector<PlannedGeom>& geoms, std::map<std::string, std::size_t>& index,
+                  std::vector<MeshAsset>& out) {
+  for (const PlannedGeom& g : geoms) {
+    if (g.geometry.type != GeometryType::Mesh || g.geometry.mesh_path.empty()) continue;
+    const std::string key = mesh_key(g.geometry.mesh_path, g.geometry.mesh_scale);
+    if (index.count(key)) continue;
+    MeshAsset asset;
+    asset.name = "mesh" + std::to_string(out.size());
+    asset.path = g.geometry.mesh_path;
+    asset.scale = g.geometry.mesh_scale;
+    out.push_back(std::move(asset));
+    index[key] = out.size() - 1;
+  }
+}
+
+}  // namespace
+
+std::vector<MeshAsset> collect_meshes(const BodyPlan& plan) {
+  std::vector<MeshAsset> out;
+  std::map<std::string, std::size_t> index;
+  collect_from(plan.world_geoms, index, out);
+  for (const PlannedBody& b : plan.bodies) collect_from(b.geoms, index, out);
+  // One file may appear at several scales: read and convert it once.
+  std::map<std::string, const MeshAsset*> loaded;
+  for (MeshAsset& m : out) {
+    auto it = loaded.find(m.path);
+    if (it != loaded.end()) {
+      m.bytes = it->second->bytes;
+      m.error = it->second->error;
+      m.vfs_file = m.name + it->second->vfs_file.substr(it->second->vfs_file.find('.'));
+      continue;
+    }
+    try {
+      MeshBytes mb = load_mesh_for_mujoco(m.path);
+      m.bytes = std::move(mb.bytes);
+      m.vfs_file = m.name + mb.extension;
+    } catch (const PhysicsError& e) {
+      m.error = e.what();
+      m.vfs_file = m.name + ".stl";
+    }
+    loaded[m.path] = &m;
+  }
+  return out;
+}
+
+MjcfDocument write_mjcf(const std::string& model_name, const BodyPlan& plan, const std::vector<MeshAsset>& meshes,
+                        const BuildOptions& options, const std::set<std::string>& skip_meshes) {
+  return Writer(plan, meshes, options, skip_meshes).write(model_name);
+}
+
+}  // namespace mechsim::physics

@@ -1,0 +1,42 @@
+#pragma once
+// Writing the MJCF document MuJoCo compiles, from a BodyPlan. Mesh files are loaded here into
+// byte buffers for MuJoCo's virtual file system, so the model never depends on the working
+// directory or on MuJoCo's own URDF import.
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "physics/body_plan.hpp"
+#include "physics/physics_options.hpp"
+
+namespace mechsim::physics {
+
+// One <mesh> asset: a mesh file at one scale.
+struct MeshAsset {
+  std::string name;       // MuJoCo asset name, "mesh<N>"
+  std::string vfs_file;   // file name in the virtual file system
+  std::string path;       // source file
+  description::Vec3 scale{1.0, 1.0, 1.0};
+  std::vector<char> bytes;  // empty when loading failed
+  std::string error;        // why loading failed
+};
+
+// Loads every distinct (file, scale) mesh the plan uses. Meshes that cannot be read or
+// converted keep an `error` and their geoms are left out (with a warning) by write_mjcf.
+std::vector<MeshAsset> collect_meshes(const BodyPlan& plan);
+
+struct MjcfDocument {
+  std::string xml;
+  std::vector<std::string> warnings;  // geoms left out and why
+};
+
+// `skip_meshes`: asset names whose geoms are left out (e.g. ones MuJoCo refused to compile).
+MjcfDocument write_mjcf(const std::string& model_name, const BodyPlan& plan, const std::vector<MeshAsset>& meshes,
+                        const BuildOptions& options, const std::set<std::string>& skip_meshes);
+
+// Name of the MuJoCo hfield asset and geom of a heightmap world.
+inline constexpr const char* kTerrainName = "terrain";
+inline constexpr const char* kGroundName = "ground";
+
+}  // namespace mechsim::physics

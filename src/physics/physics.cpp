@@ -1,0 +1,300 @@
+#include "physics/physics.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include "physics/mujoco_internal.hpp"
+#include "physics/transform.hpp"
+
+namespace mechsim::physics {
+
+using description::Pose;
+
+struct Physics::Data {
+  mjModel* m = nullptr;  // private copy: actuator gains are per instance
+  mjData* d = nullptr;
+  mutable bool stale = true;  // kinematics lag the state (after a step or a state write)
+  std::vector<JointMode> modes;
+  std::vector<ServoGains> gains;
+  std::vector<std::string> geom_links;  // URDF link (or world geom) per MuJoCo geom
+  // State before the current step, restored when a step fails.
+  double saved_time = 0.0;
+  std::vector<mjtNum> saved_qpos, saved_qvel, saved_act, saved_warm;
+  int saved_warnings[mjNWARNING] = {};
+
+  ~Data() {
+    if (d != nullptr) mj_deleteData(d);
+    if (m != nullptr) mj_deleteModel(m);
+  }
+};
+
+namespace {
+
+const char* code_text(StepCode c) {
+  switch (c) {
+    case StepCode::Ok: return "ok";
+    case StepCode::NonFiniteCommand: return "non-finite command";
+    case StepCode::NonFiniteState: return "non-finite state";
+    case StepCode::RunawayAcceleration: return "runaway acceleration";
+    case StepCode::SolverFailure: return "MuJoCo flagged an unstable state";
+  }
+  return "?";
+}
+
+std::string_view joint_of_dof(const mjModel* m, int dof) {
+  if (dof < 0 || dof >= m->nv) return "?";
+  const int j = m->dof_jntid[dof];
+  const char* n = mj_id2name(m, mjOBJ_JOINT, j);
+  if (n != nullptr && m->jnt_type[j] != mjJNT_FREE) return n;
+  const char* b = mj_id2name(m, mjOBJ_BODY, m->jnt_bodyid[j]);
+  return b != nullptr ? b : "?";
+}
+
+std::string_view joint_of_qpos(const mjModel* m, int qpos) {
+  for (int j = m->njnt - 1; j >= 0; --j)
+    if (m->jnt_qposadr[j] <= qpos) return joint_of_dof(m, m->jnt_dofadr[j]);
+  return "?";
+}
+
+template <typename T>
+void copy_n(T* dst, const T* src, int n) {
+  if (n > 0) std::memcpy(dst, src, sizeof(T) * static_cast<std::size_t>(n));
+}
+
+}  // namespace
+
+std::string StepStatus::message() const {
+  if (ok()) return "ok";
+  return std::string(code_text(code)) + " at '" + std::string(element) + "' (value " + std::to_string(value) + ")";
+}
+
+Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(model)), data_(std::make_unique<Data>()) {
+  const mjModel* shared = model_->impl().model;
+  data_->m = mj_copyModel(nullptr, shared);
+  data_->d = mj_makeData(data_->m);
+  const std::size_t nj = model_->joints().size();
+  data_->modes.assign(nj, JointMode::Effort);
+  data_->gains.assign(nj, ServoGains{});
+  data_->saved_qpos.resize(static_cast<std::size_t>(shared->nq));
+  data_->saved_qvel.resize(static_cast<std::size_t>(shared->nv));
+  data_->saved_act.resize(static_cast<std::size_t>(std::max(shared->na, 1)));
+  data_->saved_warm.resize(static_cast<std::size_t>(shared->nv));
+  for (int g = 0; g < shared->ngeom; ++g) {
+    const char* n = mj_id2name(shared, mjOBJ_GEOM, g);
+    std::string name = n != nullptr ? n : "";
+    const auto slash = name.find('/');
+    data_->geom_links.push_back(slash == std::string::npos ? (name.empty() ? "world" : name) : name.substr(0, slash));
+  }
+  reset();
+}
+
+Physics::~Physics() = default;
+
+void Physics::reset() {
+  mjModel* m = data_->m;
+  const mjModel* shared = model_->impl().model;
+  copy_n(m->actuator_gainprm, shared->actuator_gainprm, shared->nu * mjNGAIN);
+  copy_n(m->actuator_biasprm, shared->actuator_biasprm, shared->nu * mjNBIAS);
+  std::fill(data_->modes.begin(), data_->modes.end(), JointMode::Effort);
+  std::fill(data_->gains.begin(), data_->gains.end(), ServoGains{});
+  mj_resetData(m, data_->d);
+  mj_forward(m, data_->d);
+  data_->stale = false;
+  diff_tau_a_ = diff_tau_b_ = 0.0;
+}
+
+double Physics::time() const { return data_->d->time; }
+
+StepStatus Physics::step() {
+  mjModel* m = data_->m;
+  mjData* d = data_->d;
+  const std::vector<JointInfo>& joints = model_->joints();
+  for (const JointInfo& j : joints)
+    if (j.actuator >= 0 && !std::isfinite(d->ctrl[j.actuator]))
+      return {StepCode::NonFiniteCommand, j.name, d->ctrl[j.actuator]};
+
+  const auto& diff = model_->differential();
+  if (diff && diff->active) {
+    const JointInfo& a = joints[diff->joint_a];
+    const JointInfo& b = joints[diff->joint_b];
+    const double spread = d->qpos[a.qpos_adr] - d->qpos[b.qpos_adr];
+    diff_tau_a_ = -diff->force_constant * spread;
+    diff_tau_b_ = diff->force_constant * spread;
+    d->qfrc_applied[a.dof_adr] = diff_tau_a_;
+    d->qfrc_applied[b.dof_adr] = diff_tau_b_;
+  }
+
+  data_->saved_time = d->time;
+  copy_n(data_->saved_qpos.data(), d->qpos, m->nq);
+  copy_n(data_->saved_qvel.data(), d->qvel, m->nv);
+  copy_n(data_->saved_act.data(), d->act, m->na);
+  copy_n(data_->saved_warm.data(), d->qacc_warmstart, m->nv);
+  for (int w = 0; w < mjNWARNING; ++w) data_->saved_warnings[w] = d->warning[w].number;
+
+  mj_step(m, d);
+  data_->stale = true;
+
+  StepStatus status;
+  for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
+    if (d->warning[w].number == data_->saved_warnings[w]) continue;
+    const int info = d->warning[w].lastinfo;
+    status = {StepCode::SolverFailure, w == mjWARN_BADQPOS ? joint_of_qpos(m, info) : joint_of_dof(m, info), 0.0};
+    break;
+  }
+  if (status.ok()) {
+    for (int i = 0; i < m->nq && status.ok(); ++i)
+      if (!std::isfinite(d->qpos[i])) status = {StepCode::NonFiniteState, joint_of_qpos(m, i), d->qpos[i]};
+    const double limit = model_->options().max_joint_acceleration;
+    for (int i = 0; i < m->nv && status.ok(); ++i) {
+      if (!std::isfinite(d->qvel[i])) status = {StepCode::NonFiniteState, joint_of_dof(m, i), d->qvel[i]};
+      else if (!std::isfinite(d->qacc[i])) status = {StepCode::NonFiniteState, joint_of_dof(m, i), d->qacc[i]};
+      else if (std::fabs(d->qacc[i]) > limit) status = {StepCode::RunawayAcceleration, joint_of_dof(m, i), d->qacc[i]};
+    }
+  }
+  if (!status.ok()) {
+    d->time = data_->saved_time;
+    copy_n(d->qpos, data_->saved_qpos.data(), m->nq);
+    copy_n(d->qvel, data_->saved_qvel.data(), m->nv);
+    copy_n(d->act, data_->saved_act.data(), m->na);
+    copy_n(d->qacc_warmstart, data_->saved_warm.data(), m->nv);
+    mj_forward(m, d);
+    data_->stale = false;
+  }
+  return status;
+}
+
+double Physics::position(std::size_t j) const { return data_->d->qpos[model_->joints()[j].qpos_adr]; }
+double Physics::velocity(std::size_t j) const { return data_->d->qvel[model_->joints()[j].dof_adr]; }
+double Physics::actuator_effort(std::size_t j) const { return data_->d->qfrc_actuator[model_->joints()[j].dof_adr]; }
+double Physics::constraint_effort(std::size_t j) const { return data_->d->qfrc_constraint[model_->joints()[j].dof_adr]; }
+double Physics::effort(std::size_t j) const { return actuator_effort(j) + constraint_effort(j); }
+
+void Physics::set_effort(std::size_t j, double effort) {
+  const JointInfo& info = model_->joints()[j];
+  if (info.actuator >= 0 && data_->modes[j] == JointMode::Effort) data_->d->ctrl[info.actuator] = effort;
+}
+
+void Physics::set_position_command(std::size_t j, double position) {
+  const JointInfo& info = model_->joints()[j];
+  if (info.actuator >= 0 && data_->modes[j] == JointMode::Position) data_->d->ctrl[info.actuator] = position;
+}
+
+void Physics::set_velocity_command(std::size_t j, double velocity) {
+  const JointInfo& info = model_->joints()[j];
+  if (info.actuator >= 0 && data_->modes[j] == JointMode::Velocity) data_->d->ctrl[info.actuator] = velocity;
+}
+
+void Physics::set_mode(std::size_t j, JointMode mode, ServoGains gains) {
+  const JointInfo& info = model_->joints()[j];
+  if (info.actuator < 0) return;
+  mjModel* m = data_->m;
+  if (gains.kp <= 0.0 && gains.kv <= 0.0 && mode != JointMode::Effort) {
+    // Critically damped 10 Hz servo on the joint's inertia at the spawn configuration.
+    const double inertia = m->dof_M0[info.dof_adr] + m->dof_armature[info.dof_adr];
+    const double wn = 2.0 * M_PI * 10.0;
+    gains = mode == JointMode::Position ? ServoGains{inertia * wn * wn, 2.0 * inertia * wn} : ServoGains{0.0, inertia * wn};
+  }
+  mjtNum* gain = m->actuator_gainprm + info.actuator * mjNGAIN;
+  mjtNum* bias = m->actuator_biasprm + info.actuator * mjNBIAS;
+  std::fill(gain, gain + mjNGAIN, 0.0);
+  std::fill(bias, bias + mjNBIAS, 0.0);
+  mjtNum& ctrl = data_->d->ctrl[info.actuator];
+  switch (mode) {
+    case JointMode::Effort:
+      gain[0] = 1.0;
+      ctrl = 0.0;
+      break;
+    case JointMode::Position:  // force = kp (ctrl - q) - kv qdot
+      gain[0] = gains.kp;
+      bias[1] = -gains.kp;
+      bias[2] = -gains.kv;
+      ctrl = position(j);  // hold where it is until commanded
+      break;
+    case JointMode::Velocity:  // force = kv (ctrl - qdot)
+      gain[0] = gains.kv;
+      bias[2] = -gains.kv;
+      ctrl = 0.0;
+      break;
+  }
+  data_->modes[j] = mode;
+  data_->gains[j] = gains;
+}
+
+JointMode Physics::mode(std::size_t j) const { return data_->modes[j]; }
+ServoGains Physics::gains(std::size_t j) const { return data_->gains[j]; }
+
+void Physics::set_joint_state(std::size_t j, double position, double velocity) {
+  const JointInfo& info = model_->joints()[j];
+  data_->d->qpos[info.qpos_adr] = position;
+  data_->d->qvel[info.dof_adr] = velocity;
+  data_->stale = true;
+}
+
+void Physics::refresh_kinematics() const {
+  if (!data_->stale) return;
+  mj_kinematics(data_->m, data_->d);
+  mj_comPos(data_->m, data_->d);
+  mj_comVel(data_->m, data_->d);
+  data_->stale = false;
+}
+
+Pose Physics::link_pose(std::size_t link) const {
+  refresh_kinematics();
+  const LinkInfo& info = model_->links()[link];
+  const mjData* d = data_->d;
+  const int b = info.body;
+  const Pose X_WB{{d->xpos[3 * b], d->xpos[3 * b + 1], d->xpos[3 * b + 2]},
+                  {d->xquat[4 * b], d->xquat[4 * b + 1], d->xquat[4 * b + 2], d->xquat[4 * b + 3]}};
+  return compose(X_WB, info.X_BL);
+}
+
+Twist Physics::link_twist(std::size_t link) const {
+  refresh_kinematics();
+  const LinkInfo& info = model_->links()[link];
+  mjtNum v[6];  // [angular; linear] at the body origin, world orientation
+  mj_objectVelocity(data_->m, data_->d, mjOBJ_BODY, info.body, v, 0);
+  const Vec3 w{v[0], v[1], v[2]};
+  const Quat q{data_->d->xquat[4 * info.body], data_->d->xquat[4 * info.body + 1], data_->d->xquat[4 * info.body + 2],
+               data_->d->xquat[4 * info.body + 3]};
+  const Vec3 r = rotate(q, info.X_BL.position);  // body origin -> link origin, world frame
+  return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
+}
+
+Pose Physics::base_pose() const { return link_pose(*model_->link_index(model_->root_link())); }
+Twist Physics::base_twist() const { return link_twist(*model_->link_index(model_->root_link())); }
+
+std::size_t Physics::contacts(std::vector<Contact>& out) const {
+  out.clear();
+  const mjModel* m = data_->m;
+  const mjData* d = data_->d;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    Contact k;
+    k.link_a = data_->geom_links[static_cast<std::size_t>(c.geom1)];
+    k.link_b = data_->geom_links[static_cast<std::size_t>(c.geom2)];
+    k.position = {c.pos[0], c.pos[1], c.pos[2]};
+    k.normal = {c.frame[0], c.frame[1], c.frame[2]};
+    k.depth = -c.dist;
+    mjtNum f[6] = {};
+    if (c.efc_address >= 0) mj_contactForce(m, d, i, f);
+    k.normal_force = f[0];
+    k.friction_force[0] = f[1];
+    k.friction_force[1] = f[2];
+    out.push_back(k);
+  }
+  return out.size();
+}
+
+double Physics::energy() const {
+  mjModel* m = data_->m;
+  mjData* d = data_->d;
+  mj_kinematics(m, d);
+  mj_comPos(m, d);
+  mj_crb(m, d);
+  mj_energyPos(m, d);
+  mj_energyVel(m, d);
+  data_->stale = true;  // mj_comVel not refreshed
+  return d->energy[0] + d->energy[1];
+}
+
+}  // namespace mechsim::physics

@@ -1,0 +1,131 @@
+#pragma once
+// One running physics instance: per-instance MuJoCo data (and a private copy of the compiled
+// model, because servo gains change at run time) over a shared, immutable PhysicsModel.
+// Joint I/O is by joint index (PhysicsModel::joint_index). Units: rad, m, s, N, N m.
+//
+// Hot path: step(), the joint reads/writes and the pose/twist queries allocate nothing and
+// throw nothing. Deterministic: the same model, commands and call sequence give bit-identical
+// trajectories.
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "description/robot_model.hpp"
+#include "physics/physics_model.hpp"
+
+namespace mechsim::physics {
+
+// How a joint's actuator is driven. Position and velocity are servos computed inside the
+// physics step from the current state (never a kinematic override), bounded by the joint's
+// effort limit like every other mode.
+enum class JointMode { Effort, Position, Velocity };
+
+struct ServoGains {
+  double kp = 0.0;  // N m/rad or N/m (position mode)
+  double kv = 0.0;  // N m s/rad or N s/m (position mode: damping; velocity mode: gain)
+};
+
+enum class StepCode {
+  Ok,
+  NonFiniteCommand,     // a commanded effort/position/velocity is NaN or infinite
+  NonFiniteState,       // position, velocity or acceleration became NaN or infinite
+  RunawayAcceleration,  // |acceleration| exceeded BuildOptions::max_joint_acceleration
+  SolverFailure,        // MuJoCo itself flagged a bad state (and would have reset it)
+};
+
+// The outcome of step(). On failure the state is left as it was before the step and `element`
+// names the offending joint (or, for a floating base, the body).
+struct StepStatus {
+  StepCode code = StepCode::Ok;
+  std::string_view element;  // joint or body name; valid while the PhysicsModel lives
+  double value = 0.0;        // the offending value
+  bool ok() const { return code == StepCode::Ok; }
+  std::string message() const;  // for logs; allocates
+};
+
+// A spatial velocity in the world frame, of a link frame's origin.
+struct Twist {
+  description::Vec3 linear;   // m/s
+  description::Vec3 angular;  // rad/s
+};
+
+struct Contact {
+  std::string_view link_a, link_b;  // URDF link names, or "ground" / "terrain"
+  description::Vec3 position;       // world frame (m)
+  description::Vec3 normal;         // world frame, from a to b
+  double depth = 0.0;               // penetration (m), positive when overlapping
+  double normal_force = 0.0;        // N, >= 0
+  double friction_force[2] = {0.0, 0.0};  // N, along the contact frame's tangents
+};
+
+class Physics {
+ public:
+  explicit Physics(std::shared_ptr<const PhysicsModel> model);
+  ~Physics();
+  Physics(const Physics&) = delete;
+  Physics& operator=(const Physics&) = delete;
+
+  const PhysicsModel& model() const { return *model_; }
+
+  // Advances the world by one timestep (PhysicsModel::timestep()).
+  StepStatus step();
+  double time() const;  // s since reset
+
+  // Back to the spawn state: spawn pose, zero joint positions and velocities, all joints in
+  // effort mode with zero command, time 0.
+  void reset();
+
+  std::size_t joint_count() const { return model_->joints().size(); }
+  double position(std::size_t joint) const;  // rad or m
+  double velocity(std::size_t joint) const;  // rad/s or m/s
+  // Generalised force on the joint from its actuator (effort command or servo), N m or N.
+  double actuator_effort(std::size_t joint) const;
+  // Generalised force from constraints: limits, friction loss, contacts, mimic equalities.
+  double constraint_effort(std::size_t joint) const;
+  // actuator_effort + constraint_effort (what a joint torque sensor would report).
+  double effort(std::size_t joint) const;
+
+  // Commands, applied by the next step(). set_effort is for JointMode::Effort; the others
+  // select their servo's set point. NaN/inf is caught by step() and reported.
+  void set_effort(std::size_t joint, double effort);
+  void set_position_command(std::size_t joint, double position);
+  void set_velocity_command(std::size_t joint, double velocity);
+  // Switches the joint's actuator mode by setting its gains. Gains of zero choose a default:
+  // a critically damped 10 Hz servo for the joint's inertia at the spawn configuration.
+  void set_mode(std::size_t joint, JointMode mode, ServoGains gains = {});
+  JointMode mode(std::size_t joint) const;
+  ServoGains gains(std::size_t joint) const;
+
+  // Initial conditions (not for use inside a control loop): sets a joint's state directly.
+  void set_joint_state(std::size_t joint, double position, double velocity = 0.0);
+
+  // Pose X_WL and twist of URDF link `link` (PhysicsModel::link_index).
+  description::Pose link_pose(std::size_t link) const;
+  Twist link_twist(std::size_t link) const;
+  description::Pose base_pose() const;  // the root link
+  Twist base_twist() const;
+
+  // Contacts of the last step. Fills `out` (cleared first); allocates only when `out` has
+  // too little capacity. Returns the number of contacts.
+  std::size_t contacts(std::vector<Contact>& out) const;
+
+  // Torques the differential plugin law applied in the last step on its joints A and B (N m).
+  double differential_torque_a() const { return diff_tau_a_; }
+  double differential_torque_b() const { return diff_tau_b_; }
+
+  // Total mechanical energy (J) of the robot: kinetic + gravitational potential.
+  double energy() const;
+
+  struct Data;  // MuJoCo objects; physics.cpp only
+
+ private:
+  void refresh_kinematics() const;
+  std::shared_ptr<const PhysicsModel> model_;
+  std::unique_ptr<Data> data_;
+  double diff_tau_a_ = 0.0, diff_tau_b_ = 0.0;
+};
+
+}  // namespace mechsim::physics

@@ -1,0 +1,216 @@
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <set>
+
+#include "physics/body_plan.hpp"
+#include "physics/mjcf_writer.hpp"
+#include "physics/mujoco_internal.hpp"
+#include "physics/physics_error.hpp"
+
+namespace mechsim::physics {
+namespace {
+
+constexpr const char* kModelFile = "mechsim_model.xml";
+
+struct VfsDeleter {
+  void operator()(mjVFS* vfs) const {
+    mj_deleteVFS(vfs);
+    delete vfs;
+  }
+};
+
+void add_vfs_file(mjVFS& vfs, const std::string& name, const char* data, std::size_t size) {
+  if (mj_makeEmptyFileVFS(&vfs, name.c_str(), static_cast<int>(size)) != 0)
+    throw PhysicsError("MuJoCo virtual file system: cannot add '" + name + "' (full or repeated)");
+  const int i = mj_findFileVFS(&vfs, name.c_str());
+  if (i < 0) throw PhysicsError("MuJoCo virtual file system: '" + name + "' vanished");
+  std::memcpy(vfs.filedata[i], data, size);
+}
+
+// mj_loadXML keeps its parsed document in a process-global slot in MuJoCo 2.2.2, so two loads
+// must not overlap; this lock is the only shared state and guards nothing of mechsim's.
+std::mutex& load_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// Compiles `xml` with the meshes in a fresh VFS. Returns null and fills `error` on failure.
+mjModel* compile(const std::string& xml, const std::vector<MeshAsset>& meshes, std::string& error) {
+  std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
+  mj_defaultVFS(vfs.get());
+  add_vfs_file(*vfs, kModelFile, xml.data(), xml.size());
+  for (const MeshAsset& m : meshes)
+    if (m.error.empty() && xml.find("file=\"" + m.vfs_file + "\"") != std::string::npos)
+      add_vfs_file(*vfs, m.vfs_file, m.bytes.data(), m.bytes.size());
+  char err[1024] = "";
+  mjModel* model = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(load_mutex());
+    model = mj_loadXML(kModelFile, vfs.get(), err, sizeof(err));
+  }
+  if (model == nullptr) error = err;
+  return model;
+}
+
+// "Object name = mesh3, ..." in a MuJoCo compile error -> "mesh3".
+std::string error_object(const std::string& error) {
+  const std::string key = "Object name = ";
+  const auto at = error.find(key);
+  if (at == std::string::npos) return {};
+  const auto start = at + key.size();
+  const auto end = error.find_first_of(",\n", start);
+  return error.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+std::string one_line(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+void validate_options(const BuildOptions& o) {
+  if (!(o.timestep > 0.0) || !std::isfinite(o.timestep))
+    throw PhysicsError("physics option timestep: must be a positive number of seconds, got " + std::to_string(o.timestep));
+  if (o.world.kind == WorldSpec::Kind::Heightmap) {
+    if (!o.world.terrain) throw PhysicsError("world: kind heightmap but no heightmap given");
+    const Heightmap& h = *o.world.terrain;
+    const std::string where = "heightmap '" + h.source + "'";
+    if (h.rows < 2 || h.cols < 2) throw PhysicsError(where + ": needs at least 2x2 samples");
+    if (h.heights.size() != h.rows * h.cols)
+      throw PhysicsError(where + ": " + std::to_string(h.heights.size()) + " heights for " + std::to_string(h.rows) +
+                         "x" + std::to_string(h.cols) + " samples");
+    if (!(h.size_x > 0.0) || !(h.size_y > 0.0)) throw PhysicsError(where + ": footprint must be positive");
+    for (std::size_t i = 0; i < h.heights.size(); ++i)
+      if (!std::isfinite(h.heights[i])) throw PhysicsError(where + ": height " + std::to_string(i) + " is not finite");
+  }
+}
+
+// MuJoCo hfield data are normalised to [0, 1]; elevation = data * size[2] above the geom.
+void fill_hfield(mjModel& m, const Heightmap& h) {
+  const int id = mj_name2id(&m, mjOBJ_HFIELD, kTerrainName);
+  if (id < 0) throw PhysicsError("internal: terrain hfield missing from the compiled model");
+  const auto [lo, hi] = std::minmax_element(h.heights.begin(), h.heights.end());
+  const double range = static_cast<double>(*hi - *lo);
+  float* data = m.hfield_data + m.hfield_adr[id];
+  for (std::size_t i = 0; i < h.heights.size(); ++i)
+    data[i] = range > 0.0 ? static_cast<float>((static_cast<double>(h.heights[i] - *lo)) / range) : 0.0f;
+}
+
+}  // namespace
+
+PhysicsModel::PhysicsModel() : impl_(std::make_unique<Impl>()) {}
+PhysicsModel::~PhysicsModel() = default;
+
+std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::RobotModel& robot,
+                                                        const BuildOptions& options) {
+  validate_options(options);
+  const std::string who = "robot '" + robot.name + "' (" + robot.source + ")";
+  BodyPlan plan = plan_bodies(robot, options);
+  std::vector<MeshAsset> meshes = collect_meshes(plan);
+
+  std::set<std::string> skip;
+  std::vector<std::string> compile_warnings;
+  mjModel* m = nullptr;
+  MjcfDocument doc;
+  for (;;) {
+    doc = write_mjcf(robot.name, plan, meshes, options, skip);
+    std::string error;
+    m = compile(doc.xml, meshes, error);
+    if (m != nullptr) break;
+    const std::string object = error_object(error);
+    auto bad = std::find_if(meshes.begin(), meshes.end(), [&](const MeshAsset& a) { return a.name == object; });
+    if (bad == meshes.end() || skip.count(object))
+      throw PhysicsError(who + ": MuJoCo rejected the generated model: " + one_line(error));
+    // A mesh MuJoCo cannot compile (e.g. a flat visual mesh with no volume): leave its geoms
+    // out, say so, and compile again.
+    skip.insert(object);
+    bad->error = one_line(error);
+    compile_warnings.push_back("mesh '" + bad->path + "': MuJoCo cannot compile it (" + bad->error + ")");
+  }
+
+  std::shared_ptr<PhysicsModel> pm(new PhysicsModel());
+  pm->impl_->model = m;
+  pm->robot_name_ = robot.name;
+  pm->root_link_ = robot.root_link;
+  pm->options_ = options;
+  pm->mjcf_ = doc.xml;
+  pm->fixed_to_world_ = plan.fixed_to_world;
+  pm->dropped_joints_ = plan.dropped_joints;
+  pm->warnings_ = plan.warnings;
+  pm->warnings_.insert(pm->warnings_.end(), compile_warnings.begin(), compile_warnings.end());
+  pm->warnings_.insert(pm->warnings_.end(), doc.warnings.begin(), doc.warnings.end());
+  if (options.world.kind == WorldSpec::Kind::Heightmap) fill_hfield(*m, *options.world.terrain);
+
+  // Joint table: every 1-DOF MuJoCo joint, in MuJoCo order.
+  std::set<std::string> one_dof;
+  for (const PlannedBody& b : plan.bodies)
+    for (const PlannedJoint& j : b.joints)
+      if (j.one_dof_urdf) one_dof.insert(j.name);
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) continue;
+    JointInfo info;
+    info.name = mj_id2name(m, mjOBJ_JOINT, j);
+    info.prismatic = m->jnt_type[j] == mjJNT_SLIDE;
+    info.urdf_one_dof = one_dof.count(info.name) > 0;
+    info.limited = m->jnt_limited[j] != 0;
+    info.lower = m->jnt_range[2 * j];
+    info.upper = m->jnt_range[2 * j + 1];
+    info.mj_joint = j;
+    info.qpos_adr = m->jnt_qposadr[j];
+    info.dof_adr = m->jnt_dofadr[j];
+    info.damping = m->dof_damping[info.dof_adr];
+    info.frictionloss = m->dof_frictionloss[info.dof_adr];
+    for (int a = 0; a < m->nu; ++a)
+      if (m->actuator_trnid[2 * a] == j && m->actuator_trntype[a] == mjTRN_JOINT) {
+        info.actuator = a;
+        info.actuated = true;
+        if (m->actuator_forcelimited[a]) info.effort_limit = m->actuator_forcerange[2 * a + 1];
+      }
+    pm->joints_.push_back(std::move(info));
+  }
+  for (const LinkFrame& f : plan.link_frames) {
+    LinkInfo info;
+    info.name = f.link;
+    info.body = f.body < 0 ? 0 : mj_name2id(m, mjOBJ_BODY, plan.bodies[f.body].name.c_str());
+    info.X_BL = f.X_BL;
+    if (f.body >= 0 && info.body < 0) throw PhysicsError("internal: body '" + plan.bodies[f.body].name + "' not compiled");
+    pm->links_.push_back(std::move(info));
+  }
+  if (plan.differential) {
+    DifferentialInfo d;
+    d.plugin = plan.differential->plugin;
+    d.joint_a = *pm->joint_index(plan.differential->joint_a);
+    d.joint_b = *pm->joint_index(plan.differential->joint_b);
+    d.force_constant = plan.differential->force_constant;
+    d.active = options.differential == DifferentialMode::PluginLaw;
+    pm->differential_ = d;
+  }
+  return pm;
+}
+
+std::optional<std::size_t> PhysicsModel::joint_index(std::string_view name) const {
+  for (std::size_t i = 0; i < joints_.size(); ++i)
+    if (joints_[i].name == name) return i;
+  return std::nullopt;
+}
+
+std::optional<std::size_t> PhysicsModel::link_index(std::string_view name) const {
+  for (std::size_t i = 0; i < links_.size(); ++i)
+    if (links_[i].name == name) return i;
+  return std::nullopt;
+}
+
+int PhysicsModel::body_count() const { return impl_->model->nbody; }
+int PhysicsModel::dof_count() const { return impl_->model->nv; }
+int PhysicsModel::geom_count() const { return impl_->model->ngeom; }
+
+std::string PhysicsModel::body_name(int body) const {
+  if (body <= 0 || body >= impl_->model->nbody) return "world";
+  const char* n = mj_id2name(impl_->model, mjOBJ_BODY, body);
+  return n != nullptr ? n : "body" + std::to_string(body);
+}
+
+}  // namespace mechsim::physics

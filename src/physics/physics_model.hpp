@@ -1,0 +1,96 @@
+#pragma once
+// The compiled physics model of one robot in one world: built once from a RobotModel, then
+// immutable and shared by any number of Physics instances (physics/physics.hpp).
+// MuJoCo stays behind the opaque Impl: no MuJoCo type appears in this header.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "description/robot_model.hpp"
+#include "physics/physics_options.hpp"
+
+namespace mechsim::physics {
+
+// A simulated 1-DOF joint: a URDF revolute/continuous/prismatic joint, or one part of a URDF
+// planar or non-root floating joint ("<name>:x", "<name>:y", "<name>:yaw", ...).
+struct JointInfo {
+  std::string name;
+  bool prismatic = false;     // slide (m) rather than hinge (rad)
+  bool urdf_one_dof = false;  // realises a URDF revolute/continuous/prismatic joint
+  bool limited = false;
+  double lower = 0.0, upper = 0.0;  // rad or m, when limited
+  double effort_limit = 0.0;        // N m or N, 0 = unbounded
+  double damping = 0.0;             // N m s/rad or N s/m
+  double frictionloss = 0.0;        // N m or N
+  bool actuated = false;            // has an actuator (effort / servo commands)
+  // MuJoCo addresses (plain ints, valid for the compiled model).
+  int mj_joint = -1, qpos_adr = -1, dof_adr = -1, actuator = -1;
+};
+
+// Where a URDF link frame L lives in the compiled model: body -1 is the world.
+struct LinkInfo {
+  std::string name;
+  int body = -1;
+  description::Pose X_BL;  // link frame in the MuJoCo body frame
+};
+
+// The gazebo differential plugin's law, when the description names one.
+struct DifferentialInfo {
+  std::string plugin;
+  std::size_t joint_a = 0, joint_b = 0;  // indices into joints()
+  double force_constant = 0.0;           // N m/rad
+  bool active = false;                    // options.differential == PluginLaw
+};
+
+class PhysicsModel {
+ public:
+  // Plans the bodies, writes MJCF, compiles it with MuJoCo from memory. Throws PhysicsError with
+  // MuJoCo's message and the offending element when the model cannot be built.
+  static std::shared_ptr<const PhysicsModel> build(const description::RobotModel& robot,
+                                                   const BuildOptions& options = {});
+  ~PhysicsModel();
+  PhysicsModel(const PhysicsModel&) = delete;
+  PhysicsModel& operator=(const PhysicsModel&) = delete;
+
+  const std::string& robot_name() const { return robot_name_; }
+  const BuildOptions& options() const { return options_; }
+  double timestep() const { return options_.timestep; }  // s
+
+  const std::vector<JointInfo>& joints() const { return joints_; }
+  std::optional<std::size_t> joint_index(std::string_view name) const;
+  const std::vector<LinkInfo>& links() const { return links_; }
+  std::optional<std::size_t> link_index(std::string_view name) const;
+  const std::string& root_link() const { return root_link_; }
+  bool fixed_to_world() const { return fixed_to_world_; }
+  const std::optional<DifferentialInfo>& differential() const { return differential_; }
+  // URDF joints that are not simulated (massless child link merged into its parent).
+  const std::vector<std::string>& dropped_joints() const { return dropped_joints_; }
+
+  const std::string& mjcf() const { return mjcf_; }  // the generated document
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+  // Counts of the compiled model (bodies include the world body).
+  int body_count() const;
+  int dof_count() const;  // MuJoCo nv
+  int geom_count() const;
+  std::string body_name(int body) const;  // "world" for -1 or 0
+
+  struct Impl;  // MuJoCo objects; defined in physics/mujoco_internal.hpp
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  PhysicsModel();
+  std::unique_ptr<Impl> impl_;
+  std::string robot_name_, root_link_, mjcf_;
+  BuildOptions options_;
+  std::vector<JointInfo> joints_;
+  std::vector<LinkInfo> links_;
+  std::optional<DifferentialInfo> differential_;
+  std::vector<std::string> dropped_joints_, warnings_;
+  bool fixed_to_world_ = false;
+};
+
+}  // namespace mechsim::physics

@@ -1,0 +1,57 @@
+#pragma once
+// Options for building the MuJoCo model of one robot in one world.
+
+#include <optional>
+#include <string>
+
+#include "description/robot_model.hpp"
+#include "physics/contact_defaults.hpp"
+#include "physics/heightmap.hpp"
+
+namespace mechsim::physics {
+
+enum class Integrator {
+  Euler,     // MuJoCo semi-implicit Euler (joint damping implicit)
+  Rk4,       // 4th-order Runge-Kutta: best energy behaviour for smooth, contact-free systems
+  Implicit,  // implicit in velocity: damping and servo velocity gains implicit (default)
+};
+
+// How the CC8 rocker differential (or any gazebo differential plugin) is realised.
+enum class DifferentialMode {
+  // The URDF's <mimic> tags as MuJoCo joint equality constraints; the plugin is ignored.
+  MimicConstraint,
+  // The Gazebo differential plugin's spring law, applied every step:
+  // tau_A = -k (q_A - q_B), tau_B = +k (q_A - q_B), k = forceConstant (N m/rad).
+  // A <mimic> tag coupling the plugin's two joints is then not turned into a constraint.
+  PluginLaw,
+};
+
+// The world the robot is placed in.
+struct WorldSpec {
+  enum class Kind { Empty, Heightmap };
+  Kind kind = Kind::Empty;        // Empty: ground plane z = 0 and gravity
+  std::optional<Heightmap> terrain;  // required when kind == Heightmap
+  double gravity = 9.81;           // m/s^2 along -z of the world
+  bool ground_plane = true;        // an infinite plane at z = 0 (Empty only)
+};
+
+// Where the robot starts: X_W<root> for a floating robot; for a robot whose root link is
+// `world`, the pose of the URDF world frame in the simulation world.
+struct SpawnPose {
+  double x = 0.0, y = 0.0, z = 0.0;           // m
+  double roll = 0.0, pitch = 0.0, yaw = 0.0;  // rad, fixed axes, URDF convention
+};
+
+struct BuildOptions {
+  double timestep = 0.001;  // s (1 kHz)
+  Integrator integrator = Integrator::Implicit;
+  DifferentialMode differential = DifferentialMode::MimicConstraint;
+  ContactDefaults contact;
+  WorldSpec world;
+  SpawnPose spawn;
+  bool visuals = true;  // build visual geoms (group 1, never collide) for rendering
+  // Runaway detector: |joint acceleration| above this (rad/s^2 or m/s^2) fails the step.
+  double max_joint_acceleration = 1e6;
+};
+
+}  // namespace mechsim::physics
