@@ -17,9 +17,16 @@ find_file(MECHSIM_GENACTION_SCRIPT genaction.py PATHS /usr/lib/actionlib_msgs NO
           DOC "The .action -> 7 .msg expander (ros-actionlib-msgs)")
 set(MECHSIM_ROS_SHARE_DIR "/usr/share" CACHE PATH
     "Where Debian's ros-*-msgs packages put <pkg>/msg/*.msg (the gencpp include paths)")
+# ROS libraries through Debian's pkg-config files rather than find_package(roscpp): the catkin
+# config files behind the latter run python3 from PATH too. Imported targets for the ROS layer:
+#   PkgConfig::MECHSIM_ROSCPP_SERIALIZATION  message (de)serialization, ros::Time (used by the msgs)
+#   PkgConfig::MECHSIM_ROSCPP                the node API
+#   PkgConfig::MECHSIM_ACTIONLIB             action servers and clients
 find_package(PkgConfig QUIET)
 if(PKG_CONFIG_FOUND)
   pkg_check_modules(MECHSIM_ROSCPP_SERIALIZATION QUIET IMPORTED_TARGET roscpp_serialization)
+  pkg_check_modules(MECHSIM_ROSCPP QUIET IMPORTED_TARGET roscpp)
+  pkg_check_modules(MECHSIM_ACTIONLIB QUIET IMPORTED_TARGET actionlib)
 endif()
 
 set(_mechsim_ros_missing "")
@@ -29,9 +36,12 @@ foreach(var MECHSIM_ROS_INCLUDE_DIR MECHSIM_ROS_PYTHON MECHSIM_GENCPP_SCRIPT
     list(APPEND _mechsim_ros_missing ${var})
   endif()
 endforeach()
-if(NOT MECHSIM_ROSCPP_SERIALIZATION_FOUND)
-  list(APPEND _mechsim_ros_missing "pkg-config roscpp_serialization")
-endif()
+foreach(module ROSCPP_SERIALIZATION ROSCPP ACTIONLIB)
+  if(NOT MECHSIM_${module}_FOUND)
+    string(TOLOWER "${module}" pc_name)
+    list(APPEND _mechsim_ros_missing "pkg-config ${pc_name}")
+  endif()
+endforeach()
 if(_mechsim_ros_missing)
   set(_mechsim_ros_default OFF)
 else()

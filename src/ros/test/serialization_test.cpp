@@ -1,9 +1,6 @@
 // The generated headers must put messages on the wire exactly as ROS 1 does: serialize,
 // deserialize and compare, check sizes against the wire format (little-endian, uint32 length
 // before strings and variable arrays), and reject truncated input.
-//
-// Messages are compared with EXPECT_TRUE(a == b), not EXPECT_EQ: gtest would print them through
-// gencpp's operator<<, whose Printer uses std::allocator<void>::rebind, gone in C++20.
 
 #include <gtest/gtest.h>
 
@@ -71,7 +68,7 @@ TEST(RosSerialization, ListControllersResponseRoundTrips) {
                                str(claimed.hardware_interface) + 4 +
                                str(claimed.resources[0]) + str(claimed.resources[1]);
   EXPECT_EQ(wire.size(), expected);
-  EXPECT_TRUE(fromWire<controller_manager_msgs::ListControllersResponse>(wire) == res);
+  EXPECT_EQ(fromWire<controller_manager_msgs::ListControllersResponse>(wire), res);
 }
 
 TEST(RosSerialization, JointControllerStateRoundTrips) {
@@ -94,7 +91,7 @@ TEST(RosSerialization, JointControllerStateRoundTrips) {
   // header: seq 4 + stamp 8 + frame_id 4+9; ten float64; one bool byte.
   EXPECT_EQ(wire.size(), 4u + 8u + 4u + 9u + 10u * 8u + 1u);
   const auto back = fromWire<control_msgs::JointControllerState>(wire);
-  EXPECT_TRUE(back == state);
+  EXPECT_EQ(back, state);
   EXPECT_EQ(back.header.stamp.nsec, 500000000u);
   EXPECT_TRUE(back.antiwindup);
 }
@@ -119,7 +116,7 @@ TEST(RosSerialization, FollowJointTrajectoryGoalRoundTrips) {
   goal.goal_time_tolerance = ::ros::Duration(0, 250000000);
   auto wire = toWire(goal);
   const auto back = fromWire<control_msgs::FollowJointTrajectoryGoal>(wire);
-  EXPECT_TRUE(back == goal);
+  EXPECT_EQ(back, goal);
   ASSERT_EQ(back.trajectory.points.size(), 3u);
   EXPECT_EQ(back.trajectory.points[2].time_from_start, ::ros::Duration(1.5));
   EXPECT_EQ(back.goal_time_tolerance.nsec, 250000000);
