@@ -52,6 +52,15 @@ void Pid::init(const Params& params) {
   reset();
 }
 
+void Pid::init(const Params& parent, std::string_view ns) {
+  auto params = parent.find(ns);
+  if (!params || !params->is_map()) {
+    const std::string path = join_param_path(parent.path(), ns);
+    throw ParamsError("No p gain specified for pid. Namespace: " + path, join_param_path(path, "p"));
+  }
+  init(*params);
+}
+
 void Pid::set_gains(const PidGains& gains) { gains_.write(gains); }
 
 void Pid::set_gains(double p, double i, double d, double i_max, double i_min, bool antiwindup) {

@@ -54,6 +54,11 @@ class Pid {
   void set_gains(double p, double i, double d, double i_max, double i_min, bool antiwindup = false);
   // The latest gains written (non-real-time).
   PidGains gains() const;
+  // Real-time: the gains the last compute_command() used.
+  const PidGains& rt_gains() const noexcept { return gains_.current_rt(); }
+  // Reads the gains from `parent`/`ns` (ros_control's NodeHandle(n, "pid")); a missing
+  // namespace gives the same "No p gain specified for pid" error as a missing `p`.
+  void init(const Params& parent, std::string_view ns);
 
   // Real-time. error = set point - process value; dt in seconds. Returns the command.
   double compute_command(double error, double dt) noexcept;

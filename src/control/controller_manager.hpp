@@ -1,0 +1,152 @@
+#pragma once
+// The controller manager: loads controllers by name from a parameter namespace (type from
+// `<name>/type`), switches them on and off with ros_control's semantics, and runs the
+// manager's part of the tick (DESIGN.md, "The tick"):
+//
+//   update(time, period):
+//     propagate_actuator_to_joint_position
+//     apply a pending switch (stop, then start: at the start of the tick, as requested)
+//     zero the effort commands (the PR2 loop does the same: a joint nobody drives gets 0)
+//     every running controller's update(); a controller that returns an error or throws is
+//       stopped and reported, the others keep running
+//     enforce_safety_limits
+//     propagate_joint_to_actuator_effort
+//
+// Threads: update() is called by one real-time thread; every other member by non-real-time
+// threads (serialised by an internal mutex that the tick never takes). update() allocates
+// nothing, takes no lock a non-real-time thread can hold, and throws nothing. Loading and
+// unloading publish a new controller list that the tick picks up; the caller waits at most one
+// tick for the old list to be released. A switch request is validated at once and applied by
+// the next tick.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "control/controller.hpp"
+#include "control/controller_registry.hpp"
+#include "control/hardware.hpp"
+#include "control/params.hpp"
+#include "mechanism/mechanism_model.hpp"
+
+namespace mechsim::control {
+
+// ros_control's strictness: STRICT refuses the whole switch on any problem (unknown name,
+// wrong state, resource conflict); BEST_EFFORT does what it can and reports what it skipped.
+enum class SwitchStrictness : std::uint8_t { BestEffort, Strict };
+
+// ros_control's states: "initialized" (loaded, never started), "running", "stopped".
+enum class ControllerLifecycle : std::uint8_t { Initialized, Running, Stopped };
+const char* lifecycle_name(ControllerLifecycle state);
+
+struct ControllerStatistics {
+  std::uint64_t updates = 0;
+  double mean_update_time = 0.0;  // s, over all updates since load
+  double max_update_time = 0.0;   // s
+  std::uint64_t overruns = 0;     // updates that took longer than the period
+  std::uint64_t failures = 0;     // times the manager stopped it (error status or exception)
+};
+
+struct ControllerInfo {
+  std::string name;
+  std::string type;
+  ControllerLifecycle state = ControllerLifecycle::Initialized;
+  std::vector<ResourceClaim> claims;  // per hardware interface
+  ControllerStatistics statistics;
+  std::string failure;  // why the manager last stopped it; "" if it never failed
+};
+
+struct ManagerStatistics {
+  std::uint64_t ticks = 0;
+  double mean_tick_time = 0.0;  // s, whole update()
+  double max_tick_time = 0.0;   // s
+  std::uint64_t overruns = 0;   // ticks longer than their period
+};
+
+struct ControlResult {
+  bool ok = true;
+  std::string error;
+  explicit operator bool() const { return ok; }
+  static ControlResult failure(std::string why) { return {false, std::move(why)}; }
+};
+
+struct SwitchResult {
+  bool ok = true;
+  std::string error;                 // why a STRICT switch was refused
+  std::vector<std::string> starting; // what the next tick will start
+  std::vector<std::string> stopping; // what the next tick will stop
+  std::vector<std::string> skipped;  // BEST_EFFORT: "name: reason" for each request dropped
+  explicit operator bool() const { return ok; }
+};
+
+class ControllerManager {
+ public:
+  // `params` is the namespace the controllers live in (e.g. the `cc8` map of a controller
+  // YAML, path /cc8). The model and state must outlive the manager; `state` must be sized
+  // like `model`. The registry starts with the built-in types.
+  ControllerManager(const mechanism::MechanismModel& model, mechanism::MechanismState& state,
+                    Params params = Params());
+  ~ControllerManager();
+  ControllerManager(const ControllerManager&) = delete;
+  ControllerManager& operator=(const ControllerManager&) = delete;
+
+  ControllerRegistry& registry() { return registry_; }
+  const Params& params() const { return params_; }
+
+  // Loads `name` (parameters at <namespace>/<name>, type at <namespace>/<name>/type). Errors
+  // name the controller, the parameter path, and the joint where one is at fault.
+  ControlResult load_controller(const std::string& name);
+  // Only a controller that is not running (and not part of a pending switch).
+  ControlResult unload_controller(const std::string& name);
+  SwitchResult switch_controllers(const std::vector<std::string>& start, const std::vector<std::string>& stop,
+                                  SwitchStrictness strictness);
+  bool switch_pending() const { return switch_pending_.load(std::memory_order_acquire); }
+  // Waits until the tick has applied the pending switch; false on timeout (seconds).
+  bool wait_for_switch(double timeout) const;
+
+  std::vector<ControllerInfo> list_controllers() const;
+  std::optional<ControllerInfo> controller_info(const std::string& name) const;
+  std::vector<std::string> list_controller_types() const { return registry_.types(); }
+  // The controller object (for its ports), valid until it is unloaded; null when not loaded.
+  Controller* controller(const std::string& name) const;
+  ManagerStatistics statistics() const;
+
+  // The real-time tick. `time` and `period` in seconds.
+  void update(double time, double period) noexcept;
+
+ private:
+  struct Entry;
+  Entry* find(const std::string& name) const;
+  void publish_list(std::vector<Entry*> list);
+  void run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept;
+  void apply_switch(double time) noexcept;
+  void fail(Entry& entry, const char* prefix, const char* reason, double time) noexcept;
+
+  const mechanism::MechanismModel& model_;
+  mechanism::MechanismState& state_;
+  Params params_;
+  ControllerRegistry registry_;
+
+  mutable std::mutex config_mutex_;  // non-real-time callers only
+  std::vector<std::unique_ptr<Entry>> entries_;
+
+  // The controller list the tick iterates, double buffered (read-copy-update).
+  std::vector<Entry*> lists_[2];
+  std::atomic<int> current_list_{0};
+  std::atomic<int> list_in_use_{-1};
+
+  std::vector<Entry*> pending_start_;
+  std::vector<Entry*> pending_stop_;
+  std::atomic<bool> switch_pending_{false};
+
+  std::atomic<std::uint64_t> ticks_{0};
+  std::atomic<std::uint64_t> tick_time_sum_ns_{0};
+  std::atomic<std::uint64_t> tick_time_max_ns_{0};
+  std::atomic<std::uint64_t> tick_overruns_{0};
+};
+
+}  // namespace mechsim::control

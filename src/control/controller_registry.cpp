@@ -1,0 +1,59 @@
+#include "control/controller_registry.hpp"
+
+#include "control/forward_command_controllers.hpp"
+#include "control/joint_state_controller.hpp"
+#include "control/pid_joint_controllers.hpp"
+
+namespace mechsim::control {
+
+void ControllerRegistry::add(const std::string& type, ControllerFactory factory) {
+  factories_[type] = std::move(factory);
+}
+
+std::unique_ptr<Controller> ControllerRegistry::create(const std::string& type) const {
+  auto it = factories_.find(type);
+  if (it == factories_.end()) return nullptr;
+  return it->second();
+}
+
+std::vector<std::string> ControllerRegistry::types() const {
+  std::vector<std::string> out;
+  for (const auto& entry : factories_) out.push_back(entry.first);
+  return out;
+}
+
+void register_builtin_controllers(ControllerRegistry& r) {
+  using HI = HardwareInterface;
+  const auto single = [](HI iface) {
+    return [iface] { return std::make_unique<JointCommandController>(iface); };
+  };
+  const auto group = [](HI iface) {
+    return [iface] { return std::make_unique<JointGroupCommandController>(iface); };
+  };
+  const auto position_pid = [](ControllerFlavour f) {
+    return [f] { return std::make_unique<JointPositionPidController>(f); };
+  };
+  const auto velocity_pid = [](ControllerFlavour f) {
+    return [f] { return std::make_unique<JointVelocityPidController>(f); };
+  };
+
+  r.add("effort_controllers/JointEffortController", single(HI::Effort));
+  r.add("effort_controllers/JointPositionController", position_pid(ControllerFlavour::RosControl));
+  r.add("effort_controllers/JointVelocityController", velocity_pid(ControllerFlavour::RosControl));
+  r.add("effort_controllers/JointGroupEffortController", group(HI::Effort));
+  r.add("effort_controllers/JointGroupPositionController",
+        [] { return std::make_unique<JointGroupPositionPidController>(); });
+
+  r.add("position_controllers/JointPositionController", single(HI::Position));
+  r.add("position_controllers/JointGroupPositionController", group(HI::Position));
+  r.add("velocity_controllers/JointVelocityController", single(HI::Velocity));
+  r.add("velocity_controllers/JointGroupVelocityController", group(HI::Velocity));
+
+  r.add("robot_mechanism_controllers/JointEffortController", single(HI::Effort));
+  r.add("robot_mechanism_controllers/JointPositionController", position_pid(ControllerFlavour::Pr2));
+  r.add("robot_mechanism_controllers/JointVelocityController", velocity_pid(ControllerFlavour::Pr2));
+
+  r.add("joint_state_controller/JointStateController", [] { return std::make_unique<JointStateController>(); });
+}
+
+}  // namespace mechsim::control

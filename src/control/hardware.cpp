@@ -1,0 +1,125 @@
+#include "control/hardware.hpp"
+
+#include <algorithm>
+
+namespace mechsim::control {
+
+const char* interface_name(HardwareInterface iface) {
+  switch (iface) {
+    case HardwareInterface::Effort: return "hardware_interface::EffortJointInterface";
+    case HardwareInterface::Position: return "hardware_interface::PositionJointInterface";
+    case HardwareInterface::Velocity: return "hardware_interface::VelocityJointInterface";
+  }
+  return "?";
+}
+
+const char* interface_short_name(HardwareInterface iface) {
+  switch (iface) {
+    case HardwareInterface::Effort: return "effort";
+    case HardwareInterface::Position: return "position";
+    case HardwareInterface::Velocity: return "velocity";
+  }
+  return "?";
+}
+
+bool parse_interface_name(std::string_view text, HardwareInterface& out) {
+  for (std::string_view prefix : {"hardware_interface::", "hardware_interface/"}) {
+    if (text.substr(0, prefix.size()) == prefix) text.remove_prefix(prefix.size());
+  }
+  if (text == "EffortJointInterface") {
+    out = HardwareInterface::Effort;
+  } else if (text == "PositionJointInterface") {
+    out = HardwareInterface::Position;
+  } else if (text == "VelocityJointInterface") {
+    out = HardwareInterface::Velocity;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void JointHandle::set_command(double value) noexcept {
+  switch (iface_) {
+    case HardwareInterface::Effort: state_->commanded_effort = value; break;
+    case HardwareInterface::Position: state_->commanded_position = value; break;
+    case HardwareInterface::Velocity: state_->commanded_velocity = value; break;
+  }
+  state_->command_mode = iface_;
+}
+
+double JointHandle::command() const noexcept {
+  switch (iface_) {
+    case HardwareInterface::Effort: return state_->commanded_effort;
+    case HardwareInterface::Position: return state_->commanded_position;
+    case HardwareInterface::Velocity: return state_->commanded_velocity;
+  }
+  return 0.0;
+}
+
+RobotHardware::RobotHardware(const mechanism::MechanismModel& model, mechanism::MechanismState& state)
+    : model_(model), state_(state) {
+  if (state_.joints.size() != model_.joints.size()) {
+    throw ControllerConfigError("mechanism state has " + std::to_string(state_.joints.size()) +
+                                " joints but the model has " + std::to_string(model_.joints.size()));
+  }
+}
+
+int RobotHardware::find_joint(std::string_view name) const {
+  for (std::size_t i = 0; i < model_.joints.size(); ++i) {
+    if (model_.joints[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+namespace {
+
+std::string where(std::string_view param_path) {
+  return param_path.empty() ? std::string() : " (parameter " + std::string(param_path) + ")";
+}
+
+std::string known_joints(const mechanism::MechanismModel& model) {
+  std::string out;
+  const std::size_t shown = std::min<std::size_t>(model.joints.size(), 12);
+  for (std::size_t i = 0; i < shown; ++i) out += (i ? ", " : "") + model.joints[i].name;
+  if (model.joints.size() > shown) out += ", ... (" + std::to_string(model.joints.size()) + " in all)";
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+JointStateHandle RobotHardware::joint_state(const std::string& joint, std::string_view param_path) const {
+  const int index = find_joint(joint);
+  if (index < 0) {
+    throw ControllerConfigError("unknown joint '" + joint + "'" + where(param_path) +
+                                "; the robot's joints: " + known_joints(model_));
+  }
+  return joint_state(static_cast<std::size_t>(index));
+}
+
+JointStateHandle RobotHardware::joint_state(std::size_t index) const {
+  return JointStateHandle(&model_.joints[index], &state_.joints[index]);
+}
+
+JointHandle RobotHardware::claim_joint(const std::string& joint, HardwareInterface iface, std::string_view param_path) {
+  const int index = find_joint(joint);
+  if (index < 0) {
+    throw ControllerConfigError("unknown joint '" + joint + "'" + where(param_path) +
+                                "; the robot's joints: " + known_joints(model_));
+  }
+  const mechanism::JointInfo& info = model_.joints[static_cast<std::size_t>(index)];
+  if (std::find(info.interfaces.begin(), info.interfaces.end(), iface) == info.interfaces.end()) {
+    std::string offered;
+    for (HardwareInterface i : info.interfaces) offered += (offered.empty() ? "" : ", ") + std::string(interface_name(i));
+    throw ControllerConfigError("joint '" + joint + "'" + where(param_path) + " has no " + interface_name(iface) +
+                                " (its transmission offers: " + (offered.empty() ? "none, it is passive" : offered) + ")");
+  }
+  auto claim = std::find_if(claims_.begin(), claims_.end(), [&](const ResourceClaim& c) { return c.interface == iface; });
+  if (claim == claims_.end()) {
+    claims_.push_back(ResourceClaim{iface, {}});
+    claim = claims_.end() - 1;
+  }
+  if (std::find(claim->joints.begin(), claim->joints.end(), joint) == claim->joints.end()) claim->joints.push_back(joint);
+  return JointHandle(&info, &state_.joints[static_cast<std::size_t>(index)], iface);
+}
+
+}  // namespace mechsim::control

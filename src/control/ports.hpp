@@ -1,0 +1,196 @@
+#pragma once
+// Ports: how the outside (ROS topics, scenario timelines, recorders, tests) reaches a
+// controller. A command port is written by non-real-time threads and read in the tick; a state
+// port is filled in the tick and read outside. Both are double buffers that never block the
+// tick (control/realtime_buffer.hpp). Controllers know nothing of who binds their ports.
+//
+// Command ports reject non-finite values (and arrays of the wrong size): the previous command
+// stays, the rejection is counted and its reason kept, so a NaN never reaches an actuator.
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "control/pid.hpp"
+#include "control/realtime_buffer.hpp"
+
+namespace mechsim::control {
+
+enum class PortKind : std::uint8_t {
+  ScalarCommand,        // ScalarCommandPort: one value (std_msgs/Float64)
+  ArrayCommand,         // ArrayCommandPort: one value per joint (std_msgs/Float64MultiArray)
+  TwistCommand,         // TwistCommandPort: geometry_msgs/Twist
+  JointControllerState, // StatePort<JointControllerState>
+  JointGroupState,      // StatePort<JointGroupControllerState>
+  JointStates,          // StatePort<JointStateSnapshot> (sensor_msgs/JointState)
+  PidGains,             // PidGainsPort: runtime gain changes (dynamic_reconfigure)
+};
+
+class Port {
+ public:
+  explicit Port(std::string name) : name_(std::move(name)) {}
+  virtual ~Port() = default;
+  Port(const Port&) = delete;
+  Port& operator=(const Port&) = delete;
+  const std::string& name() const { return name_; }  // "command", "state", "joint_states", "gains"
+  virtual PortKind kind() const = 0;
+
+ private:
+  std::string name_;
+};
+
+// ---------------------------------------------------------------- commands
+
+struct Vec3d {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+// A body velocity command: linear (m/s) and angular (rad/s) in the robot's base frame.
+struct Twist {
+  Vec3d linear;
+  Vec3d angular;
+};
+
+// Counts and explains rejected writes (shared by the command ports).
+class RejectionLog {
+ public:
+  std::uint64_t count() const { return count_.load(std::memory_order_relaxed); }
+  std::string last() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return last_;
+  }
+
+ protected:
+  bool reject(std::string reason, std::string* error);
+
+ private:
+  std::atomic<std::uint64_t> count_{0};
+  mutable std::mutex mutex_;
+  std::string last_;
+};
+
+class ScalarCommandPort : public Port, public RejectionLog {
+ public:
+  using Port::Port;
+  PortKind kind() const override { return PortKind::ScalarCommand; }
+  // Non-real-time. False (and `error` set) when rejected.
+  bool write(double value, std::string* error = nullptr);
+  double latest() const { return buffer_.latest(); }
+  std::uint64_t accepted() const { return buffer_.writes(); }
+  // Real-time.
+  double read_from_rt() noexcept { return buffer_.read_from_rt(); }
+  // Real-time: drops any pending write and sets the command (ros_control's starting()).
+  void reset_from_rt(double value) noexcept {
+    (void)buffer_.read_from_rt();
+    buffer_.mutable_rt() = value;
+  }
+
+ private:
+  RealtimeBuffer<double> buffer_;
+};
+
+class ArrayCommandPort : public Port, public RejectionLog {
+ public:
+  ArrayCommandPort(std::string name, std::size_t size);
+  PortKind kind() const override { return PortKind::ArrayCommand; }
+  std::size_t size() const { return size_; }
+  // Non-real-time: rejected unless values.size() == size() and every value is finite.
+  bool write(std::span<const double> values, std::string* error = nullptr);
+  std::vector<double> latest() const { return buffer_.latest(); }
+  // Real-time: size() values.
+  const std::vector<double>& read_from_rt() noexcept { return buffer_.read_from_rt(); }
+  void reset_from_rt(std::span<const double> values) noexcept;
+
+ private:
+  std::size_t size_;
+  RealtimeBuffer<std::vector<double>> buffer_;
+};
+
+class TwistCommandPort : public Port, public RejectionLog {
+ public:
+  using Port::Port;
+  PortKind kind() const override { return PortKind::TwistCommand; }
+  bool write(const Twist& twist, std::string* error = nullptr);
+  Twist latest() const { return buffer_.latest(); }
+  const Twist& read_from_rt() noexcept { return buffer_.read_from_rt(); }
+  void reset_from_rt(const Twist& twist) noexcept {
+    (void)buffer_.read_from_rt();
+    buffer_.mutable_rt() = twist;
+  }
+
+ private:
+  RealtimeBuffer<Twist> buffer_;
+};
+
+// Runtime gain changes of one PID (the tick picks them up on its next step).
+class PidGainsPort : public Port {
+ public:
+  PidGainsPort(std::string name, Pid* pid) : Port(std::move(name)), pid_(pid) {}
+  PortKind kind() const override { return PortKind::PidGains; }
+  // False when a gain is not finite.
+  bool write(const PidGains& gains, std::string* error = nullptr);
+  PidGains latest() const { return pid_->gains(); }
+
+ private:
+  Pid* pid_;
+};
+
+// ---------------------------------------------------------------- state snapshots
+
+// What control_msgs/JointControllerState carries.
+struct JointControllerState {
+  double stamp = 0.0;              // s, sim time of the update
+  double set_point = 0.0;          // commanded position (rad, m) / velocity / effort
+  double process_value = 0.0;      // measured quantity of the same kind
+  double process_value_dot = 0.0;  // its rate (velocity for position controllers)
+  double error = 0.0;              // set_point - process_value (PR2 controllers: the opposite)
+  double time_step = 0.0;          // s, the period of the update
+  double command = 0.0;            // what was written to the joint
+  PidGains gains;                  // zero for controllers without PID
+};
+
+struct JointGroupControllerState {
+  double stamp = 0.0;
+  std::vector<std::string> joint_names;
+  std::vector<JointControllerState> joints;  // same order as joint_names
+};
+
+// What sensor_msgs/JointState carries.
+struct JointStateSnapshot {
+  double stamp = 0.0;  // s
+  std::vector<std::string> names;
+  std::vector<double> position;  // rad or m
+  std::vector<double> velocity;  // rad/s or m/s
+  std::vector<double> effort;    // N m or N (measured)
+};
+
+template <class T>
+constexpr PortKind state_port_kind();
+template <>
+constexpr PortKind state_port_kind<JointControllerState>() { return PortKind::JointControllerState; }
+template <>
+constexpr PortKind state_port_kind<JointGroupControllerState>() { return PortKind::JointGroupState; }
+template <>
+constexpr PortKind state_port_kind<JointStateSnapshot>() { return PortKind::JointStates; }
+
+template <class T>
+class StatePort : public Port {
+ public:
+  using Port::Port;
+  PortKind kind() const override { return state_port_kind<T>(); }
+  void init(const T& prototype) { buffer_.init(prototype); }  // non-real-time, before use
+  T read() const { return buffer_.read(); }                    // non-real-time
+  std::uint64_t sequence() const noexcept { return buffer_.sequence(); }
+  template <class F>
+  bool publish_from_rt(F&& fill) noexcept {
+    return buffer_.publish_from_rt(std::forward<F>(fill));
+  }
+
+ private:
+  SnapshotBuffer<T> buffer_;
+};
+
+}  // namespace mechsim::control
