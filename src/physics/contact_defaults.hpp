@@ -24,6 +24,9 @@ struct ContactDefaults {
   double margin = 0.0;
   // Contact dimensionality: 3 = normal + 2D sliding friction (Gazebo ODE's pyramid model).
   int condim = 3;
+  // Joint limits use the same soft-constraint model; stiffer than contacts so a limit stop
+  // behaves like Gazebo ODE's hard stop (time constant >= 2 timesteps at 1 kHz).
+  std::array<double, 2> limit_solref{0.005, 1.0};
   // Sliding friction of the ground plane / terrain. Robot geoms carry a higher MuJoCo
   // priority, so a contact with the ground uses the robot link's friction, as ODE's
   // min(mu_a, mu_b) does against Gazebo's high-friction ground plane.

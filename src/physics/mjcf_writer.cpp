@@ -89,7 +89,8 @@ class Writer {
        << num(c.torsional_friction) << " " << num(c.rolling_friction) << "\" solref=\"" << num(c.solref[0]) << " "
        << num(c.solref[1]) << "\" solimp=\"" << num(c.solimp[0]) << " " << num(c.solimp[1]) << " "
        << num(c.solimp[2]) << " " << num(c.solimp[3]) << " " << num(c.solimp[4]) << "\" margin=\""
-       << num(c.margin) << "\"/>\n  </default>\n";
+       << num(c.margin) << "\"/>\n    <joint solreflimit=\"" << num(c.limit_solref[0]) << " " << num(c.limit_solref[1])
+       << "\"/>\n  </default>\n";
     write_assets();
     x_ << "  <worldbody>\n";
     write_world();
@@ -148,10 +149,10 @@ class Writer {
       const Heightmap& h = *options_.world.terrain;
       const double lo = static_cast<double>(*std::min_element(h.heights.begin(), h.heights.end()));
       x_ << "    <geom name=\"" << kTerrainName << "\" type=\"hfield\" hfield=\"" << kTerrainName << "\" pos=\"0 0 "
-         << num(lo) << "\" contype=\"1\" conaffinity=\"1\" priority=\"0\" friction=\"" << friction << "\"/>\n";
+         << num(lo) << "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";
     } else if (options_.world.ground_plane) {
       x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""
-         << " priority=\"0\" friction=\"" << friction << "\"/>\n";
+         << " group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";
     }
   }
 

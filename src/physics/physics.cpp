@@ -251,12 +251,14 @@ Pose Physics::link_pose(std::size_t link) const {
 Twist Physics::link_twist(std::size_t link) const {
   refresh_kinematics();
   const LinkInfo& info = model_->links()[link];
-  mjtNum v[6];  // [angular; linear] at the body origin, world orientation
-  mj_objectVelocity(data_->m, data_->d, mjOBJ_BODY, info.body, v, 0);
+  const mjData* d = data_->d;
+  mjtNum v[6];  // [angular; linear] at the body's centre of mass, world orientation
+  mj_objectVelocity(data_->m, d, mjOBJ_BODY, info.body, v, 0);
   const Vec3 w{v[0], v[1], v[2]};
-  const Quat q{data_->d->xquat[4 * info.body], data_->d->xquat[4 * info.body + 1], data_->d->xquat[4 * info.body + 2],
-               data_->d->xquat[4 * info.body + 3]};
-  const Vec3 r = rotate(q, info.X_BL.position);  // body origin -> link origin, world frame
+  const Pose X_WL = link_pose(link);
+  const int b = info.body;
+  const Vec3 r{X_WL.position.x - d->xipos[3 * b], X_WL.position.y - d->xipos[3 * b + 1],
+               X_WL.position.z - d->xipos[3 * b + 2]};  // centre of mass -> link origin, world frame
   return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
 }
 
@@ -285,14 +287,29 @@ std::size_t Physics::contacts(std::vector<Contact>& out) const {
   return out.size();
 }
 
+double Physics::ground_height(double x, double y) const {
+  refresh_kinematics();
+  constexpr double kTop = 1e4;
+  const mjtNum from[3] = {x, y, kTop};
+  const mjtNum down[3] = {0.0, 0.0, -1.0};
+  const mjtByte groups[mjNGROUP] = {0, 0, 1, 0, 0, 0};  // world geoms sit in group 2
+  int geom = -1;
+  const mjtNum distance = mj_ray(data_->m, data_->d, from, down, groups, 1, -1, &geom);
+  return distance < 0.0 ? std::nan("") : kTop - distance;
+}
+
 double Physics::energy() const {
   mjModel* m = data_->m;
   mjData* d = data_->d;
   mj_kinematics(m, d);
   mj_comPos(m, d);
   mj_crb(m, d);
+  // MuJoCo 2.2.2 computes energy only while the energy flag is on.
+  const int flags = m->opt.enableflags;
+  m->opt.enableflags |= mjENBL_ENERGY;
   mj_energyPos(m, d);
   mj_energyVel(m, d);
+  m->opt.enableflags = flags;
   data_->stale = true;  // mj_comVel not refreshed
   return d->energy[0] + d->energy[1];
 }

@@ -116,6 +116,10 @@ class Physics {
   double differential_torque_a() const { return diff_tau_a_; }
   double differential_torque_b() const { return diff_tau_b_; }
 
+  // Height (m) of the world's ground (plane or terrain) under (x, y), by a ray cast straight
+  // down; NaN where there is no ground.
+  double ground_height(double x, double y) const;
+
   // Total mechanical energy (J) of the robot: kinetic + gravitational potential.
   double energy() const;
 
