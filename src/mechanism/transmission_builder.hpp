@@ -32,6 +32,7 @@ class TransmissionBuilder {
   // Adds the actuator and returns its index; an actuator belongs to one transmission only.
   // Its <hardwareInterface> names must be known ones.
   int actuator(const description::TransmissionActuator& entry);
+  bool has_robot_joint(const std::string& name) const { return robot_.joint(name) != nullptr; }
 
   // The entries with a role (exactly one / all of them).
   const description::TransmissionJoint& joint_entry(const std::string& role) const;

@@ -3,6 +3,10 @@
 #include <array>
 #include <string_view>
 
+#include "mechanism/differential_transmission.hpp"
+#include "mechanism/four_bar_transmission.hpp"
+#include "mechanism/pr2_gripper_transmission.hpp"
+#include "mechanism/pr2_wrist_transmission.hpp"
 #include "mechanism/simple_transmission.hpp"
 #include "mechanism/transmission_builder.hpp"
 
@@ -22,6 +26,12 @@ constexpr std::array kTypes{
     TypeEntry{"transmission_interface/SimpleTransmission", &build_simple_transmission},
     TypeEntry{"pr2_mechanism_model/SimpleTransmission", &build_simple_transmission},
     TypeEntry{"SimpleTransmission", &build_simple_transmission},
+    TypeEntry{"transmission_interface/DifferentialTransmission", &build_differential_transmission},
+    TypeEntry{"transmission_interface/FourBarLinkageTransmission", &build_four_bar_transmission},
+    TypeEntry{"pr2_mechanism_model/WristTransmission", &build_pr2_wrist_transmission},
+    TypeEntry{"WristTransmission", &build_pr2_wrist_transmission},
+    TypeEntry{"pr2_mechanism_model/PR2GripperTransmission", &build_pr2_gripper_transmission},
+    TypeEntry{"PR2GripperTransmission", &build_pr2_gripper_transmission},
 };
 
 }  // namespace

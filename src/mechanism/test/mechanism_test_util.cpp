@@ -97,3 +97,74 @@ double actuator_power(const MechanismState& state, bool measured) {
 }
 
 }  // namespace mechsim::mechanism::test
+
+#include <algorithm>
+#include <cmath>
+
+#include "mechanism/propagation.hpp"
+
+namespace mechsim::mechanism::test {
+
+double joint_round_trip_error(const MechanismModel& model, MechanismState& state, double seed) {
+  std::vector<JointState> before(state.joints.size());
+  for (std::size_t i = 0; i < model.joints.size(); ++i) {
+    if (model.joints[i].role != JointRole::Actuated) continue;
+    const double k = seed + 0.37 * static_cast<double>(i);
+    JointState& j = state.joints[i];
+    j.position = 0.01 + 0.02 * std::sin(k);
+    j.velocity = 0.5 * std::cos(1.3 * k);
+    j.measured_effort = 3.0 * std::sin(2.1 * k);
+    j.commanded_effort = -2.0 * std::cos(0.7 * k);
+    j.commanded_position = 0.03 + 0.01 * std::cos(k);
+    j.commanded_velocity = 0.2 * std::sin(0.9 * k);
+    before[i] = j;
+  }
+  propagate_joint_to_actuator_position(model, state);
+  propagate_joint_to_actuator_effort(model, state);
+  for (std::size_t i = 0; i < model.joints.size(); ++i)
+    if (model.joints[i].role == JointRole::Actuated) state.joints[i] = JointState{};
+  propagate_actuator_to_joint_position(model, state);
+  propagate_actuator_to_joint_effort(model, state);
+  double err = 0.0;
+  for (std::size_t i = 0; i < model.joints.size(); ++i) {
+    if (model.joints[i].role != JointRole::Actuated) continue;
+    const JointState& a = before[i];
+    const JointState& b = state.joints[i];
+    for (auto [x, y] : {std::pair{a.position, b.position}, {a.velocity, b.velocity},
+                        {a.measured_effort, b.measured_effort}, {a.commanded_effort, b.commanded_effort},
+                        {a.commanded_position, b.commanded_position}, {a.commanded_velocity, b.commanded_velocity}})
+      err = std::max(err, std::abs(x - y));
+  }
+  return err;
+}
+
+double actuator_round_trip_error(const MechanismModel& model, MechanismState& state, double seed) {
+  for (std::size_t i = 0; i < state.actuators.size(); ++i) {
+    const double k = seed + 0.41 * static_cast<double>(i);
+    ActuatorState& a = state.actuators[i];
+    a.position = 3.0 + 2.0 * std::sin(k);
+    a.velocity = 10.0 * std::cos(1.7 * k);
+    a.last_measured_effort = 0.3 * std::sin(2.3 * k);
+    a.commanded_effort = 0.2 * std::cos(0.3 * k);
+    a.commanded_position = 4.0 + std::cos(k);
+    a.commanded_velocity = 5.0 * std::sin(0.5 * k);
+  }
+  const std::vector<ActuatorState> before = state.actuators;
+  propagate_actuator_to_joint_position(model, state);
+  propagate_actuator_to_joint_effort(model, state);
+  for (ActuatorState& a : state.actuators) a = ActuatorState{};
+  propagate_joint_to_actuator_position(model, state);
+  propagate_joint_to_actuator_effort(model, state);
+  double err = 0.0;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    const ActuatorState& a = before[i];
+    const ActuatorState& b = state.actuators[i];
+    for (auto [x, y] : {std::pair{a.position, b.position}, {a.velocity, b.velocity},
+                        {a.last_measured_effort, b.last_measured_effort}, {a.commanded_effort, b.commanded_effort},
+                        {a.commanded_position, b.commanded_position}, {a.commanded_velocity, b.commanded_velocity}})
+      err = std::max(err, std::abs(x - y));
+  }
+  return err;
+}
+
+}  // namespace mechsim::mechanism::test

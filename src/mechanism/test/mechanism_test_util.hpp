@@ -38,3 +38,13 @@ double joint_power(const MechanismModel& model, const MechanismState& state, boo
 double actuator_power(const MechanismState& state, bool measured);
 
 }  // namespace mechsim::mechanism::test
+
+namespace mechsim::mechanism::test {
+
+// Fills the actuated joints' state and commands with distinct values (from `seed`), then
+// checks joint -> actuator -> joint for state and commands; returns the largest difference.
+double joint_round_trip_error(const MechanismModel& model, MechanismState& state, double seed);
+// The same from the actuator side: actuator -> joint -> actuator.
+double actuator_round_trip_error(const MechanismModel& model, MechanismState& state, double seed);
+
+}  // namespace mechsim::mechanism::test
