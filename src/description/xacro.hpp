@@ -3,6 +3,7 @@
 // (in-order processing). Drop-in for `xacro FILE name:=value ...`.
 
 #include <map>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -13,13 +14,22 @@ namespace mechsim::description {
 struct XacroOptions {
   std::map<std::string, std::string> args;      // name:=value mappings from the command line
   std::map<std::string, std::string> packages;  // --package NAME=DIR, searched before ROS_PACKAGE_PATH
+  // Where xacro's warnings and xacro.message() output go; nullptr: std::cerr.
+  std::ostream* diagnostics = nullptr;
 };
 
 // An expansion failure. what() is the full message: the problem, then the file and line, then
 // the include/macro stack ("  in macro 'x' called from FILE:LINE" lines), as xacro prints it.
 class XacroError : public std::runtime_error {
  public:
-  explicit XacroError(const std::string& message) : std::runtime_error(message) {}
+  // Xacro: an expansion error (xacro's XacroException); Parse: malformed XML (expat's ParseError).
+  enum class Kind { Xacro, Parse };
+  explicit XacroError(const std::string& message, Kind kind = Kind::Xacro)
+      : std::runtime_error(message), kind_(kind) {}
+  Kind kind() const { return kind_; }
+
+ private:
+  Kind kind_;
 };
 
 // Expands the file at `path`; returns the output document exactly as `xacro path -o OUT` writes

@@ -1,0 +1,712 @@
+// A recursive-descent parser for Python expressions, following the grammar's precedence:
+// lambda < if-else < or < and < not < comparisons < | < ^ < & < shifts < + - < * / // % <
+// unary < ** < primary (call, subscript, attribute) < atom.
+// GCC 12 reports a false -Wrestrict on `"literal" + std::string&&` at -O3 (GCC bug 105329).
+#pragma GCC diagnostic ignored "-Wrestrict"
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+#include "description/pyexpr_ast.hpp"
+
+namespace mechsim::description::pyexpr {
+namespace {
+
+enum class Tok : std::uint8_t { Name, Number, String, Op, End };
+
+struct Token {
+  Tok type = Tok::End;
+  std::string text;  // name or operator
+  Value value;       // number or string literal
+};
+
+[[noreturn]] void syntax_error(const std::string& what) { throw PyError("SyntaxError", what); }
+
+void append_utf8(std::string& out, unsigned long cp) {
+  if (cp < 0x80) {
+    out += static_cast<char>(cp);
+  } else if (cp < 0x800) {
+    out += static_cast<char>(0xC0 | (cp >> 6));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  } else if (cp < 0x10000) {
+    out += static_cast<char>(0xE0 | (cp >> 12));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (cp >> 18));
+    out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  }
+}
+
+bool is_name_start(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' ||
+         (static_cast<unsigned char>(c) >= 0x80);
+}
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+class Lexer {
+ public:
+  explicit Lexer(std::string_view s) : s_(s) {}
+
+  std::vector<Token> run() {
+    std::vector<Token> out;
+    int depth = 0;
+    while (true) {
+      while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' ||
+                                  s_[pos_] == '\r' || s_[pos_] == '\f')) {
+        ++pos_;
+      }
+      if (pos_ >= s_.size()) break;
+      const char c = s_[pos_];
+      if (c == '\\' && pos_ + 1 < s_.size() && s_[pos_ + 1] == '\n') {
+        pos_ += 2;
+        continue;
+      }
+      if (is_name_start(c)) {
+        // string prefixes: u, r, b, and combinations
+        std::size_t p = pos_;
+        while (p < s_.size() && (is_name_start(s_[p]) || is_digit(s_[p]))) ++p;
+        std::string word(s_.substr(pos_, p - pos_));
+        if (p < s_.size() && (s_[p] == '\'' || s_[p] == '"') && word.size() <= 2) {
+          bool raw = false;
+          bool ok = true;
+          for (char w : word) {
+            const char lw = static_cast<char>(w | 0x20);
+            if (lw == 'r') raw = true;
+            else if (lw != 'u' && lw != 'b') ok = false;
+          }
+          if (ok) {
+            pos_ = p;
+            out.push_back(string_token(raw));
+            continue;
+          }
+        }
+        pos_ = p;
+        Token t;
+        t.type = Tok::Name;
+        t.text = std::move(word);
+        out.push_back(std::move(t));
+        continue;
+      }
+      if (is_digit(c) || (c == '.' && pos_ + 1 < s_.size() && is_digit(s_[pos_ + 1]))) {
+        out.push_back(number_token());
+        continue;
+      }
+      if (c == '\'' || c == '"') {
+        out.push_back(string_token(false));
+        continue;
+      }
+      static constexpr std::string_view three[] = {"**=", "//=", ">>=", "<<="};
+      static constexpr std::string_view two[] = {"**", "//", "<<", ">>", "<=", ">=", "==", "!=", "->"};
+      Token t;
+      t.type = Tok::Op;
+      for (auto op : three) {
+        if (s_.substr(pos_, 3) == op) t.text = op;
+      }
+      if (t.text.empty()) {
+        for (auto op : two) {
+          if (s_.substr(pos_, 2) == op) t.text = op;
+        }
+      }
+      if (t.text.empty()) {
+        if (std::string_view("+-*/%&|^~<>()[]{},:.=@;").find(c) == std::string_view::npos) {
+          syntax_error(std::string("invalid character '") + c + "'");
+        }
+        t.text = std::string(1, c);
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') --depth;
+      }
+      pos_ += t.text.size();
+      out.push_back(std::move(t));
+    }
+    out.push_back(Token{});
+    return out;
+  }
+
+ private:
+  Token number_token() {
+    const std::size_t start = pos_;
+    std::string digits;
+    Token t;
+    t.type = Tok::Number;
+    if (s_[pos_] == '0' && pos_ + 1 < s_.size() &&
+        std::string_view("xXoObB").find(s_[pos_ + 1]) != std::string_view::npos) {
+      const char kind = static_cast<char>(s_[pos_ + 1] | 0x20);
+      const int base = kind == 'x' ? 16 : kind == 'o' ? 8 : 2;
+      pos_ += 2;
+      while (pos_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_')) {
+        if (s_[pos_] != '_') digits += s_[pos_];
+        ++pos_;
+      }
+      std::int64_t v = 0;
+      auto res = std::from_chars(digits.data(), digits.data() + digits.size(), v, base);
+      if (res.ec != std::errc() || res.ptr != digits.data() + digits.size() || digits.empty()) {
+        syntax_error("invalid number literal '" + std::string(s_.substr(start, pos_ - start)) + "'");
+      }
+      t.value = Value::integer(v);
+      return t;
+    }
+    bool is_float = false;
+    auto take_digits = [&] {
+      while (pos_ < s_.size() && (is_digit(s_[pos_]) || s_[pos_] == '_')) {
+        if (s_[pos_] != '_') digits += s_[pos_];
+        ++pos_;
+      }
+    };
+    take_digits();
+    if (pos_ < s_.size() && s_[pos_] == '.') {
+      is_float = true;
+      digits += '.';
+      ++pos_;
+      take_digits();
+    }
+    if (pos_ < s_.size() && (s_[pos_] == 'e' || s_[pos_] == 'E')) {
+      std::size_t p = pos_ + 1;
+      if (p < s_.size() && (s_[p] == '+' || s_[p] == '-')) ++p;
+      if (p < s_.size() && is_digit(s_[p])) {
+        is_float = true;
+        digits += 'e';
+        digits.append(s_.substr(pos_ + 1, p - pos_ - 1));
+        pos_ = p;
+        take_digits();
+      }
+    }
+    if (pos_ < s_.size() && (s_[pos_] == 'j' || s_[pos_] == 'J')) {
+      syntax_error("complex numbers are not supported");
+    }
+    if (pos_ < s_.size() && is_name_start(s_[pos_])) {
+      syntax_error("invalid decimal literal");
+    }
+    if (is_float) {
+      t.value = Value::real(std::strtod(digits.c_str(), nullptr));
+    } else {
+      std::int64_t v = 0;
+      auto res = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+      if (res.ec == std::errc::result_out_of_range) {
+        t.value = Value::real(std::strtod(digits.c_str(), nullptr));
+      } else {
+        t.value = Value::integer(v);
+      }
+    }
+    return t;
+  }
+
+  Token string_token(bool raw) {
+    const char q = s_[pos_];
+    const bool triple = s_.substr(pos_, 3) == std::string(3, q);
+    pos_ += triple ? 3 : 1;
+    std::string out;
+    while (true) {
+      if (pos_ >= s_.size()) syntax_error("unterminated string literal");
+      const char c = s_[pos_];
+      if (c == q) {
+        if (!triple) {
+          ++pos_;
+          break;
+        }
+        if (s_.substr(pos_, 3) == std::string(3, q)) {
+          pos_ += 3;
+          break;
+        }
+      }
+      if (c == '\n' && !triple) syntax_error("unterminated string literal");
+      if (c == '\\' && pos_ + 1 < s_.size()) {
+        const char e = s_[pos_ + 1];
+        if (raw) {
+          out += c;
+          out += e;
+          pos_ += 2;
+          continue;
+        }
+        pos_ += 2;
+        switch (e) {
+          case 'n': out += '\n'; break;
+          case 't': out += '\t'; break;
+          case 'r': out += '\r'; break;
+          case '0': out += '\0'; break;
+          case 'a': out += '\a'; break;
+          case 'b': out += '\b'; break;
+          case 'f': out += '\f'; break;
+          case 'v': out += '\v'; break;
+          case '\\': out += '\\'; break;
+          case '\'': out += '\''; break;
+          case '"': out += '"'; break;
+          case '\n': break;
+          case 'x':
+          case 'u':
+          case 'U': {
+            const std::size_t n = e == 'x' ? 2 : e == 'u' ? 4 : 8;
+            if (pos_ + n > s_.size()) syntax_error("truncated \\" + std::string(1, e) + " escape");
+            unsigned long cp = 0;
+            auto res = std::from_chars(s_.data() + pos_, s_.data() + pos_ + n, cp, 16);
+            if (res.ptr != s_.data() + pos_ + n) syntax_error("truncated escape");
+            append_utf8(out, cp);
+            pos_ += n;
+            break;
+          }
+          default:
+            out += '\\';
+            out += e;
+        }
+        continue;
+      }
+      out += c;
+      ++pos_;
+    }
+    Token t;
+    t.type = Tok::String;
+    t.value = Value::str(std::move(out));
+    return t;
+  }
+
+  std::string_view s_;
+  std::size_t pos_ = 0;
+};
+
+class Parser {
+ public:
+  explicit Parser(std::vector<Token> toks) : t_(std::move(toks)) {}
+
+  ExprPtr parse_all() {
+    ExprPtr e = testlist();
+    if (peek().type != Tok::End) {
+      syntax_error("invalid syntax near '" + describe(peek()) + "'");
+    }
+    if (!invalid_.empty()) {
+      std::string names;
+      for (const auto& n : invalid_) names += (names.empty() ? "" : ", ") + n;
+      throw PyError("NameError", "Use of invalid name(s):  " + names);
+    }
+    return e;
+  }
+
+ private:
+  static std::string describe(const Token& t) {
+    if (t.type == Tok::End) return "end of expression";
+    if (t.type == Tok::Name || t.type == Tok::Op) return t.text;
+    return to_repr(t.value);
+  }
+  const Token& peek(std::size_t k = 0) const { return t_[std::min(i_ + k, t_.size() - 1)]; }
+  bool is_op(std::string_view op, std::size_t k = 0) const {
+    return peek(k).type == Tok::Op && peek(k).text == op;
+  }
+  bool is_kw(std::string_view kw, std::size_t k = 0) const {
+    return peek(k).type == Tok::Name && peek(k).text == kw;
+  }
+  bool accept_op(std::string_view op) {
+    if (!is_op(op)) return false;
+    ++i_;
+    return true;
+  }
+  bool accept_kw(std::string_view kw) {
+    if (!is_kw(kw)) return false;
+    ++i_;
+    return true;
+  }
+  void expect_op(std::string_view op, std::string_view opener) {
+    if (!accept_op(op)) {
+      if (peek().type == Tok::End) syntax_error("'" + std::string(opener) + "' was never closed");
+      syntax_error("expected '" + std::string(op) + "' but found '" + describe(peek()) + "'");
+    }
+  }
+
+  static ExprPtr make(Expr::Kind k) {
+    auto e = std::make_unique<Expr>();
+    e->kind = k;
+    return e;
+  }
+
+  // testlist: test (',' test)* [','] -> a tuple when there is a comma
+  ExprPtr testlist() {
+    ExprPtr first = test();
+    if (!is_op(",")) return first;
+    auto tup = make(Expr::Kind::Tuple);
+    tup->args.push_back(std::move(first));
+    while (accept_op(",")) {
+      if (at_expr_end()) break;
+      tup->args.push_back(test());
+    }
+    return tup;
+  }
+
+  bool at_expr_end() const {
+    const Token& t = peek();
+    return t.type == Tok::End ||
+           (t.type == Tok::Op && (t.text == ")" || t.text == "]" || t.text == "}" || t.text == ":"));
+  }
+
+  ExprPtr test() {
+    if (accept_kw("lambda")) {
+      auto lam = make(Expr::Kind::Lambda);
+      while (!is_op(":")) {
+        if (peek().type != Tok::Name) syntax_error("invalid lambda parameter");
+        lam->kwnames.push_back(peek().text);
+        ++i_;
+        if (!accept_op(",")) break;
+      }
+      expect_op(":", "lambda");
+      lam->args.push_back(test());
+      return lam;
+    }
+    ExprPtr body = or_test();
+    if (is_kw("if")) {
+      ++i_;
+      ExprPtr cond = or_test();
+      if (!accept_kw("else")) syntax_error("expected 'else' after 'if' expression");
+      ExprPtr other = test();
+      auto e = make(Expr::Kind::IfExp);
+      e->args.push_back(std::move(cond));
+      e->args.push_back(std::move(body));
+      e->args.push_back(std::move(other));
+      return e;
+    }
+    return body;
+  }
+
+  ExprPtr or_test() {
+    ExprPtr left = and_test();
+    while (accept_kw("or")) {
+      auto e = make(Expr::Kind::BoolOp);
+      e->op = Op::Or;
+      e->args.push_back(std::move(left));
+      e->args.push_back(and_test());
+      left = std::move(e);
+    }
+    return left;
+  }
+
+  ExprPtr and_test() {
+    ExprPtr left = not_test();
+    while (accept_kw("and")) {
+      auto e = make(Expr::Kind::BoolOp);
+      e->op = Op::And;
+      e->args.push_back(std::move(left));
+      e->args.push_back(not_test());
+      left = std::move(e);
+    }
+    return left;
+  }
+
+  ExprPtr not_test() {
+    if (accept_kw("not")) {
+      auto e = make(Expr::Kind::Unary);
+      e->op = Op::Not;
+      e->args.push_back(not_test());
+      return e;
+    }
+    return comparison();
+  }
+
+  bool comp_op(Op& op) {
+    const Token& t = peek();
+    if (t.type == Tok::Op) {
+      static const std::pair<std::string_view, Op> ops[] = {
+          {"<", Op::Lt}, {"<=", Op::Le}, {">", Op::Gt}, {">=", Op::Ge}, {"==", Op::Eq}, {"!=", Op::Ne}};
+      for (const auto& [s, o] : ops) {
+        if (t.text == s) {
+          op = o;
+          ++i_;
+          return true;
+        }
+      }
+      return false;
+    }
+    if (is_kw("in")) {
+      op = Op::In;
+      ++i_;
+      return true;
+    }
+    if (is_kw("not") && is_kw("in", 1)) {
+      op = Op::NotIn;
+      i_ += 2;
+      return true;
+    }
+    if (is_kw("is")) {
+      ++i_;
+      op = accept_kw("not") ? Op::IsNot : Op::Is;
+      return true;
+    }
+    return false;
+  }
+
+  ExprPtr comparison() {
+    ExprPtr left = bitor_expr();
+    Op op;
+    if (!comp_op(op)) return left;
+    auto e = make(Expr::Kind::Compare);
+    e->args.push_back(std::move(left));
+    do {
+      e->ops.push_back(op);
+      e->args.push_back(bitor_expr());
+    } while (comp_op(op));
+    return e;
+  }
+
+  ExprPtr binary(ExprPtr left, Op op, ExprPtr right) {
+    auto e = make(Expr::Kind::Binary);
+    e->op = op;
+    e->args.push_back(std::move(left));
+    e->args.push_back(std::move(right));
+    return e;
+  }
+
+  ExprPtr bitor_expr() {
+    ExprPtr left = bitxor_expr();
+    while (accept_op("|")) left = binary(std::move(left), Op::BitOr, bitxor_expr());
+    return left;
+  }
+  ExprPtr bitxor_expr() {
+    ExprPtr left = bitand_expr();
+    while (accept_op("^")) left = binary(std::move(left), Op::BitXor, bitand_expr());
+    return left;
+  }
+  ExprPtr bitand_expr() {
+    ExprPtr left = shift_expr();
+    while (accept_op("&")) left = binary(std::move(left), Op::BitAnd, shift_expr());
+    return left;
+  }
+  ExprPtr shift_expr() {
+    ExprPtr left = arith_expr();
+    while (true) {
+      if (accept_op("<<")) left = binary(std::move(left), Op::LShift, arith_expr());
+      else if (accept_op(">>")) left = binary(std::move(left), Op::RShift, arith_expr());
+      else return left;
+    }
+  }
+  ExprPtr arith_expr() {
+    ExprPtr left = term();
+    while (true) {
+      if (accept_op("+")) left = binary(std::move(left), Op::Add, term());
+      else if (accept_op("-")) left = binary(std::move(left), Op::Sub, term());
+      else return left;
+    }
+  }
+  ExprPtr term() {
+    ExprPtr left = factor();
+    while (true) {
+      if (accept_op("*")) left = binary(std::move(left), Op::Mul, factor());
+      else if (accept_op("/")) left = binary(std::move(left), Op::Div, factor());
+      else if (accept_op("//")) left = binary(std::move(left), Op::FloorDiv, factor());
+      else if (accept_op("%")) left = binary(std::move(left), Op::Mod, factor());
+      else return left;
+    }
+  }
+  ExprPtr factor() {
+    Op op;
+    if (accept_op("-")) op = Op::Neg;
+    else if (accept_op("+")) op = Op::Pos;
+    else if (accept_op("~")) op = Op::Invert;
+    else return power();
+    if (++depth_ > kMaxDepth) syntax_error("expression nested too deeply");
+    auto e = make(Expr::Kind::Unary);
+    e->op = op;
+    e->args.push_back(factor());
+    --depth_;
+    return e;
+  }
+  ExprPtr power() {
+    ExprPtr base = primary();
+    if (accept_op("**")) return binary(std::move(base), Op::Pow, factor());
+    return base;
+  }
+
+  ExprPtr primary() {
+    ExprPtr e = atom();
+    while (true) {
+      if (accept_op(".")) {
+        if (peek().type != Tok::Name) syntax_error("invalid syntax after '.'");
+        auto a = make(Expr::Kind::Attr);
+        a->name = peek().text;
+        if (a->name.starts_with("__")) invalid_.push_back(a->name);
+        ++i_;
+        a->args.push_back(std::move(e));
+        e = std::move(a);
+      } else if (accept_op("(")) {
+        auto c = make(Expr::Kind::Call);
+        c->args.push_back(std::move(e));
+        while (!is_op(")")) {
+          if (peek().type == Tok::Name && is_op("=", 1)) {
+            c->kwnames.push_back(peek().text);
+            i_ += 2;
+            c->args.push_back(test());
+          } else {
+            if (!c->kwnames.empty()) syntax_error("positional argument follows keyword argument");
+            c->args.push_back(test());
+          }
+          if (!accept_op(",")) break;
+        }
+        expect_op(")", "(");
+        e = std::move(c);
+      } else if (accept_op("[")) {
+        auto s = make(Expr::Kind::Subscript);
+        s->args.push_back(std::move(e));
+        s->args.push_back(subscript());
+        expect_op("]", "[");
+        e = std::move(s);
+      } else {
+        return e;
+      }
+    }
+  }
+
+  ExprPtr subscript() {
+    ExprPtr lower;
+    if (!is_op(":")) {
+      lower = test();
+      if (!is_op(":")) return lower;
+    }
+    auto s = make(Expr::Kind::Slice);
+    ++i_;  // ':'
+    ExprPtr upper;
+    ExprPtr step;
+    if (!is_op("]") && !is_op(":")) upper = test();
+    if (accept_op(":")) {
+      if (!is_op("]")) step = test();
+    }
+    s->args.push_back(std::move(lower));
+    s->args.push_back(std::move(upper));
+    s->args.push_back(std::move(step));
+    return s;
+  }
+
+  // [elt for ...] or (elt for ...)
+  void comprehension(Expr& comp) {
+    while (accept_kw("for")) {
+      CompClause clause;
+      do {
+        if (accept_op("(")) {
+          while (peek().type == Tok::Name) {
+            clause.targets.push_back(peek().text);
+            ++i_;
+            if (!accept_op(",")) break;
+          }
+          expect_op(")", "(");
+        } else {
+          if (peek().type != Tok::Name) syntax_error("invalid comprehension target");
+          clause.targets.push_back(peek().text);
+          ++i_;
+        }
+      } while (accept_op(","));
+      if (!accept_kw("in")) syntax_error("expected 'in' in comprehension");
+      clause.iter = or_test();
+      while (accept_kw("if")) clause.conditions.push_back(or_test());
+      comp.clauses.push_back(std::move(clause));
+    }
+  }
+
+  ExprPtr atom() {
+    if (++depth_ > kMaxDepth) syntax_error("expression nested too deeply");
+    ExprPtr e = atom_inner();
+    --depth_;
+    return e;
+  }
+
+  ExprPtr atom_inner() {
+    const Token& t = peek();
+    if (t.type == Tok::Number) {
+      auto e = make(Expr::Kind::Const);
+      e->value = t.value;
+      ++i_;
+      return e;
+    }
+    if (t.type == Tok::String) {
+      auto e = make(Expr::Kind::Const);
+      std::string s;
+      while (peek().type == Tok::String) {  // adjacent literals concatenate
+        s += peek().value.as_str();
+        ++i_;
+      }
+      e->value = Value::str(std::move(s));
+      return e;
+    }
+    if (t.type == Tok::Name) {
+      static constexpr std::string_view keywords[] = {"and", "or", "not", "if", "else", "for", "in",
+                                                      "is", "lambda", "import", "def", "class",
+                                                      "return", "while", "yield", "del", "pass"};
+      for (auto kw : keywords) {
+        if (t.text == kw) syntax_error("invalid syntax near '" + t.text + "'");
+      }
+      auto e = make(Expr::Kind::Const);
+      if (t.text == "True") e->value = Value::boolean(true);
+      else if (t.text == "False") e->value = Value::boolean(false);
+      else if (t.text == "None") e->value = Value::none();
+      else {
+        e->kind = Expr::Kind::Name;
+        e->name = t.text;
+        if (e->name.starts_with("__")) invalid_.push_back(e->name);
+      }
+      ++i_;
+      return e;
+    }
+    if (accept_op("(")) {
+      if (accept_op(")")) return make(Expr::Kind::Tuple);
+      ExprPtr first = test();
+      if (is_kw("for")) {
+        auto comp = make(Expr::Kind::ListComp);
+        comp->args.push_back(std::move(first));
+        comprehension(*comp);
+        expect_op(")", "(");
+        return comp;
+      }
+      if (accept_op(")")) return first;
+      auto tup = make(Expr::Kind::Tuple);
+      tup->args.push_back(std::move(first));
+      while (accept_op(",")) {
+        if (is_op(")")) break;
+        tup->args.push_back(test());
+      }
+      expect_op(")", "(");
+      return tup;
+    }
+    if (accept_op("[")) {
+      auto list = make(Expr::Kind::List);
+      if (accept_op("]")) return list;
+      ExprPtr first = test();
+      if (is_kw("for")) {
+        list->kind = Expr::Kind::ListComp;
+        list->args.push_back(std::move(first));
+        comprehension(*list);
+        expect_op("]", "[");
+        return list;
+      }
+      list->args.push_back(std::move(first));
+      while (accept_op(",")) {
+        if (is_op("]")) break;
+        list->args.push_back(test());
+      }
+      expect_op("]", "[");
+      return list;
+    }
+    if (accept_op("{")) {
+      auto dict = make(Expr::Kind::Dict);
+      while (!is_op("}")) {
+        if (peek().type == Tok::End) syntax_error("'{' was never closed");
+        dict->args.push_back(test());
+        expect_op(":", "{");
+        dict->args.push_back(test());
+        if (!accept_op(",")) break;
+      }
+      expect_op("}", "{");
+      return dict;
+    }
+    if (t.type == Tok::End) syntax_error("unexpected end of expression");
+    syntax_error("invalid syntax near '" + describe(t) + "'");
+  }
+
+  static constexpr int kMaxDepth = 200;
+  std::vector<Token> t_;
+  std::size_t i_ = 0;
+  int depth_ = 0;
+  std::vector<std::string> invalid_;
+};
+
+}  // namespace
+
+ExprPtr parse_expression(std::string_view source) {
+  Parser parser(Lexer(source).run());
+  return parser.parse_all();
+}
+
+}  // namespace mechsim::description::pyexpr
