@@ -1,0 +1,184 @@
+#include "sim/simulation.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "mechanism/build_mechanism.hpp"
+#include "mechanism/propagation.hpp"
+#include "physics/heightmap_sample.hpp"
+
+namespace mechsim::sim {
+namespace {
+
+using mechanism::HardwareInterface;
+
+physics::JointMode to_physics_mode(HardwareInterface iface) {
+  switch (iface) {
+    case HardwareInterface::Position: return physics::JointMode::Position;
+    case HardwareInterface::Velocity: return physics::JointMode::Velocity;
+    case HardwareInterface::Effort: break;
+  }
+  return physics::JointMode::Effort;
+}
+
+physics::BuildOptions build_options(const World& world, const SimulationOptions& options) {
+  physics::BuildOptions b;
+  b.timestep = options.period;
+  b.integrator = options.integrator;
+  b.differential = options.differential;
+  b.world = world.spec;
+  b.spawn = options.spawn;
+  if (world.spec.terrain) b.spawn.z += physics::height_at(*world.spec.terrain, b.spawn.x, b.spawn.y);
+  return b;
+}
+
+}  // namespace
+
+Simulation::Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
+                       SimulationOptions options)
+    : robot_(std::move(robot)), world_(world), options_(std::move(options)) {
+  if (!(options_.period > 0.0) || options_.period > 0.1) {
+    throw std::invalid_argument("simulation period must be in (0, 0.1] s, got " + std::to_string(options_.period));
+  }
+  if (!(options_.real_time_factor >= 0.0)) {
+    throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
+  }
+  physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
+  physics_ = std::make_unique<physics::Physics>(physics_model_);
+  mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
+  mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
+  manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params));
+
+  const std::size_t n = mechanism_->joints.size();
+  physics_joint_.assign(n, -1);
+  physics_mode_.assign(n, HardwareInterface::Effort);
+  servo_gains_.assign(n, physics::ServoGains{});
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::string& name = mechanism_->joints[j].name;
+    if (auto p = physics_model_->joint_index(name); p && physics_model_->joints()[*p].actuated) {
+      physics_joint_[j] = static_cast<int>(*p);
+    }
+    if (auto it = options_.servo_gains.find(name); it != options_.servo_gains.end()) servo_gains_[j] = it->second;
+  }
+  paused_.store(options_.start_paused);
+  read_physics();
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::read_physics() {
+  mechanism::MechanismState& state = *mechanism_state_;
+  for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
+    const int p = physics_joint_[j];
+    if (p < 0) continue;
+    const auto pj = static_cast<std::size_t>(p);
+    mechanism::JointState& js = state.joints[j];
+    js.position = physics_->position(pj);
+    js.velocity = physics_->velocity(pj);
+    js.measured_effort = physics_->actuator_effort(pj);
+  }
+  mechanism::propagate_joint_to_actuator_position(*mechanism_, state);
+}
+
+void Simulation::write_physics() {
+  mechanism::MechanismState& state = *mechanism_state_;
+  mechanism::propagate_actuator_to_joint_effort(*mechanism_, state);
+  for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
+    const int p = physics_joint_[j];
+    if (p < 0) continue;
+    const auto pj = static_cast<std::size_t>(p);
+    const mechanism::JointState& js = state.joints[j];
+    if (js.command_mode != physics_mode_[j]) {
+      physics_->set_mode(pj, to_physics_mode(js.command_mode), servo_gains_[j]);
+      physics_mode_[j] = js.command_mode;
+    }
+    switch (js.command_mode) {
+      case HardwareInterface::Effort: physics_->set_effort(pj, js.commanded_effort); break;
+      case HardwareInterface::Position: physics_->set_position_command(pj, js.commanded_position); break;
+      case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
+    }
+  }
+}
+
+void Simulation::apply_requests() {
+  if (reset_requested_.exchange(false)) reset();
+}
+
+TickResult Simulation::step() {
+  apply_requests();
+  read_physics();
+  manager_->update(time(), options_.period);
+  write_physics();
+  const physics::StepStatus status = physics_->step();
+  ++ticks_;
+  if (!status.ok()) {
+    ++divergences_;
+    TickResult result{false, "physics diverged at t=" + std::to_string(time()) + " s: " + status.message()};
+    if (options_.on_divergence == DivergencePolicy::Reset) {
+      reset();
+      result.error += " (simulation reset to the spawn state)";
+    } else {
+      pause();
+      result.error += " (simulation stopped)";
+    }
+    return result;
+  }
+  for (const Observer& observer : observers_) observer(*this);
+  return {};
+}
+
+TickResult Simulation::run_for(double duration) {
+  using Clock = std::chrono::steady_clock;
+  const std::uint64_t target = ticks_ + static_cast<std::uint64_t>(duration / options_.period + 0.5);
+  const auto wall_start = Clock::now();
+  const double sim_start = time();
+  TickResult result;
+  while (ticks_ < target) {
+    if (paused()) {
+      apply_requests();
+      // Nobody can unpause a paused single-threaded run: return instead of waiting forever.
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      if (paused()) break;
+      continue;
+    }
+    result = step();
+    if (!result.ok && options_.on_divergence == DivergencePolicy::Stop) break;
+    if (options_.real_time_factor > 0.0) {
+      const auto due = wall_start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                        (time() - sim_start) / options_.real_time_factor));
+      std::this_thread::sleep_until(due);
+    }
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  if (wall > 0.0) measured_rtf_ = (time() - sim_start) / wall;
+  return result;
+}
+
+void Simulation::reset() {
+  physics_->reset();
+  for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
+  const mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
+  *mechanism_state_ = fresh;
+  read_physics();
+  std::vector<std::string> running;
+  for (const control::ControllerInfo& info : manager_->list_controllers()) {
+    if (info.state == control::ControllerLifecycle::Running) running.push_back(info.name);
+  }
+  // Restart (stop + start in one switch) so each controller's starting() sees the spawn state;
+  // the next tick applies it.
+  if (!running.empty()) manager_->switch_controllers(running, running, control::SwitchStrictness::BestEffort);
+  ++resets_;
+}
+
+void Simulation::load_and_start(const std::vector<std::string>& controllers) {
+  for (const std::string& name : controllers) {
+    if (control::ControlResult r = manager_->load_controller(name); !r) {
+      throw std::runtime_error("could not load controller '" + name + "': " + r.error);
+    }
+  }
+  control::SwitchResult s = manager_->switch_controllers(controllers, {}, control::SwitchStrictness::Strict);
+  if (!s) throw std::runtime_error("could not start controllers: " + s.error);
+}
+
+}  // namespace mechsim::sim

@@ -1,0 +1,145 @@
+#pragma once
+// One simulated robot in one world: physics + mechanism + controller manager, advanced by the
+// tick of DESIGN.md at a fixed period (1 kHz by default):
+//
+//   1. physics joint positions/velocities/efforts -> mechanism joint state -> transmissions
+//      backwards -> actuator state (what the encoders report);
+//   2. controller manager update (transmissions forward, controllers, safety limits,
+//      transmissions forward for the efforts);
+//   3. actuator commands -> transmissions backwards -> joint commands -> physics (effort, or the
+//      set point of the joint's implicit position/velocity servo);
+//   4. one physics step; simulation time advances by exactly one period;
+//   5. observers (publishers, recorders) run; each decides whether it is due.
+//
+// Time: simulation time is ticks * period and never goes backwards. reset() puts the world and
+// the robot back in the spawn state and restarts the running controllers, but time goes on
+// (ROS nodes with use_sim_time treat a backwards jump as an error, and Gazebo's reset_world keeps
+// time too; we chose one behaviour for both resets).
+//
+// Threads: step()/run_for() belong to one loop thread. pause(), unpause(), request_reset() and
+// request_step() may be called from any thread; the loop applies them between ticks.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "control/controller_manager.hpp"
+#include "control/params.hpp"
+#include "description/robot_model.hpp"
+#include "mechanism/mechanism_model.hpp"
+#include "physics/physics.hpp"
+#include "physics/physics_model.hpp"
+#include "sim/world.hpp"
+
+namespace mechsim::sim {
+
+// What the loop does when the physics diverges (NaN/inf state, runaway acceleration).
+enum class DivergencePolicy { Stop, Reset };
+
+struct SimulationOptions {
+  double period = 0.001;  // s: physics step = control period
+  physics::Integrator integrator = physics::Integrator::Implicit;
+  physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;
+  // Spawn pose of the root link. On terrain, z is measured from the ground under (x, y).
+  physics::SpawnPose spawn;
+  bool start_paused = false;
+  // 0: as fast as possible (headless default); R > 0: paced so that simulation time runs R times
+  // as fast as wall-clock time.
+  double real_time_factor = 0.0;
+  DivergencePolicy on_divergence = DivergencePolicy::Stop;
+  // Servo gains of joints commanded through position/velocity interfaces, by joint name
+  // (gazebo_ros_control's pid_gains/<joint>: p -> kp, d -> kv). Missing: the physics default.
+  std::map<std::string, physics::ServoGains> servo_gains;
+};
+
+struct TickResult {
+  bool ok = true;
+  std::string error;  // set when the physics diverged: what, where, when
+  explicit operator bool() const { return ok; }
+};
+
+class Simulation {
+ public:
+  using Observer = std::function<void(const Simulation&)>;
+
+  // Builds the physics of `robot` in `world`, its mechanism and its controller manager over
+  // `controller_params` (the namespace holding the controllers, e.g. the `cc8` map of a YAML).
+  // Throws on a description the physics or the mechanism cannot build.
+  Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
+             SimulationOptions options = {});
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // One tick, whether paused or not (single step). Applies pending requests first.
+  TickResult step();
+  // Ticks until `duration` seconds of simulation time have passed, pacing to the real-time
+  // factor. While paused it waits (a paused run with no other thread to unpause returns at
+  // once). Stops early and returns the error when the physics diverges under Stop.
+  TickResult run_for(double duration);
+
+  void pause() { paused_.store(true); }
+  void unpause() { paused_.store(false); }
+  bool paused() const { return paused_.load(); }
+  void request_reset() { reset_requested_.store(true); }
+  // Back to the spawn state now (loop thread only).
+  void reset();
+
+  double time() const { return static_cast<double>(ticks_) * options_.period; }  // s
+  double period() const { return options_.period; }
+  std::uint64_t ticks() const { return ticks_; }
+  std::uint64_t resets() const { return resets_; }
+  std::uint64_t divergences() const { return divergences_; }
+  // Simulation seconds per wall-clock second over the last run_for().
+  double measured_real_time_factor() const { return measured_rtf_; }
+  void set_real_time_factor(double factor) { options_.real_time_factor = factor; }
+
+  const description::RobotModel& robot() const { return robot_; }
+  const World& world() const { return world_; }
+  const SimulationOptions& options() const { return options_; }
+  physics::Physics& physics() { return *physics_; }
+  const physics::Physics& physics() const { return *physics_; }
+  const mechanism::MechanismModel& mechanism() const { return *mechanism_; }
+  const mechanism::MechanismState& mechanism_state() const { return *mechanism_state_; }
+  control::ControllerManager& controllers() { return *manager_; }
+  const control::ControllerManager& controllers() const { return *manager_; }
+
+  // Observers run after every tick, in the loop thread, in the order added.
+  void add_observer(Observer observer) { observers_.push_back(std::move(observer)); }
+
+  // Loads the named controllers and starts them with a STRICT switch applied at once (before
+  // the next tick). Throws std::runtime_error naming the controller on failure.
+  void load_and_start(const std::vector<std::string>& controllers);
+
+ private:
+  void read_physics();
+  void write_physics();
+  void apply_requests();
+
+  description::RobotModel robot_;
+  World world_;
+  SimulationOptions options_;
+  std::shared_ptr<const physics::PhysicsModel> physics_model_;
+  std::unique_ptr<physics::Physics> physics_;
+  std::unique_ptr<mechanism::MechanismModel> mechanism_;
+  std::unique_ptr<mechanism::MechanismState> mechanism_state_;
+  std::unique_ptr<control::ControllerManager> manager_;
+
+  // Per mechanism joint: the physics joint (-1 when the physics has none) and the mode the
+  // physics servo is in, so modes switch only on change.
+  std::vector<int> physics_joint_;
+  std::vector<mechanism::HardwareInterface> physics_mode_;
+  std::vector<physics::ServoGains> servo_gains_;
+
+  std::vector<Observer> observers_;
+  std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
+  double measured_rtf_ = 0.0;
+  std::atomic<bool> paused_{false};
+  std::atomic<bool> reset_requested_{false};
+};
+
+}  // namespace mechsim::sim

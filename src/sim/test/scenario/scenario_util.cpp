@@ -1,0 +1,78 @@
+#include "sim/test/scenario/scenario_util.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "description/urdf_parser.hpp"
+
+namespace mechsim::sim {
+
+description::RobotModel load_shared_cc8(const std::filesystem::path& shared) {
+  description::UrdfOptions options;
+  options.packages["cc8_description"] = (shared / "robots/cc8_description").string();
+  return description::parse_urdf_file((shared / "robots/reference/cc8.urdf").string(), options);
+}
+
+control::Params cc8_controller_params(const std::filesystem::path& shared) {
+  return control::Params::from_yaml_file((shared / "robots/cc8_description/config/controller.yaml").string())
+      .child("cc8");
+}
+
+std::vector<std::string> cc8_controller_names() {
+  std::vector<std::string> names{"joint_state_controller"};
+  for (const char* c : {"FL", "FR", "RL", "RR"}) names.push_back(std::string("steering_") + c + "_position_controller");
+  for (const char* c : {"FL", "FR", "ML", "MR", "RL", "RR"}) {
+    names.push_back(std::string("wheel_joint_") + c + "_position_controller");
+  }
+  return names;
+}
+
+double pitch_of(const description::Quat& q) {
+  return std::asin(std::clamp(2.0 * (q.w * q.y - q.z * q.x), -1.0, 1.0));
+}
+
+double roll_of(const description::Quat& q) {
+  return std::atan2(2.0 * (q.w * q.x + q.y * q.z), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
+}
+
+double tilt_of(const description::Quat& q) {
+  return std::acos(std::clamp(1.0 - 2.0 * (q.x * q.x + q.y * q.y), -1.0, 1.0));
+}
+
+description::Pose link_pose(const Simulation& sim, const std::string& link) {
+  const auto index = sim.physics().model().link_index(link);
+  if (!index) throw std::runtime_error("no link '" + link + "' in the physics model");
+  return sim.physics().link_pose(*index);
+}
+
+int count_wheel_contacts(const Simulation& sim) {
+  std::vector<physics::Contact> contacts;
+  sim.physics().contacts(contacts);
+  std::set<std::string> wheels;
+  for (const physics::Contact& c : contacts) {
+    for (std::string_view link : {c.link_a, c.link_b}) {
+      if (link.starts_with("wheel_") && c.normal_force > 0.0) wheels.insert(std::string(link));
+    }
+  }
+  return static_cast<int>(wheels.size());
+}
+
+physics::Heightmap step_terrain(double size, double cell, const std::function<double(double, double)>& f) {
+  physics::Heightmap map;
+  map.rows = map.cols = static_cast<std::size_t>(std::lround(size / cell)) + 1;
+  map.size_x = map.size_y = size;
+  map.source = "test terrain";
+  map.heights.resize(map.rows * map.cols);
+  for (std::size_t r = 0; r < map.rows; ++r) {
+    for (std::size_t c = 0; c < map.cols; ++c) {
+      const double x = -size / 2 + static_cast<double>(c) * cell;
+      const double y = -size / 2 + static_cast<double>(r) * cell;
+      map.heights[r * map.cols + c] = static_cast<float>(f(x, y));
+    }
+  }
+  return map;
+}
+
+}  // namespace mechsim::sim

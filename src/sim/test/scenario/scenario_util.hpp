@@ -1,0 +1,30 @@
+#pragma once
+// Helpers shared by the sim scenario tests.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "control/params.hpp"
+#include "description/robot_model.hpp"
+#include "physics/heightmap.hpp"
+#include "sim/simulation.hpp"
+
+namespace mechsim::sim {
+
+// The real CC8 (reference expansion of cc8_description) and its controllers.
+description::RobotModel load_shared_cc8(const std::filesystem::path& shared);
+control::Params cc8_controller_params(const std::filesystem::path& shared);  // the `cc8` namespace
+std::vector<std::string> cc8_controller_names();                            // all 11
+
+double pitch_of(const description::Quat& q);  // rad, about the world y axis (ZYX Euler)
+double roll_of(const description::Quat& q);   // rad
+double tilt_of(const description::Quat& q);   // rad between the body's z axis and the world's
+description::Pose link_pose(const Simulation& sim, const std::string& link);
+// Wheel links (name starting with "wheel_") touching the ground or terrain.
+int count_wheel_contacts(const Simulation& sim);
+// A square heightmap of side `size` (m) and spacing `cell` (m) with heights f(x, y).
+physics::Heightmap step_terrain(double size, double cell, const std::function<double(double, double)>& f);
+
+}  // namespace mechsim::sim

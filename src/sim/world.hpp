@@ -1,0 +1,35 @@
+#pragma once
+// The worlds mechsim ships, by name: `empty` (ground plane and gravity), `mars_yard_2024`
+// (generated from a seed) and any heightmap file (8/16-bit PNG, float TIFF).
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "physics/heightmap_io.hpp"
+#include "physics/mars_yard.hpp"
+#include "physics/physics_options.hpp"
+
+namespace mechsim::sim {
+
+struct WorldError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct WorldConfig {
+  std::string name = "empty";  // "empty", "mars_yard_2024", or a heightmap file's path
+  std::uint64_t seed = physics::kMarsYardDefaultSeed;  // mars_yard_2024 only
+  physics::HeightmapOptions heightmap;                 // heightmap files only
+};
+
+struct World {
+  std::string name;
+  physics::WorldSpec spec;                     // what the physics builds
+  std::optional<physics::MarsYard> mars_yard;  // features, for route planning and reports
+};
+
+// Throws WorldError (unknown name, unreadable heightmap: the message names the file).
+World make_world(const WorldConfig& config);
+
+}  // namespace mechsim::sim
