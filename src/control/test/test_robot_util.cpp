@@ -31,7 +31,7 @@ std::unique_ptr<TestRobot> make_robot(const std::vector<JointSpec>& joints) {
 
 std::unique_ptr<TestRobot> make_robot(std::size_t n) {
   std::vector<JointSpec> specs;
-  for (std::size_t i = 0; i < n; ++i) specs.push_back(JointSpec{"j" + std::to_string(i)});
+  for (std::size_t i = 0; i < n; ++i) specs.push_back(JointSpec{std::string("j").append(std::to_string(i))});
   return make_robot(specs);
 }
 

@@ -1,0 +1,66 @@
+#include "control/controller_check.hpp"
+
+#include <map>
+
+#include "control/controller_manager.hpp"
+
+namespace mechsim::control {
+namespace {
+
+struct Found {
+  Params ns;
+  std::string name;
+};
+
+void find_controllers(const Params& ns, const Params& node, const std::string& prefix, std::vector<Found>& out) {
+  for (const std::string& key : node.keys()) {
+    Params child = node.child(key);
+    if (!child.is_map()) continue;
+    if (child.has("type")) {
+      out.push_back(Found{ns, prefix + key});
+    } else {
+      // A namespace of its own: controllers below it are loaded relative to it.
+      find_controllers(child, child, "", out);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root) {
+  std::vector<Found> found;
+  find_controllers(root, root, "", found);
+
+  std::vector<ControllerCheck> out;
+  // One manager (and one fresh state) per namespace, as one controller_manager per robot.
+  mechanism::MechanismState state = mechanism::make_state(model);
+  std::map<std::string, std::unique_ptr<ControllerManager>> managers;
+  for (const Found& f : found) {
+    auto& manager = managers[f.ns.path()];
+    if (!manager) manager = std::make_unique<ControllerManager>(model, state, f.ns);
+    ControllerCheck check;
+    check.name = f.name;
+    check.ns = f.ns.path();
+    check.path = join_param_path(f.ns.path(), f.name);
+    try {
+      check.type = f.ns.child(f.name).get<std::string>("type", "");
+    } catch (const ParamsError&) {
+      check.type.clear();  // load_controller reports it
+    }
+    ControlResult result = manager->load_controller(f.name);
+    if (result.ok) {
+      check.claims = manager->controller_info(f.name)->claims;
+    } else {
+      check.error = result.error;
+    }
+    out.push_back(std::move(check));
+  }
+  return out;
+}
+
+std::vector<ControllerCheck> check_controllers_file(const mechanism::MechanismModel& model,
+                                                    const std::string& yaml_path) {
+  return check_controllers(model, Params::from_yaml_file(yaml_path));
+}
+
+}  // namespace mechsim::control
