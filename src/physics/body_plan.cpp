@@ -92,8 +92,7 @@ class Planner {
     } else if (g.mu2) {
       mu = *g.mu2;
     }
-    if (g.gravity && !*g.gravity)
-      plan_.warnings.push_back("link '" + link.name + "': <gravity>false</gravity> is not supported; gravity applies");
+    if (g.gravity && !*g.gravity && !massless(link)) plan_.gravity_off_links.push_back(link.name);
     std::vector<PlannedGeom>& out = body < 0 ? plan_.world_geoms : plan_.bodies[body].geoms;
     for (std::size_t i = 0; i < link.collisions.size(); ++i) {
       PlannedGeom geom;

@@ -75,6 +75,7 @@ struct BodyPlan {
   std::vector<PlannedMimic> mimics;
   std::optional<PlannedDifferential> differential;
   std::vector<std::pair<std::string, std::string>> excludes;  // body name pairs never in contact
+  std::vector<std::string> gravity_off_links;  // gazebo <gravity>false / <turnGravityOff>, with mass
   std::vector<std::string> dropped_joints;  // URDF joints not simulated (massless child)
   std::vector<std::string> warnings;
   bool fixed_to_world = false;

@@ -1,5 +1,6 @@
 #include "physics/physics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -98,6 +99,10 @@ void Physics::reset() {
   std::fill(data_->modes.begin(), data_->modes.end(), JointMode::Effort);
   std::fill(data_->gains.begin(), data_->gains.end(), ServoGains{});
   mj_resetData(m, data_->d);
+  // Cancel gravity on the links Gazebo exempts from it: a constant world-frame force at the
+  // body's centre of mass (xfrc_applied persists across steps).
+  const double g = model_->options().world.gravity;
+  for (int b : model_->gravity_off_bodies()) data_->d->xfrc_applied[6 * b + 2] = m->body_mass[b] * g;
   mj_forward(m, data_->d);
   data_->stale = false;
   diff_tau_a_ = diff_tau_b_ = 0.0;
@@ -227,6 +232,37 @@ void Physics::set_joint_state(std::size_t j, double position, double velocity) {
   const JointInfo& info = model_->joints()[j];
   data_->d->qpos[info.qpos_adr] = position;
   data_->d->qvel[info.dof_adr] = velocity;
+  data_->stale = true;
+}
+
+namespace {
+// The free joint of the root body, or -1.
+int root_free_joint(const mjModel* m) {
+  for (int j = 0; j < m->njnt; ++j)
+    if (m->jnt_type[j] == mjJNT_FREE) return j;
+  return -1;
+}
+}  // namespace
+
+void Physics::set_base_pose(const Pose& X_WB) {
+  const int j = root_free_joint(data_->m);
+  if (j < 0) return;
+  mjtNum* q = data_->d->qpos + data_->m->jnt_qposadr[j];
+  const Quat r = quat_normalized(X_WB.orientation);
+  const mjtNum values[7] = {X_WB.position.x, X_WB.position.y, X_WB.position.z, r.w, r.x, r.y, r.z};
+  std::copy(values, values + 7, q);
+  data_->stale = true;
+}
+
+void Physics::set_base_twist(const Twist& V) {
+  const int j = root_free_joint(data_->m);
+  if (j < 0) return;
+  mjtNum* v = data_->d->qvel + data_->m->jnt_dofadr[j];
+  // MuJoCo free joint: linear velocity in the world frame, angular velocity in the body frame.
+  const mjtNum* xq = data_->d->qpos + data_->m->jnt_qposadr[j] + 3;
+  const Vec3 w_body = rotate(quat_conjugate(Quat{xq[0], xq[1], xq[2], xq[3]}), V.angular);
+  const mjtNum values[6] = {V.linear.x, V.linear.y, V.linear.z, w_body.x, w_body.y, w_body.z};
+  std::copy(values, values + 6, v);
   data_->stale = true;
 }
 

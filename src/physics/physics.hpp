@@ -102,6 +102,11 @@ class Physics {
   // Initial conditions (not for use inside a control loop): sets a joint's state directly.
   void set_joint_state(std::size_t joint, double position, double velocity = 0.0);
 
+  // Initial conditions of a floating robot's root body (ignored when fixed to the world):
+  // pose X_W<root> and twist in the world frame at the root body's origin.
+  void set_base_pose(const description::Pose& X_WB);
+  void set_base_twist(const Twist& V_WB);
+
   // Pose X_WL and twist of URDF link `link` (PhysicsModel::link_index).
   description::Pose link_pose(std::size_t link) const;
   Twist link_twist(std::size_t link) const;

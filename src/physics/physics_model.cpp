@@ -179,6 +179,12 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     if (f.body >= 0 && info.body < 0) throw PhysicsError("internal: body '" + plan.bodies[f.body].name + "' not compiled");
     pm->links_.push_back(std::move(info));
   }
+  for (const std::string& link : plan.gravity_off_links) {
+    const int body = mj_name2id(m, mjOBJ_BODY, link.c_str());
+    if (body <= 0) continue;
+    pm->gravity_off_links_.push_back(link);
+    pm->gravity_off_bodies_.push_back(body);
+  }
   if (plan.differential) {
     DifferentialInfo d;
     d.plugin = plan.differential->plugin;

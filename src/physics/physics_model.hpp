@@ -66,6 +66,11 @@ class PhysicsModel {
   const std::string& root_link() const { return root_link_; }
   bool fixed_to_world() const { return fixed_to_world_; }
   const std::optional<DifferentialInfo>& differential() const { return differential_; }
+  // Links Gazebo would not pull down (<gravity>false, <turnGravityOff>): MuJoCo 2.2.2 has no
+  // per-body gravity, so Physics cancels it with an equal upward force at each one's centre
+  // of mass. `gravity_off_bodies` are their MuJoCo body ids.
+  const std::vector<std::string>& gravity_off_links() const { return gravity_off_links_; }
+  const std::vector<int>& gravity_off_bodies() const { return gravity_off_bodies_; }
   // URDF joints that are not simulated (massless child link merged into its parent).
   const std::vector<std::string>& dropped_joints() const { return dropped_joints_; }
 
@@ -89,7 +94,8 @@ class PhysicsModel {
   std::vector<JointInfo> joints_;
   std::vector<LinkInfo> links_;
   std::optional<DifferentialInfo> differential_;
-  std::vector<std::string> dropped_joints_, warnings_;
+  std::vector<std::string> dropped_joints_, warnings_, gravity_off_links_;
+  std::vector<int> gravity_off_bodies_;
   bool fixed_to_world_ = false;
 };
 

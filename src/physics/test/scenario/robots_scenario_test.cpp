@@ -1,0 +1,109 @@
+// The shipped robots in MuJoCo: the CC8 and the PR2 reference descriptions build, and the CC8
+// dropped onto the empty world comes to rest on its six wheels.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "description/urdf_parser.hpp"
+#include "physics/physics.hpp"
+
+namespace mechsim::physics {
+namespace {
+
+const std::string kShared = MECHSIM_SHARED_DIR;
+
+bool shared_present() { return std::filesystem::is_directory(kShared + "/robots/reference"); }
+
+description::RobotModel load(const std::string& name) {
+  description::UrdfOptions o;
+  o.lenient = true;  // the reference files are what users have; mass/inertia quirks are warnings
+  o.packages["cc8_description"] = kShared + "/robots/cc8_description";
+  o.packages["pr2_description"] = kShared + "/robots/pr2_description";
+  return description::parse_urdf_file(kShared + "/robots/reference/" + name, o);
+}
+
+double roll_of(const description::Quat& q) { return std::atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y)); }
+double pitch_of(const description::Quat& q) { return std::asin(std::clamp(2 * (q.w * q.y - q.z * q.x), -1.0, 1.0)); }
+
+TEST(RobotsScenario, Cc8BuildsWithItsJointsAndDifferential) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  auto model = PhysicsModel::build(load("cc8.urdf"));
+  for (const char* j : {"rocker_joint_L", "rocker_joint_R", "bogie_joint_L", "bogie_joint_R", "steering_FL",
+                        "steering_RR", "wheel_joint_FL", "wheel_joint_ML", "wheel_joint_RR"})
+    EXPECT_TRUE(model->joint_index(j).has_value()) << j;
+  EXPECT_EQ(model->joints().size(), 14u);
+  EXPECT_FALSE(model->fixed_to_world());
+  ASSERT_TRUE(model->differential().has_value());
+  EXPECT_EQ(model->differential()->plugin, "rocker_differential");
+  EXPECT_DOUBLE_EQ(model->differential()->force_constant, 1000.0);
+  EXPECT_THAT(model->mjcf(), ::testing::HasSubstr("joint1=\"rocker_joint_R\" joint2=\"rocker_joint_L\""));
+  for (const std::string& w : model->warnings()) std::printf("cc8 warning: %s\n", w.c_str());
+}
+
+// Dropped from 5 cm onto the empty world, after 4 s the CC8 stands still on its six wheels
+// (each wheel touches the ground; nothing else does), level within 3 degrees.
+void expect_cc8_rests_on_six_wheels(DifferentialMode mode) {
+  BuildOptions o;
+  o.spawn.z = 0.05;
+  o.differential = mode;
+  auto model = PhysicsModel::build(load("cc8.urdf"), o);
+  Physics p(model);
+  while (p.time() < 4.0) {
+    const StepStatus s = p.step();
+    ASSERT_TRUE(s.ok()) << s.message() << " at t = " << p.time();
+  }
+  std::vector<Contact> contacts;
+  p.contacts(contacts);
+  std::set<std::string> on_ground;
+  for (const Contact& c : contacts) {
+    if (c.link_a == "ground") on_ground.insert(std::string(c.link_b));
+    if (c.link_b == "ground") on_ground.insert(std::string(c.link_a));
+  }
+  EXPECT_EQ(on_ground, (std::set<std::string>{"wheel_FL_1", "wheel_FR_1", "wheel_ML_1", "wheel_MR_1", "wheel_RL_1",
+                                             "wheel_RR_1"}));
+  const Twist v = p.base_twist();
+  EXPECT_LT(std::hypot(v.linear.x, v.linear.y, v.linear.z), 0.01);
+  const auto X = p.base_pose();
+  EXPECT_LT(std::fabs(roll_of(X.orientation)), 0.05);
+  EXPECT_LT(std::fabs(pitch_of(X.orientation)), 0.05);
+  std::printf("cc8 at rest (%s): base z %.4f m, roll %.4f, pitch %.4f rad\n",
+              mode == DifferentialMode::PluginLaw ? "plugin law" : "mimic", X.position.z, roll_of(X.orientation),
+              pitch_of(X.orientation));
+}
+
+TEST(RobotsScenario, Cc8ComesToRestOnSixWheelsWithTheMimicConstraint) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  expect_cc8_rests_on_six_wheels(DifferentialMode::MimicConstraint);
+}
+
+TEST(RobotsScenario, Cc8ComesToRestOnSixWheelsWithTheDifferentialPlugin) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  expect_cc8_rests_on_six_wheels(DifferentialMode::PluginLaw);
+}
+
+TEST(RobotsScenario, Pr2BuildsWithItsDaeMeshesAndSteps) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  BuildOptions o;
+  o.spawn.z = 0.02;
+  auto model = PhysicsModel::build(load("pr2.urdf"), o);
+  for (const std::string& w : model->warnings()) std::printf("pr2 warning: %s\n", w.c_str());
+  for (const char* j : {"torso_lift_joint", "r_shoulder_pan_joint", "l_wrist_roll_joint", "head_tilt_joint",
+                        "fl_caster_rotation_joint", "r_gripper_l_finger_joint", "r_gripper_r_finger_joint"})
+    EXPECT_TRUE(model->joint_index(j).has_value()) << j;
+  // Massless gripper "frame" links on the prismatic gripper joints are merged (as Gazebo drops them).
+  EXPECT_THAT(model->dropped_joints(), ::testing::UnorderedElementsAre("r_gripper_joint", "l_gripper_joint"));
+  EXPECT_THAT(model->mjcf(), ::testing::HasSubstr("/visual/"));
+  Physics p(model);
+  while (p.time() < 1.0) {
+    const StepStatus s = p.step();
+    ASSERT_TRUE(s.ok()) << s.message() << " at t = " << p.time();
+  }
+  EXPECT_NEAR(p.base_pose().position.z, 0.0, 0.05);  // standing on its wheels
+}
+
+}  // namespace
+}  // namespace mechsim::physics
