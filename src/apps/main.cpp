@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   CommandResult result;
   add_xacro_command(app, result);
   add_check_command(app, result);
+  add_world_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -63,18 +63,23 @@ TerrainStats compute_terrain_stats(const Heightmap& map, const std::optional<Reg
   s.z_max = -INFINITY;
   // A small tolerance keeps samples lying on the region's edge despite rounding.
   const double tol = 1e-9 * std::max(map.size_x, map.size_y);
-  // The outer ring has one-sided differences only; it is left out.
-  for (std::size_t r = 1; r + 1 < map.rows; ++r) {
+  // Heights over every sample in the region; slopes leave out the grid's outer ring, which
+  // has one-sided differences only.
+  std::size_t z_count = 0;
+  for (std::size_t r = 0; r < map.rows; ++r) {
     const double y = sample_y(map, r);
     if (y < s.region.y_min - tol || y > s.region.y_max + tol) continue;
-    for (std::size_t c = 1; c + 1 < map.cols; ++c) {
+    const bool ring_row = r == 0 || r + 1 == map.rows;
+    for (std::size_t c = 0; c < map.cols; ++c) {
       const double x = sample_x(map, c);
       if (x < s.region.x_min - tol || x > s.region.x_max + tol) continue;
       const double z = map.at(r, c);
-      const float slope = all[r * map.cols + c];
       s.z_min = std::min(s.z_min, z);
       s.z_max = std::max(s.z_max, z);
       z_sum += z;
+      ++z_count;
+      if (ring_row || c == 0 || c + 1 == map.cols) continue;
+      const float slope = all[r * map.cols + c];
       slope_sum += slope;
       if (slope > steep_threshold_deg) ++steep;
       slopes.push_back(slope);
@@ -87,7 +92,7 @@ TerrainStats compute_terrain_stats(const Heightmap& map, const std::optional<Reg
   s.samples = slopes.size();
   const auto n = static_cast<double>(s.samples);
   s.relief = s.z_max - s.z_min;
-  s.z_mean = z_sum / n;
+  s.z_mean = z_sum / static_cast<double>(z_count);
   s.slope_mean_deg = slope_sum / n;
   s.steep_share = static_cast<double>(steep) / n;
   s.slope_max_deg = *std::max_element(slopes.begin(), slopes.end());

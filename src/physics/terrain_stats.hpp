@@ -5,8 +5,8 @@
 // (z[i+1] - z[i-1]) / (2 h) inside, one-sided differences on the border; slope =
 // atan(|gradient|). Each sample stands for one cell of area cell_x * cell_y, so shares of
 // samples are shares of area. Statistics cover the grid samples inside a region (the whole
-// footprint by default, the usable driving area for a yard with a margin) that have central
-// differences, i.e. all but the grid's outer ring.
+// footprint by default, the usable driving area for a yard with a margin); slope statistics
+// take those with central differences, i.e. all but the grid's outer ring.
 
 #include <cstddef>
 #include <optional>
@@ -32,7 +32,7 @@ struct TerrainStats {
   Region region;                         // where the statistics below were taken
   double usable_area = 0.0;              // area of the region (m^2)
   std::size_t samples = 0;               // interior grid samples inside the region
-  double z_min = 0.0, z_max = 0.0;       // lowest and highest height in the region (m)
+  double z_min = 0.0, z_max = 0.0;       // lowest and highest height in the region (m), all samples
   double relief = 0.0;                   // z_max - z_min (m)
   double z_mean = 0.0;                   // mean height (m)
   double slope_mean_deg = 0.0;           // slope statistics (deg)

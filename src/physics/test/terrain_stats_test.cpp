@@ -43,8 +43,8 @@ TEST(TerrainStats, PlaneTiltedTwentyDegreesHasAllSlopesTwenty) {
   EXPECT_EQ(s.steep_share, 0.0);
   EXPECT_EQ(s.samples, 79u * 119u);
   EXPECT_NEAR(s.usable_area, 24.0, 1e-12);
-  // Interior samples: x within +-(3 - 0.05), y within +-(2 - 0.05).
-  EXPECT_NEAR(s.relief, k * (0.6 * 5.9 + 0.8 * 3.9), 1e-4);
+  EXPECT_NEAR(s.relief, k * (0.6 * 6.0 + 0.8 * 4.0), 1e-4);
+  EXPECT_NEAR(s.z_mean, 1.0, 1e-4);
 }
 
 TEST(TerrainStats, ConeHasItsFlankSlopeAlmostEverywhere) {
