@@ -72,6 +72,29 @@ class ConsoleCapture {
   throw DescriptionError(msg.str(), errors);
 }
 
+// tinyxml2's ErrorStr is "Error=XML_ERROR_... ErrorID=.. Line number=..: XMLElement name=x";
+// say it in words, keeping the element's name.
+std::string describe_xml_error(const tinyxml2::XMLDocument& doc) {
+  std::string element;
+  const std::string raw = doc.ErrorStr() != nullptr ? doc.ErrorStr() : "";
+  if (const std::size_t at = raw.find("name="); at != std::string::npos) element = raw.substr(at + 5);
+  const std::string in = element.empty() ? "" : " in <" + element + ">";
+  switch (doc.ErrorID()) {
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the document is empty";
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      return "the end tag does not match the open element" + (element.empty() ? "" : " <" + element + ">");
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "a bad or duplicate attribute" + in;
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "an element that cannot be parsed" + in;
+    case tinyxml2::XML_ERROR_PARSING_TEXT: return "text that cannot be parsed" + in;
+    case tinyxml2::XML_ERROR_PARSING_COMMENT: return "an unterminated or bad comment";
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION: return "a bad XML declaration";
+    case tinyxml2::XML_ERROR_PARSING_CDATA: return "a bad CDATA section";
+    case tinyxml2::XML_ERROR_PARSING:
+      return "a syntax error (unexpected end of the document, an unclosed element or stray text)" + in;
+    default: return doc.ErrorName();
+  }
+}
+
 Vec3 to_vec(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
 
 Pose to_pose(const urdf::Pose& p) {
@@ -229,9 +252,8 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
                              const UrdfOptions& options, std::vector<std::string>* warnings) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    const char* detail = doc.ErrorStr();
-    throw_problems(source_name, {location(source_name, doc.ErrorLineNum()) + "malformed XML: " +
-                                 (detail != nullptr ? detail : doc.ErrorName())});
+    throw_problems(source_name,
+                   {location(source_name, doc.ErrorLineNum()) + "malformed XML: " + describe_xml_error(doc)});
   }
   const tinyxml2::XMLElement* robot = doc.RootElement();
   if (robot == nullptr || std::string(robot->Name()) != "robot") {
