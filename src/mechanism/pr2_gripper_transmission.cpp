@@ -151,11 +151,11 @@ std::unique_ptr<Transmission> build_pr2_gripper_transmission(TransmissionBuilder
   const description::XmlNode* gx = b.xml_child("gap_joint", gap_entry.name);
   const description::XmlNode& node = gx ? *gx : none;
   const std::string& gname = gap_entry.name;
-  g.mechanical_reduction = b.reduction(gx && gx->attribute("mechanical_reduction")
-                                           ? std::optional<double>(b.number_attribute(node, "mechanical_reduction",
-                                                                                      std::nullopt, gname))
-                                           : gap_entry.mechanical_reduction,
-                                       std::nullopt, "mechanical_reduction of the gap_joint", gname, node.line);
+  // The PR2 requires mechanical_reduction on the <gap_joint>.
+  const std::optional<double> n = gx && gx->attribute("mechanical_reduction")
+                                      ? std::optional<double>(b.number_attribute(node, "mechanical_reduction", {}, gname))
+                                      : gap_entry.mechanical_reduction;
+  g.mechanical_reduction = b.reduction(n, std::nullopt, "mechanical_reduction of the gap_joint", gname, node.line);
   g.screw_reduction = b.reduction(b.number_attribute(node, "screw_reduction", g.screw_reduction, gname), std::nullopt,
                                   "screw_reduction", gname, node.line);
   g.gear_ratio = b.reduction(b.number_attribute(node, "gear_ratio", g.gear_ratio, gname), std::nullopt, "gear_ratio",
@@ -169,7 +169,7 @@ std::unique_ptr<Transmission> build_pr2_gripper_transmission(TransmissionBuilder
   g.b = b.number_attribute(node, "b", g.b, gname);
   g.r = b.number_attribute(node, "r", g.r, gname);
   for (const auto& [what, value] : {std::pair{"a", g.a}, std::pair{"b", g.b}, std::pair{"r", g.r}})
-    if (!(value > 0.0)) b.fail(std::string("gap_joint ") + what + " must be positive, is " + std::to_string(value), gname, node.line);
+    if (!(value > 0.0)) b.fail(std::string("gap_joint ") + what + " must be positive", gname, node.line);
 
   int screw = -1;
   int slider = -1;

@@ -1,6 +1,7 @@
 #include "mechanism/transmission_builder.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -28,6 +29,13 @@ std::optional<double> parse_finite(const std::string& text) {
   while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r') ++end;
   if (*end != '\0' || end == begin || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+// The shortest text that reads back as `v` ("0", "1e+300", "nan").
+std::string number_text(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 const char* joint_type_name(JointType t) {
@@ -184,7 +192,7 @@ double TransmissionBuilder::reduction(std::optional<double> value, std::optional
   if (!value) value = fallback;
   if (!value) fail(what + " is missing", element, line);
   if (!std::isfinite(*value) || *value == 0.0)
-    fail(what + " is " + std::to_string(*value) + "; it must be finite and nonzero", element, line);
+    fail(what + " is " + number_text(*value) + "; it must be finite and nonzero", element, line);
   return *value;
 }
 

@@ -144,6 +144,20 @@ TEST(Pr2GripperTransmission, PreservesPowerOnTheGapAndOnTheFingers) {
   EXPECT_NEAR(s.joints[0].measured_effort, 0.04 * std::numbers::pi / dt_dmr, 1e-9);
 }
 
+TEST(Pr2GripperTransmission, PreservesPowerWithAnyReduction) {
+  GripperGeometry g = pr2_geometry();
+  g.mechanical_reduction = -2.5;  // the PR2 uses 1, where its own effort map is also power preserving
+  const MechanismModel m = gripper_model(g);
+  MechanismState s = make_state(m);
+  s.actuators[0].position = -2000.0;
+  s.actuators[0].velocity = -40.0;
+  s.actuators[0].last_measured_effort = 0.03;
+  propagate_actuator_to_joint_position(m, s);
+  EXPECT_GT(s.joints[0].position, 0.01);  // the reduction's sign turns the motor the other way
+  EXPECT_NEAR(test::joint_power(m, s, true, JointRole::Actuated), -40.0 * 0.03, 1e-12);
+  EXPECT_LT(test::joint_round_trip_error(m, s, 0.9), 1e-12);
+}
+
 TEST(Pr2GripperTransmission, ScrewJointGetsPr2ScrewTorque) {
   const MechanismModel m = gripper_model();
   MechanismState s = make_state(m);
