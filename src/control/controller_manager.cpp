@@ -47,10 +47,14 @@ std::uint64_t elapsed_ns(Clock::time_point from, Clock::time_point to) noexcept 
   return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(to - from).count());
 }
 
-void atomic_max(std::atomic<std::uint64_t>& target, std::uint64_t value) noexcept {
-  std::uint64_t seen = target.load(std::memory_order_relaxed);
-  while (value > seen && !target.compare_exchange_weak(seen, value, std::memory_order_relaxed)) {
-  }
+// Statistics have one writer, the tick: plain load + store (no locked read-modify-write),
+// atomic only so that readers on other threads see whole values.
+void rt_add(std::atomic<std::uint64_t>& target, std::uint64_t value) noexcept {
+  target.store(target.load(std::memory_order_relaxed) + value, std::memory_order_relaxed);
+}
+
+void rt_max(std::atomic<std::uint64_t>& target, std::uint64_t value) noexcept {
+  if (value > target.load(std::memory_order_relaxed)) target.store(value, std::memory_order_relaxed);
 }
 
 // Appends `text` to the fixed buffer without allocating.
@@ -337,7 +341,7 @@ ManagerStatistics ControllerManager::statistics() const {
 // ---------------------------------------------------------------- the tick
 
 void ControllerManager::fail(Entry& entry, const char* prefix, const char* reason, double time) noexcept {
-  entry.failures.fetch_add(1, std::memory_order_relaxed);
+  rt_add(entry.failures, 1);
   if (entry.failure_mutex.try_lock()) {
     std::size_t used = append(entry.failure, sizeof entry.failure, 0, prefix);
     append(entry.failure, sizeof entry.failure, used, reason);
@@ -380,7 +384,7 @@ void ControllerManager::apply_switch(double time) noexcept {
       error = "starting() threw an unknown exception";
     }
     if (error != nullptr) {
-      e->failures.fetch_add(1, std::memory_order_relaxed);
+      rt_add(e->failures, 1);
       if (e->failure_mutex.try_lock()) {
         std::size_t used = append(e->failure, sizeof e->failure, 0, "starting() failed: ");
         append(e->failure, sizeof e->failure, used, error);
@@ -414,10 +418,10 @@ void ControllerManager::run_controllers(const std::vector<Entry*>& list, double 
     const Clock::time_point after = Clock::now();
     const std::uint64_t ns = elapsed_ns(before, after);
     before = after;
-    e->updates.fetch_add(1, std::memory_order_relaxed);
-    e->time_sum_ns.fetch_add(ns, std::memory_order_relaxed);
-    atomic_max(e->time_max_ns, ns);
-    if (period_ns > 0.0 && static_cast<double>(ns) > period_ns) e->overruns.fetch_add(1, std::memory_order_relaxed);
+    rt_add(e->updates, 1);
+    rt_add(e->time_sum_ns, ns);
+    rt_max(e->time_max_ns, ns);
+    if (period_ns > 0.0 && static_cast<double>(ns) > period_ns) rt_add(e->overruns, 1);
     if (!failed && !status.ok) fail(*e, "update() failed: ", status.reason, time);
   }
 }
@@ -442,10 +446,10 @@ void ControllerManager::update(double time, double period) noexcept {
 
   list_in_use_.store(-1);
   const std::uint64_t ns = elapsed_ns(start, Clock::now());
-  ticks_.fetch_add(1, std::memory_order_relaxed);
-  tick_time_sum_ns_.fetch_add(ns, std::memory_order_relaxed);
-  atomic_max(tick_time_max_ns_, ns);
-  if (period > 0.0 && static_cast<double>(ns) > period * 1e9) tick_overruns_.fetch_add(1, std::memory_order_relaxed);
+  rt_add(ticks_, 1);
+  rt_add(tick_time_sum_ns_, ns);
+  rt_max(tick_time_max_ns_, ns);
+  if (period > 0.0 && static_cast<double>(ns) > period * 1e9) rt_add(tick_overruns_, 1);
 }
 
 }  // namespace mechsim::control

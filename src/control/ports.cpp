@@ -66,6 +66,7 @@ bool TwistCommandPort::write(const Twist& t, std::string* error) {
     }
   }
   buffer_.write(t);
+  accepted_.fetch_add(1, std::memory_order_release);
   return true;
 }
 

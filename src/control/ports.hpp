@@ -28,6 +28,12 @@ enum class PortKind : std::uint8_t {
   JointGroupState,      // StatePort<JointGroupControllerState>
   JointStates,          // StatePort<JointStateSnapshot> (sensor_msgs/JointState)
   PidGains,             // PidGainsPort: runtime gain changes (dynamic_reconfigure)
+  DriveModeCommand,     // DriveModeCommandPort: a rover drive mode (control/rover_drive_ports.hpp)
+  Odometry,             // StatePort<OdometrySnapshot> (nav_msgs/Odometry)
+  RoverDriveStatus,     // StatePort<RoverDriveStatus>
+  TrajectoryCommand,    // TrajectoryCommandPort (trajectory_msgs/JointTrajectory), trajectory_goal.hpp
+  TrajectoryGoal,       // TrajectoryGoalPort (control_msgs/FollowJointTrajectory action)
+  JointTrajectoryState, // StatePort<JointTrajectoryControllerState>
 };
 
 class Port {
@@ -115,6 +121,9 @@ class TwistCommandPort : public Port, public RejectionLog {
   PortKind kind() const override { return PortKind::TwistCommand; }
   bool write(const Twist& twist, std::string* error = nullptr);
   Twist latest() const { return buffer_.latest(); }
+  // Accepted writes so far. Real-time safe (an atomic): a controller compares it between ticks
+  // to see that a command arrived, even one equal to the last (command timeouts).
+  std::uint64_t accepted() const noexcept { return accepted_.load(std::memory_order_acquire); }
   const Twist& read_from_rt() noexcept { return buffer_.read_from_rt(); }
   void reset_from_rt(const Twist& twist) noexcept {
     (void)buffer_.read_from_rt();
@@ -123,6 +132,7 @@ class TwistCommandPort : public Port, public RejectionLog {
 
  private:
   RealtimeBuffer<Twist> buffer_;
+  std::atomic<std::uint64_t> accepted_{0};
 };
 
 // Runtime gain changes of one PID (the tick picks them up on its next step).

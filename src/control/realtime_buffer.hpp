@@ -35,23 +35,25 @@ class RealtimeBuffer {
     std::lock_guard<std::mutex> lock(mutex_);
     *rt_ = value;
     *non_rt_ = value;
-    new_data_ = false;
+    new_data_.store(false, std::memory_order_release);
   }
 
   // Non-real-time: publishes a new value for the next read_from_rt().
   void write(const T& value) {
     std::lock_guard<std::mutex> lock(mutex_);
     *non_rt_ = value;
-    new_data_ = true;
+    new_data_.store(true, std::memory_order_release);
     ++writes_;
   }
 
   // Real-time: the newest value that could be taken without waiting.
   const T& read_from_rt() noexcept {
-    if (mutex_.try_lock()) {
-      if (new_data_) {
+    // The flag spares the lock in the common case of no new data; the swap itself happens
+    // under the lock, so a concurrent write() cannot be torn.
+    if (new_data_.load(std::memory_order_acquire) && mutex_.try_lock()) {
+      if (new_data_.load(std::memory_order_relaxed)) {
         std::swap(rt_, non_rt_);
-        new_data_ = false;
+        new_data_.store(false, std::memory_order_relaxed);
       }
       mutex_.unlock();
     }
@@ -67,7 +69,7 @@ class RealtimeBuffer {
   // Non-real-time: the latest written value (pending or taken).
   T latest() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return new_data_ ? *non_rt_ : *rt_;
+    return new_data_.load(std::memory_order_relaxed) ? *non_rt_ : *rt_;
   }
   std::uint64_t writes() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -79,7 +81,7 @@ class RealtimeBuffer {
   T b_{};
   T* rt_;
   T* non_rt_;
-  bool new_data_ = false;
+  std::atomic<bool> new_data_{false};
   std::uint64_t writes_ = 0;
   mutable std::mutex mutex_;
 };
@@ -99,7 +101,8 @@ class SnapshotBuffer {
   bool publish_from_rt(F&& fill) noexcept {
     if (!mutex_.try_lock()) return false;
     fill(value_);
-    sequence_.fetch_add(1, std::memory_order_release);
+    // Only the tick writes the sequence: no locked read-modify-write needed.
+    sequence_.store(sequence_.load(std::memory_order_relaxed) + 1, std::memory_order_release);
     mutex_.unlock();
     return true;
   }
