@@ -6,6 +6,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -281,7 +282,10 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
     } catch (const std::exception& e) {
       urdfdom_messages.push_back(e.what());
     }
-    urdfdom_messages.insert(urdfdom_messages.end(), capture.messages().begin(), capture.messages().end());
+    // urdfdom repeats some messages (once per visual array and once for the first visual).
+    for (const std::string& m : capture.messages())
+      if (std::find(urdfdom_messages.begin(), urdfdom_messages.end(), m) == urdfdom_messages.end())
+        urdfdom_messages.push_back(m);
   }
   if (!parsed) {
     std::string msg = location(source_name, 0) + "urdfdom rejected the description";

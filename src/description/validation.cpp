@@ -215,10 +215,11 @@ void validate_structure(const RobotModel& model, ValidationReport& report) {
   std::set<std::string> done;
   for (const Link& start : model.links) {
     std::vector<std::string> path;
+    std::map<std::string, std::size_t> on_path;  // link -> index in path, for long chains
     std::string current = start.name;
     while (!done.count(current)) {
-      auto seen = std::find(path.begin(), path.end(), current);
-      if (seen != path.end()) {
+      if (auto seen_at = on_path.find(current); seen_at != on_path.end()) {
+        const auto seen = path.begin() + static_cast<std::ptrdiff_t>(seen_at->second);
         std::string chain;
         int line = 0;
         for (auto it = seen; it != path.end(); ++it) {
@@ -229,6 +230,7 @@ void validate_structure(const RobotModel& model, ValidationReport& report) {
         r.error(line, "kinematic cycle through joints " + chain + " (link '" + current + "')");
         break;
       }
+      on_path.emplace(current, path.size());
       path.push_back(current);
       auto up = parent_joint.find(current);
       if (up == parent_joint.end()) break;

@@ -202,14 +202,18 @@ TEST(UrdfParser, PrintsNothingOnTheConsoleWhenUrdfdomComplains) {
   // (or rejects it); either way nothing may reach stdout/stderr.
   const std::string urdf = R"(<robot name="r"><link name="a">
     <visual><geometry><box size="1 1 1"/></geometry><material name="undefined"/></visual></link></robot>)";
+  std::vector<std::string> warnings;
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
   try {
-    parse_urdf_string(urdf, "r.urdf", UrdfOptions{});
+    parse_urdf_string(urdf, "r.urdf", UrdfOptions{}, &warnings);
   } catch (const DescriptionError&) {
   }
   EXPECT_EQ(::testing::internal::GetCapturedStdout(), "");
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  // What urdfdom said comes back once, as a warning naming the file.
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("r.urdf: urdfdom: link 'a' material 'undefined' undefined"));
 }
 
 }  // namespace
