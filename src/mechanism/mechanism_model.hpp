@@ -62,4 +62,11 @@ struct MechanismState {
 // A state sized for `model`, everything at rest and zero.
 MechanismState make_state(const MechanismModel& model);
 
+// Whether a physics backend should apply this joint's commands (commanded_effort, or the
+// position/velocity servo of its command_mode) after propagate_actuator_to_joint_effort. Passive
+// joints carry the finger commands of the PR2 gripper (a backend that moves the fingers instead
+// of the gap joint uses those and not the gap's); simulated joints carry the PR2 Gazebo screw
+// torque and are for a backend that models the screw.
+inline bool physics_applies_command(const JointInfo& joint) { return joint.role == JointRole::Actuated; }
+
 }  // namespace mechsim::mechanism
