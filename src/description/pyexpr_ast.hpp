@@ -34,6 +34,7 @@ struct Expr {
   };
   Kind kind = Kind::Const;
   Op op = Op::Add;
+  int height = 1;                    // longest path to a leaf (bounded by the parser)
   Value value;                       // Const
   std::string name;                  // Name, Attr
   std::vector<ExprPtr> args;         // operands / elements / call arguments (nullptr: slice gap)

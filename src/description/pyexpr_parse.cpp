@@ -312,6 +312,22 @@ class Parser {
     }
   }
 
+  // Records the node's height and rejects trees deep enough to exhaust the stack when evaluated
+  // or destroyed (left-nested chains such as 1+1+1+... grow one level per operator).
+  static ExprPtr seal(ExprPtr e) {
+    int h = 0;
+    for (const auto& a : e->args) {
+      if (a) h = std::max(h, a->height);
+    }
+    for (const auto& c : e->clauses) {
+      if (c.iter) h = std::max(h, c.iter->height);
+      for (const auto& cond : c.conditions) h = std::max(h, cond->height);
+    }
+    e->height = h + 1;
+    if (e->height > kMaxDepth) syntax_error("expression nested too deeply");
+    return e;
+  }
+
   static ExprPtr make(Expr::Kind k) {
     auto e = std::make_unique<Expr>();
     e->kind = k;
@@ -328,7 +344,7 @@ class Parser {
       if (at_expr_end()) break;
       tup->args.push_back(test());
     }
-    return tup;
+    return seal(std::move(tup));
   }
 
   bool at_expr_end() const {
@@ -348,7 +364,7 @@ class Parser {
       }
       expect_op(":", "lambda");
       lam->args.push_back(test());
-      return lam;
+      return seal(std::move(lam));
     }
     ExprPtr body = or_test();
     if (is_kw("if")) {
@@ -360,7 +376,7 @@ class Parser {
       e->args.push_back(std::move(cond));
       e->args.push_back(std::move(body));
       e->args.push_back(std::move(other));
-      return e;
+      return seal(std::move(e));
     }
     return body;
   }
@@ -372,7 +388,7 @@ class Parser {
       e->op = Op::Or;
       e->args.push_back(std::move(left));
       e->args.push_back(and_test());
-      left = std::move(e);
+      left = seal(std::move(e));
     }
     return left;
   }
@@ -384,7 +400,7 @@ class Parser {
       e->op = Op::And;
       e->args.push_back(std::move(left));
       e->args.push_back(not_test());
-      left = std::move(e);
+      left = seal(std::move(e));
     }
     return left;
   }
@@ -394,7 +410,7 @@ class Parser {
       auto e = make(Expr::Kind::Unary);
       e->op = Op::Not;
       e->args.push_back(not_test());
-      return e;
+      return seal(std::move(e));
     }
     return comparison();
   }
@@ -441,7 +457,7 @@ class Parser {
       e->ops.push_back(op);
       e->args.push_back(bitor_expr());
     } while (comp_op(op));
-    return e;
+    return seal(std::move(e));
   }
 
   ExprPtr binary(ExprPtr left, Op op, ExprPtr right) {
@@ -449,7 +465,7 @@ class Parser {
     e->op = op;
     e->args.push_back(std::move(left));
     e->args.push_back(std::move(right));
-    return e;
+    return seal(std::move(e));
   }
 
   ExprPtr bitor_expr() {
@@ -504,7 +520,7 @@ class Parser {
     e->op = op;
     e->args.push_back(factor());
     --depth_;
-    return e;
+    return seal(std::move(e));
   }
   ExprPtr power() {
     ExprPtr base = primary();
@@ -522,7 +538,7 @@ class Parser {
         if (a->name.starts_with("__")) invalid_.push_back(a->name);
         ++i_;
         a->args.push_back(std::move(e));
-        e = std::move(a);
+        e = seal(std::move(a));
       } else if (accept_op("(")) {
         auto c = make(Expr::Kind::Call);
         c->args.push_back(std::move(e));
@@ -538,13 +554,13 @@ class Parser {
           if (!accept_op(",")) break;
         }
         expect_op(")", "(");
-        e = std::move(c);
+        e = seal(std::move(c));
       } else if (accept_op("[")) {
         auto s = make(Expr::Kind::Subscript);
         s->args.push_back(std::move(e));
         s->args.push_back(subscript());
         expect_op("]", "[");
-        e = std::move(s);
+        e = seal(std::move(s));
       } else {
         return e;
       }
@@ -568,7 +584,7 @@ class Parser {
     s->args.push_back(std::move(lower));
     s->args.push_back(std::move(upper));
     s->args.push_back(std::move(step));
-    return s;
+    return seal(std::move(s));
   }
 
   // [elt for ...] or (elt for ...)
@@ -648,7 +664,7 @@ class Parser {
         comp->args.push_back(std::move(first));
         comprehension(*comp);
         expect_op(")", "(");
-        return comp;
+        return seal(std::move(comp));
       }
       if (accept_op(")")) return first;
       auto tup = make(Expr::Kind::Tuple);
@@ -658,7 +674,7 @@ class Parser {
         tup->args.push_back(test());
       }
       expect_op(")", "(");
-      return tup;
+      return seal(std::move(tup));
     }
     if (accept_op("[")) {
       auto list = make(Expr::Kind::List);
@@ -669,7 +685,7 @@ class Parser {
         list->args.push_back(std::move(first));
         comprehension(*list);
         expect_op("]", "[");
-        return list;
+        return seal(std::move(list));
       }
       list->args.push_back(std::move(first));
       while (accept_op(",")) {
@@ -677,7 +693,7 @@ class Parser {
         list->args.push_back(test());
       }
       expect_op("]", "[");
-      return list;
+      return seal(std::move(list));
     }
     if (accept_op("{")) {
       auto dict = make(Expr::Kind::Dict);
@@ -689,7 +705,7 @@ class Parser {
         if (!accept_op(",")) break;
       }
       expect_op("}", "{");
-      return dict;
+      return seal(std::move(dict));
     }
     if (t.type == Tok::End) syntax_error("unexpected end of expression");
     syntax_error("invalid syntax near '" + describe(t) + "'");

@@ -18,8 +18,11 @@ struct XacroOptions {
   std::ostream* diagnostics = nullptr;
 };
 
-// An expansion failure. what() is the full message: the problem, then the file and line, then
-// the include/macro stack ("  in macro 'x' called from FILE:LINE" lines), as xacro prints it.
+// An expansion failure. what() is the full message: the problem as xacro words it (possibly
+// several lines, e.g. "when evaluating expression '...'"), then "  at FILE:LINE" (the innermost
+// node being expanded), then the macro/include stack, innermost first:
+// "  in macro 'x' (defined at FILE:LINE) called from FILE:LINE" and
+// "  in file FILE included from FILE:LINE".
 class XacroError : public std::runtime_error {
  public:
   // Xacro: an expansion error (xacro's XacroException); Parse: malformed XML (expat's ParseError).

@@ -98,7 +98,7 @@ void remove_node(Node* node) {
 
 namespace {
 
-constexpr int kMaxDepth = 1000;
+constexpr int kMaxDepth = 256;  // element nesting; expansion recurses once per level
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 

@@ -168,6 +168,12 @@ TEST(PyExpr, DeepNestingIsAnErrorNotACrash) {
   EXPECT_EQ(error_type(deep), "SyntaxError");
   std::string minus(5000, '-');
   EXPECT_EQ(error_type(minus + "1"), "SyntaxError");
+  std::string chain = "1";
+  for (int i = 0; i < 5000; ++i) chain += "+1";
+  EXPECT_EQ(error_type(chain), "SyntaxError");
+  std::string sum = "1";
+  for (int i = 0; i < 150; ++i) sum += "+1";
+  EXPECT_EQ(eval(sum), "151");
 }
 
 TEST(PyExpr, LiteralParsing) {
