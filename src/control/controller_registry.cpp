@@ -3,6 +3,8 @@
 #include "control/forward_command_controllers.hpp"
 #include "control/joint_state_controller.hpp"
 #include "control/pid_joint_controllers.hpp"
+#include "control/trajectory_controller.hpp"
+#include "control/rover_drive_controller.hpp"
 
 namespace mechsim::control {
 
@@ -54,6 +56,18 @@ void register_builtin_controllers(ControllerRegistry& r) {
   r.add("robot_mechanism_controllers/JointVelocityController", velocity_pid(ControllerFlavour::Pr2));
 
   r.add("joint_state_controller/JointStateController", [] { return std::make_unique<JointStateController>(); });
+
+  const auto trajectory = [](HI iface, ControllerFlavour f) {
+    return [iface, f] { return std::make_unique<JointTrajectoryController>(iface, f); };
+  };
+  r.add("effort_controllers/JointTrajectoryController", trajectory(HI::Effort, ControllerFlavour::RosControl));
+  r.add("position_controllers/JointTrajectoryController", trajectory(HI::Position, ControllerFlavour::RosControl));
+  r.add("velocity_controllers/JointTrajectoryController", trajectory(HI::Velocity, ControllerFlavour::RosControl));
+  r.add("joint_trajectory_controller/JointTrajectoryController",
+        [] { return std::make_unique<JointTrajectoryController>(); });
+  r.add("robot_mechanism_controllers/JointTrajectoryActionController", trajectory(HI::Effort, ControllerFlavour::Pr2));
+
+  r.add(kRoverDriveControllerType, [] { return std::make_unique<RoverDriveController>(); });
 }
 
 }  // namespace mechsim::control
