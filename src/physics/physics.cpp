@@ -118,6 +118,13 @@ StepStatus Physics::step() {
     if (j.actuator >= 0 && !std::isfinite(d->ctrl[j.actuator]))
       return {StepCode::NonFiniteCommand, j.name, d->ctrl[j.actuator]};
 
+  // A non-finite state (e.g. written as an initial condition) is reported before MuJoCo sees
+  // it: MuJoCo would reset the data and append to MUJOCO_LOG.TXT in the working directory.
+  for (int i = 0; i < m->nq; ++i)
+    if (!std::isfinite(d->qpos[i])) return {StepCode::NonFiniteState, joint_of_qpos(m, i), d->qpos[i]};
+  for (int i = 0; i < m->nv; ++i)
+    if (!std::isfinite(d->qvel[i])) return {StepCode::NonFiniteState, joint_of_dof(m, i), d->qvel[i]};
+
   const auto& diff = model_->differential();
   if (diff && diff->active) {
     const JointInfo& a = joints[diff->joint_a];

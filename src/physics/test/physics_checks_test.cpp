@@ -53,12 +53,23 @@ TEST(PhysicsChecks, RunawayAccelerationIsDetectedAndTheStateRestored) {
 }
 
 
-TEST(PhysicsChecks, BadStateFromMujocoIsReportedNotSilentlyReset) {
+TEST(PhysicsChecks, NonFiniteStateIsReportedNotSilentlyReset) {
   Physics p(test::build(test::pendulum_urdf(1.0, 1.0, 1e-3)));
   p.set_joint_state(0, 0.0, std::numeric_limits<double>::quiet_NaN());
   const StepStatus s = p.step();
-  EXPECT_FALSE(s.ok());
+  EXPECT_EQ(s.code, StepCode::NonFiniteState);
   EXPECT_EQ(s.element, "hinge");
+  EXPECT_TRUE(std::isnan(p.velocity(0)));  // left as it was, for the caller to inspect
+}
+
+TEST(PhysicsChecks, NonFiniteBaseStateNamesTheFloatingBody) {
+  Physics p(test::build(test::box_urdf()));
+  description::Pose X;
+  X.position.z = std::numeric_limits<double>::quiet_NaN();
+  p.set_base_pose(X);
+  const StepStatus s = p.step();
+  EXPECT_EQ(s.code, StepCode::NonFiniteState);
+  EXPECT_EQ(s.element, "box");
 }
 
 }  // namespace
