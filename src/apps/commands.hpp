@@ -20,5 +20,6 @@ struct CommandResult {
 void add_xacro_command(CLI::App& app, CommandResult& result);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_world_command(CLI::App& app, CommandResult& result);
+void add_run_command(CLI::App& app, CommandResult& result);
 
 }  // namespace mechsim::apps

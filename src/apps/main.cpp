@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   add_xacro_command(app, result);
   add_check_command(app, result);
   add_world_command(app, result);
+  add_run_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -29,18 +29,6 @@ std::vector<std::string> cc8_controller_names() {
   return names;
 }
 
-double pitch_of(const description::Quat& q) {
-  return std::asin(std::clamp(2.0 * (q.w * q.y - q.z * q.x), -1.0, 1.0));
-}
-
-double roll_of(const description::Quat& q) {
-  return std::atan2(2.0 * (q.w * q.x + q.y * q.z), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
-}
-
-double tilt_of(const description::Quat& q) {
-  return std::acos(std::clamp(1.0 - 2.0 * (q.x * q.x + q.y * q.y), -1.0, 1.0));
-}
-
 description::Pose link_pose(const Simulation& sim, const std::string& link) {
   const auto index = sim.physics().model().link_index(link);
   if (!index) throw std::runtime_error("no link '" + link + "' in the physics model");

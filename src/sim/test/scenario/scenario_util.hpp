@@ -9,6 +9,7 @@
 #include "control/params.hpp"
 #include "description/robot_model.hpp"
 #include "physics/heightmap.hpp"
+#include "sim/pose_math.hpp"
 #include "sim/simulation.hpp"
 
 namespace mechsim::sim {
@@ -18,9 +19,6 @@ description::RobotModel load_shared_cc8(const std::filesystem::path& shared);
 control::Params cc8_controller_params(const std::filesystem::path& shared);  // the `cc8` namespace
 std::vector<std::string> cc8_controller_names();                            // all 11
 
-double pitch_of(const description::Quat& q);  // rad, about the world y axis (ZYX Euler)
-double roll_of(const description::Quat& q);   // rad
-double tilt_of(const description::Quat& q);   // rad between the body's z axis and the world's
 description::Pose link_pose(const Simulation& sim, const std::string& link);
 // Wheel links (name starting with "wheel_") touching the ground or terrain.
 int count_wheel_contacts(const Simulation& sim);

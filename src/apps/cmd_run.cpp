@@ -1,0 +1,81 @@
+// `mechsim run SCENARIO.yaml`: runs a scenario headless and writes its report.
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.hpp"
+#include "sim/scenario.hpp"
+#include "sim/scenario_runner.hpp"
+
+namespace mechsim::apps {
+namespace {
+
+struct RunArgs {
+  std::string scenario;
+  std::string output;
+  bool no_plots = false;
+  double duration = 0.0;
+};
+
+// A one-line progress bar on a terminal; a plain line every 10 % of the run otherwise.
+std::function<void(const sim::RunProgress&)> progress_printer() {
+  const bool tty = isatty(fileno(stderr)) != 0;
+  auto last_decile = std::make_shared<int>(-1);
+  return [tty, last_decile](const sim::RunProgress& p) {
+    const double fraction = p.duration > 0 ? p.time / p.duration : 1.0;
+    if (tty) {
+      const int width = 40;
+      const int filled = static_cast<int>(fraction * width + 0.5);
+      std::fprintf(stderr, "\r[%.*s%*s] %6.1f / %.1f s  real-time factor %.2f ", filled,
+                   "########################################", width - filled, "", p.time, p.duration, p.real_time_factor);
+      if (fraction >= 1.0) std::fprintf(stderr, "\n");
+      std::fflush(stderr);
+      return;
+    }
+    const int decile = static_cast<int>(fraction * 10.0 + 1e-9);
+    if (decile != *last_decile) {
+      *last_decile = decile;
+      std::fprintf(stderr, "t = %.1f / %.1f s, real-time factor %.2f\n", p.time, p.duration, p.real_time_factor);
+    }
+  };
+}
+
+void run(const RunArgs& args, CommandResult& result) {
+  sim::Scenario scenario = sim::load_scenario(args.scenario);
+  if (args.duration > 0.0) scenario.duration = args.duration;
+  sim::RunOptions options;
+  options.output_dir = args.output.empty() ? (std::filesystem::path("out") / scenario.name).string() : args.output;
+  options.plots = !args.no_plots;
+  options.progress = progress_printer();
+  std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time\n" << std::flush;
+  const sim::ScenarioResult r = sim::run_scenario(scenario, options);
+  std::cout << "distance " << r.distance << " m, final pose (" << r.final_x << ", " << r.final_y << ") yaw "
+            << r.final_yaw * 180.0 / 3.141592653589793 << " deg, real-time factor " << r.real_time_factor << "\n";
+  if (!r.completed) std::cout << "did not complete: " << r.error << "\n";
+  for (const sim::CheckOutcome& c : r.checks) std::cout << (c.passed ? "  PASS " : "  FAIL ") << c.detail << "\n";
+  for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
+  std::cout << "report: " << std::filesystem::absolute(options.output_dir).lexically_normal().string() << "/summary.json";
+  for (const std::string& f : r.files) {
+    if (f.ends_with(".png")) std::cout << ", " << f;
+  }
+  std::cout << "\n" << (r.passed ? "PASSED" : "FAILED") << "\n";
+  result.exit_code = r.passed ? 0 : 1;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, CommandResult& result) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* cmd = app.add_subcommand("run", "Run a scenario headless and write its report (CSV, summary.json, plots)");
+  cmd->add_option("scenario", args->scenario, "Scenario file (YAML)")->required();
+  cmd->add_option("-o,--output", args->output, "Report folder (default: out/<scenario name>)");
+  cmd->add_flag("--no-plots", args->no_plots, "Do not draw PNG plots");
+  cmd->add_option("--duration", args->duration, "Override the scenario's duration (s)");
+  cmd->callback([args, &result] { run(*args, result); });
+}
+
+}  // namespace mechsim::apps

@@ -1,0 +1,281 @@
+#include "sim/report.hpp"
+
+#include "sim/pose_math.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace mechsim::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+
+// gnuplot string literal.
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Runs gnuplot on `script`; empty on success, else gnuplot's complaint.
+std::string run_gnuplot(const fs::path& dir, const std::string& name, const std::string& script) {
+  const fs::path script_path = dir / (name + ".gp");
+  const fs::path log_path = dir / (name + ".gnuplot.log");
+  {
+    std::ofstream out(script_path);
+    out << script;
+  }
+  const std::string command = "gnuplot " + quoted(script_path.string()) + " > " + quoted(log_path.string()) + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::error_code ec;
+  if (status == 0) {
+    fs::remove(script_path, ec);
+    fs::remove(log_path, ec);
+    return {};
+  }
+  std::ifstream log(log_path);
+  std::stringstream text;
+  text << log.rdbuf();
+  return "gnuplot failed for " + name + ".png (is gnuplot installed?): " + text.str().substr(0, 400);
+}
+
+void write_terrain(const physics::Heightmap& map, const fs::path& file, double& z_min, double& z_max) {
+  std::ofstream out(file);
+  // At most ~400 samples a side: enough for a picture.
+  const std::size_t step = std::max<std::size_t>(1, std::max(map.rows, map.cols) / 400);
+  z_min = 1e300;
+  z_max = -1e300;
+  for (std::size_t r = 0; r < map.rows; r += step) {
+    for (std::size_t c = 0; c < map.cols; c += step) {
+      const double x = -map.size_x / 2 + static_cast<double>(c) * map.cell_x();
+      const double y = -map.size_y / 2 + static_cast<double>(r) * map.cell_y();
+      const double z = map.at(r, c);
+      z_min = std::min(z_min, z);
+      z_max = std::max(z_max, z);
+      out << x << ',' << y << ',' << z << '\n';
+    }
+    out << '\n';
+  }
+}
+
+}  // namespace
+
+Recorder::Recorder(const Simulation& sim, const std::string& dir) : sim_(sim) {
+  auto& manager = const_cast<Simulation&>(sim).controllers();
+  for (const control::ControllerInfo& info : manager.list_controllers()) {
+    control::Controller* c = manager.controller(info.name);
+    if (c == nullptr) continue;
+    for (control::Port* p : c->ports()) {
+      if (p->kind() == control::PortKind::JointControllerState) {
+        Channel ch;
+        ch.controller = info.name;
+        ch.single = dynamic_cast<const control::StatePort<control::JointControllerState>*>(p);
+        channels_.push_back(ch);
+      } else if (p->kind() == control::PortKind::JointGroupState) {
+        const auto* group = dynamic_cast<const control::StatePort<control::JointGroupControllerState>*>(p);
+        const control::JointGroupControllerState snapshot = group->read();
+        for (std::size_t k = 0; k < snapshot.joint_names.size(); ++k) {
+          Channel ch;
+          ch.controller = info.name;
+          ch.joint = snapshot.joint_names[k];
+          ch.group = group;
+          ch.index = k;
+          channels_.push_back(ch);
+        }
+      }
+    }
+  }
+  if (dir.empty()) return;
+  fs::create_directories(dir);
+  joints_.open(fs::path(dir) / "joints.csv");
+  controllers_.open(fs::path(dir) / "controllers.csv");
+  base_.open(fs::path(dir) / "base.csv");
+  for (std::ofstream* f : {&joints_, &controllers_, &base_}) *f << std::setprecision(9);
+  joints_ << "time";
+  for (const mechanism::JointInfo& j : sim.mechanism().joints) {
+    joints_ << ',' << j.name << "/position," << j.name << "/velocity," << j.name << "/effort," << j.name << "/command";
+  }
+  joints_ << '\n';
+  controllers_ << "time";
+  for (const Channel& ch : channels_) {
+    const std::string n = ch.joint.empty() ? ch.controller : ch.controller + "/" + ch.joint;
+    controllers_ << ',' << n << "/set_point," << n << "/process_value," << n << "/error," << n << "/command";
+  }
+  controllers_ << '\n';
+  base_ << "time,x,y,z,roll,pitch,yaw,odom_x,odom_y,odom_yaw\n";
+}
+
+void Recorder::sample(const control::StatePort<control::OdometrySnapshot>* odometry) {
+  const double t = sim_.time();
+  const bool files = controllers_.is_open();
+  if (files) controllers_ << t;
+  for (Channel& ch : channels_) {
+    control::JointControllerState s;
+    if (ch.single != nullptr) {
+      s = ch.single->read();
+    } else {
+      const control::JointGroupControllerState g = ch.group->read();
+      if (ch.index < g.joints.size()) s = g.joints[ch.index];
+    }
+    if (ch.single == nullptr || ch.single->sequence() > 0) {
+      ch.sum_sq += s.error * s.error;
+      ch.max_abs = std::max(ch.max_abs, std::abs(s.error));
+      ++ch.samples;
+    }
+    if (files) controllers_ << ',' << s.set_point << ',' << s.process_value << ',' << s.error << ',' << s.command;
+  }
+  if (!files) return;
+  controllers_ << '\n';
+  joints_ << t;
+  for (const mechanism::JointState& j : sim_.mechanism_state().joints) {
+    joints_ << ',' << j.position << ',' << j.velocity << ',' << j.measured_effort << ',' << j.commanded_effort;
+  }
+  joints_ << '\n';
+  const description::Pose X_WB = sim_.physics().base_pose();
+  base_ << t << ',' << X_WB.position.x << ',' << X_WB.position.y << ',' << X_WB.position.z << ','
+        << roll_of(X_WB.orientation) << ',' << pitch_of(X_WB.orientation) << ',' << yaw_of(X_WB.orientation);
+  if (odometry != nullptr) {
+    const control::OdometrySnapshot o = odometry->read();
+    const physics::SpawnPose& sp = sim_.options().spawn;
+    const double c = std::cos(sp.yaw), s = std::sin(sp.yaw);
+    base_ << ',' << sp.x + c * o.x - s * o.y << ',' << sp.y + s * o.x + c * o.y << ',' << o.yaw + sp.yaw << '\n';
+  } else {
+    base_ << ",,,\n";
+  }
+}
+
+std::vector<TrackingError> Recorder::tracking() const {
+  std::vector<TrackingError> out;
+  for (const Channel& ch : channels_) {
+    TrackingError t;
+    t.controller = ch.joint.empty() ? ch.controller : ch.controller + "/" + ch.joint;
+    t.samples = ch.samples;
+    t.rms = ch.samples > 0 ? std::sqrt(ch.sum_sq / static_cast<double>(ch.samples)) : 0.0;
+    t.max = ch.max_abs;
+    out.push_back(t);
+  }
+  return out;
+}
+
+void Recorder::close() {
+  joints_.close();
+  controllers_.close();
+  base_.close();
+}
+
+void write_report(const Scenario& s, const Simulation& sim, ScenarioResult& result, const RunOptions& options) {
+  const fs::path dir = options.output_dir;
+  fs::create_directories(dir);
+  result.files.insert(result.files.end(), {"joints.csv", "controllers.csv", "base.csv"});
+
+  std::vector<std::array<double, 2>> waypoints;
+  for (const TimelineEvent& e : s.timeline) {
+    if (e.kind == TimelineEvent::Kind::Route) waypoints.insert(waypoints.end(), e.route.waypoints.begin(), e.route.waypoints.end());
+  }
+
+  if (options.plots) {
+    // The path over the terrain (or the ground grid). Every data file is comma separated.
+    std::ostringstream gp;
+    gp << "set terminal pngcairo size 1200,900 font 'DejaVu Sans,11'\nset output " << quoted((dir / "path.png").string()) << "\n"
+       << "set datafile separator ','\nset size ratio -1\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
+       << "set key outside bottom center horizontal\n"
+       << "set title " << quoted(s.name + ": path of the base over " + fs::path(sim.world().name).filename().string()) << " noenhanced\n";
+    std::string plots;
+    if (const auto& terrain = sim.world().spec.terrain) {
+      double z0 = 0, z1 = 0;
+      write_terrain(*terrain, dir / "terrain.csv", z0, z1);
+      gp << "set cblabel 'height (m)'\nset palette defined (0 '#3b1a0f', 0.5 '#a0522d', 1 '#f4c28f')\n"
+         << "set xrange [" << -terrain->size_x / 2 << ":" << terrain->size_x / 2 << "]\nset yrange [" << -terrain->size_y / 2
+         << ":" << terrain->size_y / 2 << "]\n";
+      plots += quoted((dir / "terrain.csv").string()) + " using 1:2:3 with image notitle, ";
+    } else {
+      gp << "set grid\n";
+    }
+    std::ofstream wp(dir / "waypoints.csv");
+    wp << "x,y\n";
+    for (const auto& w : waypoints) wp << w[0] << ',' << w[1] << '\n';
+    wp.close();
+    const std::string base = quoted((dir / "base.csv").string());
+    plots += base + " using 2:3 with lines lw 3 lc rgb '#0050ff' title 'true path', ";
+    if (result.has_odometry) plots += base + " using 8:9 with lines lw 2 dt 2 lc rgb '#ff00ff' title 'odometry', ";
+    if (!waypoints.empty()) {
+      plots += quoted((dir / "waypoints.csv").string()) + " using 1:2 with linespoints pt 7 ps 1.5 lc rgb '#00c000' title 'waypoints', ";
+    }
+    plots += base + " every ::0::0 using 2:3 with points pt 5 ps 2 lc rgb '#000000' title 'start'\n";
+    const std::string script = gp.str() + "plot " + plots;
+    if (const std::string err = run_gnuplot(dir, "path", script); !err.empty()) {
+      result.warnings.push_back(err);
+    } else {
+      result.files.push_back("path.png");
+    }
+
+    // Tracking: set point and process value of each channel, and the errors.
+    const std::size_t n = result.tracking.size();
+    if (n > 0) {
+      const std::string csv = quoted((dir / "controllers.csv").string());
+      const int cols = n > 6 ? 3 : 2;
+      const int rows = static_cast<int>((n + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+      std::ostringstream tr;
+      tr << "set terminal pngcairo size " << 560 * cols << "," << 260 * rows + 60 << " font 'DejaVu Sans,9'\nset output "
+         << quoted((dir / "tracking.png").string()) << "\nset datafile separator ','\nset key top left\nset grid\n"
+         << "set multiplot layout " << rows << "," << cols << " title " << quoted(s.name + ": set point vs measured") << "\n";
+      std::ostringstream er;
+      er << "set terminal pngcairo size 1200,700 font 'DejaVu Sans,10'\nset output " << quoted((dir / "errors.png").string())
+         << "\nset datafile separator ','\nset key outside right\nset grid\nset xlabel 'time (s)'\nset ylabel 'error'\n"
+         << "set title " << quoted(s.name + ": controller errors") << "\nplot ";
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t col = 2 + 4 * k;
+        tr << "set title " << quoted(result.tracking[k].controller) << " noenhanced\nplot " << csv << " using 1:" << col
+           << " with lines lw 2 title 'set point', " << csv << " using 1:" << col + 1 << " with lines lw 1.5 title 'measured'\n";
+        er << (k ? ", " : "") << csv << " using 1:" << col + 2 << " with lines title " << quoted(result.tracking[k].controller) << " noenhanced";
+      }
+      tr << "unset multiplot\n";
+      er << "\n";
+      for (const auto& [name, script_text] : {std::pair{std::string("tracking"), tr.str()}, std::pair{std::string("errors"), er.str()}}) {
+        if (const std::string err = run_gnuplot(dir, name, script_text); !err.empty()) {
+          result.warnings.push_back(err);
+        } else {
+          result.files.push_back(name + ".png");
+        }
+      }
+    }
+  }
+
+  nlohmann::ordered_json j;
+  j["scenario"] = s.name;
+  j["file"] = s.file;
+  j["robot"] = sim.robot().name;
+  j["world"] = sim.world().name;
+  j["completed"] = result.completed;
+  j["passed"] = result.passed;
+  if (!result.error.empty()) j["error"] = result.error;
+  j["sim_time_s"] = result.sim_time;
+  j["wall_time_s"] = result.wall_time;
+  j["real_time_factor"] = result.real_time_factor;
+  j["distance_m"] = result.distance;
+  j["final_pose"] = {{"x", result.final_x}, {"y", result.final_y}, {"z", result.final_z}, {"yaw_rad", result.final_yaw}};
+  j["max_tilt_rad"] = result.max_tilt;
+  if (result.has_odometry) j["odometry_error_m"] = result.odometry_error;
+  j["tracking"] = nlohmann::ordered_json::array();
+  for (const TrackingError& t : result.tracking) {
+    j["tracking"].push_back({{"controller", t.controller}, {"rms_error", t.rms}, {"max_error", t.max}, {"samples", t.samples}});
+  }
+  j["checks"] = nlohmann::ordered_json::array();
+  for (const CheckOutcome& c : result.checks) j["checks"].push_back({{"check", c.name}, {"passed", c.passed}, {"detail", c.detail}});
+  j["warnings"] = result.warnings;
+  result.files.push_back("summary.json");
+  j["files"] = result.files;
+  std::ofstream(dir / "summary.json") << j.dump(2) << '\n';
+}
+
+}  // namespace mechsim::sim

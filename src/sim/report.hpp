@@ -1,0 +1,45 @@
+#pragma once
+// What a scenario run leaves behind: the CSV recorder (sampled during the run) and the final
+// report (summary.json and gnuplot PNGs).
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "control/ports.hpp"
+#include "control/rover_drive_ports.hpp"
+#include "sim/scenario.hpp"
+#include "sim/scenario_runner.hpp"
+#include "sim/simulation.hpp"
+
+namespace mechsim::sim {
+
+// Samples joint states, controller states and the base pose into CSV files (when `dir` is not
+// empty) and accumulates each controller's tracking error (always).
+class Recorder {
+ public:
+  Recorder(const Simulation& sim, const std::string& dir);
+  void sample(const control::StatePort<control::OdometrySnapshot>* odometry);
+  std::vector<TrackingError> tracking() const;
+  void close();
+
+  struct Channel {
+    std::string controller, joint;  // the joint is empty for single-joint controllers
+    const control::StatePort<control::JointControllerState>* single = nullptr;
+    const control::StatePort<control::JointGroupControllerState>* group = nullptr;
+    std::size_t index = 0;  // in the group
+    double sum_sq = 0.0, max_abs = 0.0;
+    std::size_t samples = 0;
+  };
+
+ private:
+  const Simulation& sim_;
+  std::vector<Channel> channels_;
+  std::ofstream joints_, controllers_, base_;
+};
+
+// summary.json and, when options.plots, path.png, tracking.png and errors.png. Adds the files
+// written to result.files; a plotting failure becomes a warning.
+void write_report(const Scenario& scenario, const Simulation& sim, ScenarioResult& result, const RunOptions& options);
+
+}  // namespace mechsim::sim

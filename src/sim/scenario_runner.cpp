@@ -1,0 +1,270 @@
+#include "sim/scenario_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+#include "control/params.hpp"
+#include "control/rover_drive_ports.hpp"
+#include "description/robot_loader.hpp"
+#include "sim/report.hpp"
+#include "sim/pose_math.hpp"
+#include "sim/route_follower.hpp"
+#include "sim/simulation.hpp"
+
+namespace mechsim::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+
+template <class P>
+P* find_port(control::Controller* c, control::PortKind kind) {
+  if (c == nullptr) return nullptr;
+  for (control::Port* p : c->ports()) {
+    if (p->kind() == kind) return dynamic_cast<P*>(p);
+  }
+  return nullptr;
+}
+
+// A timeline event bound to its controller's port, checked before the run starts.
+struct BoundEvent {
+  const TimelineEvent* event = nullptr;
+  control::Controller* controller = nullptr;
+};
+
+void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::TwistCommandPort*& route_port) {
+  const TimelineEvent& e = *b.event;
+  std::string error;
+  bool ok = true;
+  switch (e.kind) {
+    case TimelineEvent::Kind::Scalar:
+      ok = find_port<control::ScalarCommandPort>(b.controller, control::PortKind::ScalarCommand)->write(e.scalar, &error);
+      break;
+    case TimelineEvent::Kind::Array:
+      ok = find_port<control::ArrayCommandPort>(b.controller, control::PortKind::ArrayCommand)->write(e.array, &error);
+      break;
+    case TimelineEvent::Kind::Twist:
+      route.reset();
+      ok = find_port<control::TwistCommandPort>(b.controller, control::PortKind::TwistCommand)->write(e.twist, &error);
+      break;
+    case TimelineEvent::Kind::Mode:
+      ok = find_port<control::DriveModeCommandPort>(b.controller, control::PortKind::DriveModeCommand)->write(e.mode, &error);
+      break;
+    case TimelineEvent::Kind::Route: {
+      RouteParams params;
+      params.speed = e.route.speed;
+      params.tolerance = e.route.tolerance;
+      params.lookahead = e.route.lookahead;
+      params.max_yaw_rate = e.route.max_yaw_rate;
+      route.emplace(e.route.waypoints, params);
+      route_port = find_port<control::TwistCommandPort>(b.controller, control::PortKind::TwistCommand);
+      break;
+    }
+  }
+  if (!ok) throw ScenarioError("t=" + std::to_string(e.at) + " s: controller '" + e.controller + "' rejected the command: " + error);
+}
+
+control::PortKind port_kind_for(TimelineEvent::Kind kind) {
+  switch (kind) {
+    case TimelineEvent::Kind::Scalar: return control::PortKind::ScalarCommand;
+    case TimelineEvent::Kind::Array: return control::PortKind::ArrayCommand;
+    case TimelineEvent::Kind::Twist:
+    case TimelineEvent::Kind::Route: return control::PortKind::TwistCommand;
+    case TimelineEvent::Kind::Mode: return control::PortKind::DriveModeCommand;
+  }
+  return control::PortKind::ScalarCommand;
+}
+
+std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
+  description::LoadOptions load;
+  load.xacro_args = s.xacro_args;
+  load.packages = s.packages;
+  load.lenient = s.lenient;
+  description::LoadedRobot robot;
+  try {
+    robot = description::load_robot(s.description, load);
+  } catch (const std::exception& e) {
+    throw ScenarioError(s.file + ": robot: " + e.what());
+  }
+  World world;
+  try {
+    WorldConfig config = s.world;
+    world = make_world(config);
+  } catch (const std::exception& e) {
+    throw ScenarioError(s.file + ": world: " + e.what());
+  }
+  control::Params params;
+  try {
+    params = control::Params::from_yaml_file(s.controllers_file);
+    if (!s.controllers_namespace.empty()) params = params.child(s.controllers_namespace);
+  } catch (const std::exception& e) {
+    throw ScenarioError(s.file + ": controllers: " + e.what());
+  }
+  SimulationOptions options;
+  options.period = s.period;
+  options.spawn = s.spawn;
+  options.differential = s.differential;
+  try {
+    auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options);
+    sim->load_and_start(s.start);
+    return sim;
+  } catch (const std::exception& e) {
+    throw ScenarioError(s.file + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
+  std::unique_ptr<Simulation> sim = build_simulation(s);
+  ScenarioResult result;
+
+  std::vector<BoundEvent> events;
+  for (const TimelineEvent& e : s.timeline) {
+    control::Controller* c = sim->controllers().controller(e.controller);
+    if (c == nullptr) throw ScenarioError(s.file + ": timeline at t=" + std::to_string(e.at) + " s: no controller '" + e.controller + "' is loaded");
+    bool has_port = false;
+    for (control::Port* p : c->ports()) has_port = has_port || p->kind() == port_kind_for(e.kind);
+    if (!has_port) {
+      throw ScenarioError(s.file + ": timeline at t=" + std::to_string(e.at) + " s: controller '" + e.controller +
+                          "' has no input for this kind of command");
+    }
+    events.push_back({&e, c});
+  }
+
+  Recorder recorder(*sim, options.output_dir);
+  const control::StatePort<control::OdometrySnapshot>* odometry = nullptr;
+  for (const control::ControllerInfo& info : sim->controllers().list_controllers()) {
+    if (auto* p = find_port<control::StatePort<control::OdometrySnapshot>>(sim->controllers().controller(info.name),
+                                                                         control::PortKind::Odometry)) {
+      odometry = p;
+    }
+  }
+  result.has_odometry = odometry != nullptr;
+
+  std::optional<RouteFollower> route;
+  control::TwistCommandPort* route_port = nullptr;
+  std::size_t next_event = 0;
+  const std::uint64_t total_ticks = static_cast<std::uint64_t>(std::llround(s.duration / s.period));
+  const std::uint64_t record_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(1.0 / (s.record_rate * s.period))));
+  const std::uint64_t route_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(0.02 / s.period)));
+  const std::uint64_t progress_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(0.5 / s.period)));
+
+  std::vector<double> reach_best(s.checks.size(), 1e300);
+  double last_x = sim->physics().base_pose().position.x, last_y = sim->physics().base_pose().position.y;
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto rtf_now = [&] {
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    return wall > 0.0 ? sim->time() / wall : 0.0;
+  };
+
+  for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
+    const double t = sim->time();
+    while (next_event < events.size() && events[next_event].event->at <= t + 1e-9) {
+      apply(events[next_event], route, route_port);
+      ++next_event;
+    }
+    const description::Pose X_WB = sim->physics().base_pose();
+    const double yaw = yaw_of(X_WB.orientation);
+    if (route && route_port != nullptr && tick % route_every == 0) {
+      route_port->write(route->update(X_WB.position.x, X_WB.position.y, yaw));
+    }
+    if (tick % record_every == 0) recorder.sample(odometry);
+
+    const TickResult r = sim->step();
+    if (!r) {
+      result.error = r.error;
+      break;
+    }
+    const description::Pose after = sim->physics().base_pose();
+    result.distance += std::hypot(after.position.x - last_x, after.position.y - last_y);
+    last_x = after.position.x;
+    last_y = after.position.y;
+    result.max_tilt = std::max(result.max_tilt, tilt_of(after.orientation));
+    for (std::size_t k = 0; k < s.checks.size(); ++k) {
+      const Check& c = s.checks[k];
+      if (c.kind == Check::Kind::Reach && sim->time() <= c.by + 1e-9) {
+        reach_best[k] = std::min(reach_best[k], std::hypot(after.position.x - c.x, after.position.y - c.y));
+      }
+    }
+    if (options.progress && (tick + 1) % progress_every == 0) options.progress({sim->time(), s.duration, rtf_now()});
+  }
+  recorder.sample(odometry);
+  result.completed = result.error.empty();
+  result.sim_time = sim->time();
+  result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  result.real_time_factor = rtf_now();
+  const description::Pose X_WB = sim->physics().base_pose();
+  result.final_x = X_WB.position.x;
+  result.final_y = X_WB.position.y;
+  result.final_z = X_WB.position.z;
+  result.final_yaw = yaw_of(X_WB.orientation);
+  if (odometry != nullptr) {
+    // Odometry starts at the spawn pose's origin and heading: compare in the spawn frame.
+    const control::OdometrySnapshot odom = odometry->read();
+    const double c = std::cos(s.spawn.yaw), sn = std::sin(s.spawn.yaw);
+    const double ox = s.spawn.x + c * odom.x - sn * odom.y, oy = s.spawn.y + sn * odom.x + c * odom.y;
+    result.odometry_error = std::hypot(ox - result.final_x, oy - result.final_y);
+  }
+  result.tracking = recorder.tracking();
+  if (options.progress) options.progress({sim->time(), s.duration, result.real_time_factor});
+
+  for (std::size_t k = 0; k < s.checks.size(); ++k) {
+    const Check& c = s.checks[k];
+    CheckOutcome out;
+    char buf[256];
+    switch (c.kind) {
+      case Check::Kind::Reach:
+        out.passed = reach_best[k] <= c.within;
+        std::snprintf(buf, sizeof buf, "reach (%.2f, %.2f) within %.2f m by t=%.1f s: closest %.3f m", c.x, c.y, c.within, c.by, reach_best[k]);
+        break;
+      case Check::Kind::FinalPose: {
+        const double d = std::hypot(result.final_x - c.x, result.final_y - c.y);
+        const double lateral = std::abs(result.final_y - c.y);
+        out.passed = d <= c.within && (!c.lateral_within || lateral <= *c.lateral_within);
+        std::snprintf(buf, sizeof buf, "final pose (%.3f, %.3f) within %.3f m of (%.2f, %.2f): off by %.3f m (lateral %.3f m)",
+                      result.final_x, result.final_y, c.within, c.x, c.y, d, lateral);
+        break;
+      }
+      case Check::Kind::FinalHeading: {
+        const double err = std::abs(wrap_angle(result.final_yaw - c.yaw));
+        out.passed = err <= c.within_angle;
+        std::snprintf(buf, sizeof buf, "final heading %.2f deg, wanted %.2f +- %.2f deg: off by %.2f deg", result.final_yaw * 180 / M_PI,
+                      c.yaw * 180 / M_PI, c.within_angle * 180 / M_PI, err * 180 / M_PI);
+        break;
+      }
+      case Check::Kind::Upright:
+        out.passed = result.max_tilt <= c.max_tilt;
+        std::snprintf(buf, sizeof buf, "max tilt %.2f deg (limit %.2f deg)", result.max_tilt * 180 / M_PI, c.max_tilt * 180 / M_PI);
+        break;
+      case Check::Kind::Odometry: {
+        const double fraction = result.distance > 1e-6 ? result.odometry_error / result.distance : 0.0;
+        out.passed = odometry != nullptr && fraction <= c.max_error_fraction;
+        std::snprintf(buf, sizeof buf, "odometry error %.3f m over %.3f m = %.2f %% (limit %.2f %%)%s", result.odometry_error,
+                      result.distance, 100 * fraction, 100 * c.max_error_fraction, odometry ? "" : " [no odometry]");
+        break;
+      }
+      case Check::Kind::Distance:
+        out.passed = result.distance >= c.min_distance && result.distance <= c.max_distance;
+        std::snprintf(buf, sizeof buf, "distance %.3f m in [%.3f, %.3g] m", result.distance, c.min_distance, c.max_distance);
+        break;
+    }
+    out.name = c.text;
+    out.detail = buf;
+    result.checks.push_back(out);
+  }
+  result.passed = result.completed && std::all_of(result.checks.begin(), result.checks.end(),
+                                                  [](const CheckOutcome& c) { return c.passed; });
+  if (!options.output_dir.empty()) {
+    recorder.close();
+    write_report(s, *sim, result, options);
+  }
+  return result;
+}
+
+}  // namespace mechsim::sim
