@@ -42,6 +42,26 @@ TEST(PhysicsDynamics, PendulumSmallAnglePeriodWithinHalfAPercent) {
   EXPECT_LT(error, 0.005);
 }
 
+// The inertial frame's rotation is applied to the inertia tensor: ixx = 0.5 turned 90 degrees
+// about z becomes the inertia about the y hinge, so I_pivot = 0.5 + m L^2. Tolerance 0.5 %.
+TEST(PhysicsDynamics, InertialOriginRotationIsHonoured) {
+  const std::string urdf = R"(<robot name="rotated">
+  <link name="world"/>
+  <link name="bob">
+    <inertial><origin xyz="0 0 -0.5" rpy="0 0 1.5707963267948966"/><mass value="1"/>
+      <inertia ixx="0.5" iyy="0.3" izz="0.3" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+  <joint name="hinge" type="continuous"><parent link="world"/><child link="bob"/><origin xyz="0 0 2"/><axis xyz="0 1 0"/></joint>
+</robot>)";
+  Physics p(test::build(urdf));
+  p.set_joint_state(0, 0.01);
+  const auto t = upward_crossings(p, 0, 10.0);
+  ASSERT_GE(t.size(), 3u);
+  const double measured = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+  const double analytic = 2.0 * M_PI * std::sqrt((0.5 + 0.25) / (1.0 * kG * 0.5));
+  EXPECT_NEAR(measured, analytic, 0.005 * analytic);
+}
+
 // A free body falls z(t) = z0 - g t^2 / 2. Default options. Tolerance 1 % of the drop.
 TEST(PhysicsDynamics, FreeFallWithinOnePercent) {
   BuildOptions o;
