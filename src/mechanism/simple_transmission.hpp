@@ -15,7 +15,9 @@
 //
 // The PR2 variant may name a simulated_actuated_joint with a simulated_reduction r_s (the
 // Gazebo screw joint of the torso: screw angle = r_s * lift). Its commanded effort is the PR2
-// screw torque tau_s = n * tau_a / r_s (N m); its state is left as the physics reports it.
+// screw torque tau_s = n * tau_a / r_s (N m); its state is left as the physics reports it. The
+// PR2 then applies only the screw torque (Gazebo's screw joint moves the lift); here the actuated
+// joint also gets tau_j = n * tau_a, for a physics without the screw (physics_applies_command).
 // Sources: ros_control transmission_interface SimpleTransmission documentation;
 // pr2_mechanism_model SimpleTransmission (PR2/pr2_mechanism).
 
