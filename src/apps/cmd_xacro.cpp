@@ -44,7 +44,8 @@ void add_xacro_command(CLI::App& app, CommandResult& /*result*/) {
     }
     const std::string text = description::expand_xacro_file(args->input, options);
     if (args->output.empty()) {
-      std::cout << text;
+      // xacro prints the document and then an empty line on stdout; with -o it writes the document only.
+      std::cout << text << '\n';
       std::cout.flush();
       return;
     }
