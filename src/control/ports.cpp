@@ -52,9 +52,9 @@ bool ArrayCommandPort::write(std::span<const double> values, std::string* error)
 }
 
 void ArrayCommandPort::reset_from_rt(std::span<const double> values) noexcept {
-  (void)buffer_.read_from_rt();
-  std::vector<double>& rt = buffer_.mutable_rt();
-  for (std::size_t i = 0; i < rt.size() && i < values.size(); ++i) rt[i] = values[i];
+  buffer_.reset_from_rt([values](std::vector<double>& rt) {
+    for (std::size_t i = 0; i < rt.size() && i < values.size(); ++i) rt[i] = values[i];
+  });
 }
 
 bool TwistCommandPort::write(const Twist& t, std::string* error) {

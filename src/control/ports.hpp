@@ -90,8 +90,7 @@ class ScalarCommandPort : public Port, public RejectionLog {
   double read_from_rt() noexcept { return buffer_.read_from_rt(); }
   // Real-time: drops any pending write and sets the command (ros_control's starting()).
   void reset_from_rt(double value) noexcept {
-    (void)buffer_.read_from_rt();
-    buffer_.mutable_rt() = value;
+    buffer_.reset_from_rt([value](double& v) { v = value; });
   }
 
  private:
@@ -126,8 +125,7 @@ class TwistCommandPort : public Port, public RejectionLog {
   std::uint64_t accepted() const noexcept { return accepted_.load(std::memory_order_acquire); }
   const Twist& read_from_rt() noexcept { return buffer_.read_from_rt(); }
   void reset_from_rt(const Twist& twist) noexcept {
-    (void)buffer_.read_from_rt();
-    buffer_.mutable_rt() = twist;
+    buffer_.reset_from_rt([&twist](Twist& v) { v = twist; });
   }
 
  private:

@@ -62,9 +62,15 @@ class RealtimeBuffer {
 
   // Real-time: the value in use without looking for new data.
   const T& current_rt() const noexcept { return *rt_; }
-  // Real-time: direct access to the value in use (the owner of the tick may adjust it, e.g. to
-  // hold a command at the measured position when a controller starts).
-  T& mutable_rt() noexcept { return *rt_; }
+  // Real-time, rare (a controller's starting()): drops any pending write and lets `set(T&)`
+  // change the value in use. It takes the lock, which a writer only holds for one copy of T;
+  // std::mutex::lock does not allocate.
+  template <class F>
+  void reset_from_rt(F&& set) noexcept {
+    std::lock_guard<std::mutex> lock(mutex_);
+    new_data_.store(false, std::memory_order_relaxed);
+    set(*rt_);
+  }
 
   // Non-real-time: the latest written value (pending or taken).
   T latest() const {
