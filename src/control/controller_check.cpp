@@ -27,6 +27,23 @@ void find_controllers(const Params& ns, const Params& node, const std::string& p
 
 }  // namespace
 
+std::string describe(const ControllerCheck& check) {
+  std::string out = check.path + " (" + (check.type.empty() ? std::string("no type") : check.type) + "): ";
+  if (!check.ok()) return out + "ERROR " + check.error;
+  if (check.claims.empty()) return out + "claims nothing (reads every joint)";
+  for (std::size_t c = 0; c < check.claims.size(); ++c) {
+    if (c > 0) out += "; ";
+    out += interface_short_name(check.claims[c].interface);
+    out += " [";
+    for (std::size_t j = 0; j < check.claims[c].joints.size(); ++j) {
+      if (j > 0) out += ", ";
+      out += check.claims[c].joints[j];
+    }
+    out += "]";
+  }
+  return out;
+}
+
 std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root) {
   std::vector<Found> found;
   find_controllers(root, root, "", found);

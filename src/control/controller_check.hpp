@@ -26,6 +26,10 @@ struct ControllerCheck {
   bool ok() const { return error.empty(); }
 };
 
+// One line for a report: "/cc8/x (effort_controllers/JointPositionController): effort [steering_FL]"
+// or "/cc8/x (type): ERROR <message>".
+std::string describe(const ControllerCheck& check);
+
 // One entry per controller found, in document order.
 std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root);
 // Reads the file first; a malformed or unreadable file throws ParamsError naming file and line.

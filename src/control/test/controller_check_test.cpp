@@ -59,6 +59,9 @@ scalar: 4
   EXPECT_EQ(checks[4].ns, "/robot/arm");
   EXPECT_TRUE(checks[4].ok()) << checks[4].error;
   EXPECT_EQ(checks[4].claims[0].interface, HardwareInterface::Velocity);
+
+  EXPECT_EQ(describe(checks[4]), "/robot/arm/group (velocity_controllers/JointGroupVelocityController): velocity [j1, j2]");
+  EXPECT_THAT(describe(checks[2]), HasSubstr("/robot/bad_joint (effort_controllers/JointEffortController): ERROR "));
 }
 
 TEST(ControllerCheck, MalformedFileNamesFileAndLine) {
