@@ -159,6 +159,24 @@ bool boolean_value(const Value& v, std::string_view condition);
 void add_xacro_functions(Context& ctx);
 Value load_yaml_file(Context& ctx, const std::string& path);
 
+// Helpers of the document processing (xacro_helpers.cpp).
+bool is_space_text(const std::string& s);  // non-empty and all whitespace (Python's isspace)
+bool has_non_space(const std::string& s);
+std::string trim(std::string_view s);
+bool is_identifier(const std::string& s);  // a Python identifier that is not a keyword
+
+// check_attrs: the values of the required attributes (error when missing) and of the optional
+// ones (nullptr when absent); warns about any other attribute.
+struct Attrs {
+  std::vector<const std::string*> values;
+};
+Attrs check_attrs(Context& ctx, const Node* n, std::initializer_list<const char*> required,
+                  std::initializer_list<const char*> optional);
+
+// Parses the first "<param>[:=|=][^|]<default>" of a macro's params list and consumes it from `s`.
+// `has_spec` is false for a parameter without any default spec.
+std::string parse_macro_arg(std::string_view& s, Macro::Default& def, bool& has_spec);
+
 // The document processing (xacro's eval_all).
 void process_document(Context& ctx, Node* document);
 
