@@ -140,10 +140,17 @@ TEST_P(XacroConformance, Case) {
   compare.compare_comments = true;
   EXPECT_EQ(test::compare_xml(output, expected, compare), "");
   RecordProperty("byte_identical", output == expected ? "yes" : "no");
+  // The diagnostics the original suite asserted (warnings and xacro.message output).
+  const std::string diag = diagnostics.str();
   for (auto [it, end] = meta.equal_range("stderr_contains"); it != end; ++it) {
-    EXPECT_NE(diagnostics.str().find(it->second), std::string::npos)
-        << "diagnostics should contain '" << it->second << "' but were:\n" << diagnostics.str();
+    EXPECT_NE(diag.find(it->second), std::string::npos)
+        << "diagnostics should contain '" << it->second << "' but were:\n" << diag;
   }
+  std::string exact;
+  for (auto [it, end] = meta.equal_range("stderr_exact"); it != end; ++it) exact += it->second + "\n";
+  if (!exact.empty()) EXPECT_EQ(diag, exact);
+  if (meta_value(meta, "stderr_empty") == "yes") EXPECT_EQ(diag, "");
+  if (meta_value(meta, "stderr_nonempty") == "yes") EXPECT_NE(diag, "");
 }
 
 std::string case_name(const ::testing::TestParamInfo<std::string>& info) {
