@@ -61,6 +61,18 @@ void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 
+// The counter for the other tests of this program (the counting operator new lives here, once).
+namespace mechsim::control::testing {
+void start_counting_allocations() noexcept {
+  g_allocations = 0;
+  g_counting = true;
+}
+long stop_counting_allocations() noexcept {
+  g_counting = false;
+  return g_allocations.load();
+}
+}  // namespace mechsim::control::testing
+
 namespace mechsim::control {
 namespace {
 
