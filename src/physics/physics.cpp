@@ -82,9 +82,11 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
   data_->saved_warm.resize(static_cast<std::size_t>(shared->nv));
   for (int g = 0; g < shared->ngeom; ++g) {
     const char* n = mj_id2name(shared, mjOBJ_GEOM, g);
+    // Geom names are "<link>/collision/<i>" or "<link>/visual/<i>" (link names may hold '/').
     std::string name = n != nullptr ? n : "";
-    const auto slash = name.find('/');
-    data_->geom_links.push_back(slash == std::string::npos ? (name.empty() ? "world" : name) : name.substr(0, slash));
+    auto cut = name.rfind("/collision/");
+    if (cut == std::string::npos) cut = name.rfind("/visual/");
+    data_->geom_links.push_back(cut == std::string::npos ? (name.empty() ? "world" : name) : name.substr(0, cut));
   }
   reset();
 }
