@@ -148,9 +148,15 @@ TEST_P(XacroConformance, Case) {
   }
   std::string exact;
   for (auto [it, end] = meta.equal_range("stderr_exact"); it != end; ++it) exact += it->second + "\n";
-  if (!exact.empty()) EXPECT_EQ(diag, exact);
-  if (meta_value(meta, "stderr_empty") == "yes") EXPECT_EQ(diag, "");
-  if (meta_value(meta, "stderr_nonempty") == "yes") EXPECT_NE(diag, "");
+  if (!exact.empty()) {
+    EXPECT_EQ(diag, exact);
+  }
+  if (meta_value(meta, "stderr_empty") == "yes") {
+    EXPECT_EQ(diag, "");
+  }
+  if (meta_value(meta, "stderr_nonempty") == "yes") {
+    EXPECT_NE(diag, "");
+  }
 }
 
 std::string case_name(const ::testing::TestParamInfo<std::string>& info) {
