@@ -4,6 +4,7 @@
 #include "control/joint_state_controller.hpp"
 #include "control/pid_joint_controllers.hpp"
 #include "control/trajectory_controller.hpp"
+#include "control/rover_drive_controller.hpp"
 
 namespace mechsim::control {
 
@@ -65,6 +66,8 @@ void register_builtin_controllers(ControllerRegistry& r) {
   r.add("joint_trajectory_controller/JointTrajectoryController",
         [] { return std::make_unique<JointTrajectoryController>(); });
   r.add("robot_mechanism_controllers/JointTrajectoryActionController", trajectory(HI::Effort, ControllerFlavour::Pr2));
+
+  r.add(kRoverDriveControllerType, [] { return std::make_unique<RoverDriveController>(); });
 }
 
 }  // namespace mechsim::control

@@ -1,0 +1,232 @@
+#include "control/rover_drive_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "control/angles.hpp"
+
+namespace mechsim::control {
+namespace {
+
+double clamp_abs(double v, double limit) noexcept { return std::fmin(std::fmax(v, -limit), limit); }
+
+// Moves `from` towards `to` by at most `step`.
+double step_towards(double from, double to, double step) noexcept { return from + clamp_abs(to - from, step); }
+
+}  // namespace
+
+bool RoverDriveController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
+  // Claim first, so that an unknown joint is reported as such (naming its parameter) before
+  // any geometry parameter that would mention it.
+  const auto steering = read_rover_joint_list(params, "steering_joints", 0);
+  const auto wheels = read_rover_joint_list(params, "wheel_joints", 2);
+  const auto claim = [&](const std::vector<std::string>& names, const char* key, std::vector<JointHandle>& out) {
+    const std::string path = join_param_path(params.path(), key);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      out.push_back(hardware.claim_joint(names[i], HardwareInterface::Effort, path + "[" + std::to_string(i) + "]"));
+    }
+  };
+  claim(steering, "steering_joints", steering_);
+  claim(wheels, "wheel_joints", wheels_);
+  config_ = read_rover_drive_config(params, hardware);
+
+  for (std::size_t i = 0; i < steering_.size() + wheels_.size(); ++i) {
+    pids_.push_back(std::make_unique<Pid>());
+    pids_.back()->init(params, i < steering_.size() ? "steering_pid" : "wheel_pid");
+  }
+  std::vector<std::string> names = steering;
+  names.insert(names.end(), wheels.begin(), wheels.end());
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    gains_.push_back(std::make_unique<PidGainsPort>("gains/" + names[i], pids_[i].get()));
+  }
+
+  const std::size_t ns = steering_.size(), nw = wheels_.size();
+  measured_headings_.assign(ns, 0.0);
+  target_headings_.assign(ns, 0.0);
+  setpoint_headings_.assign(ns, 0.0);
+  rolling_speeds_.assign(nw, 0.0);
+  wheel_setpoints_.assign(nw, 0.0);
+  measured_speeds_.assign(nw, 0.0);
+  efforts_.assign(ns + nw, 0.0);
+
+  JointGroupControllerState prototype;
+  prototype.joint_names = names;
+  prototype.joints.resize(names.size());
+  state_.init(prototype);
+  OdometrySnapshot odom;
+  odom.frame_id = config_.odom_frame_id;
+  odom.child_frame_id = config_.base_frame_id;
+  for (std::size_t i = 0; i < 6; ++i) {
+    odom.pose_covariance[i * 7] = config_.pose_covariance_diagonal[i];
+    odom.twist_covariance[i * 7] = config_.twist_covariance_diagonal[i];
+  }
+  odom_.init(odom);
+  status_.init(RoverDriveStatus{});
+  return true;
+}
+
+std::vector<Port*> RoverDriveController::ports() {
+  std::vector<Port*> out{&command_, &mode_, &odom_, &state_, &status_};
+  for (auto& g : gains_) out.push_back(g.get());
+  return out;
+}
+
+void RoverDriveController::starting(double time) {
+  const RoverKinematics& k = config_.kinematics;
+  for (std::size_t s = 0; s < steering_.size(); ++s) {
+    measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * steering_[s].position());
+    target_headings_[s] = measured_headings_[s];
+    setpoint_headings_[s] = measured_headings_[s];
+  }
+  command_.reset_from_rt(Twist{});
+  last_command_seq_ = command_.accepted();
+  last_command_time_ = time;
+  timed_out_ = false;
+  applied_ = {};
+  for (auto& pid : pids_) pid->reset();
+}
+
+PlanarTwist RoverDriveController::limit_command(const PlanarTwist& target, double period) const noexcept {
+  const double dv = config_.max_linear_acceleration * period;
+  const double dw = config_.max_angular_acceleration * period;
+  return {step_towards(applied_.vx, clamp_abs(target.vx, config_.max_linear_velocity), dv),
+          step_towards(applied_.vy, clamp_abs(target.vy, config_.max_linear_velocity), dv),
+          step_towards(applied_.wz, clamp_abs(target.wz, config_.max_angular_velocity), dw)};
+}
+
+UpdateStatus RoverDriveController::update(double time, double period) {
+  if (!(period > 0.0)) return UpdateStatus::Error("rover drive: non-positive period");
+  const RoverKinematics& k = config_.kinematics;
+  const std::size_t ns = steering_.size(), nw = wheels_.size();
+
+  // 1-2. The command, its timeout and limits.
+  command_value_ = command_.read_from_rt();
+  const Twist& command = command_value_;
+  const std::uint64_t seq = command_.accepted();
+  if (seq != last_command_seq_) {
+    last_command_seq_ = seq;
+    last_command_time_ = time;
+  }
+  timed_out_ = config_.cmd_vel_timeout > 0.0 && time - last_command_time_ > config_.cmd_vel_timeout;
+  const PlanarTwist target = timed_out_ ? PlanarTwist{} : PlanarTwist{command.linear.x, command.linear.y, command.angular.z};
+  applied_ = limit_command(target, period);
+
+  // 3-4. Mode and inverse kinematics.
+  requested_mode_ = mode_.read_from_rt();
+  choice_ = select_drive_mode(k, requested_mode_, applied_);
+  if (choice_.unsupported) ++unsupported_count_;
+  for (std::size_t s = 0; s < ns; ++s) {
+    measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * steering_[s].position());
+  }
+  inverse_kinematics(k, choice_.twist, target_headings_, measured_headings_, target_headings_, rolling_speeds_);
+
+  // 5-6. Steering rate limit; wheels wait for the steering.
+  const double max_step = config_.max_steering_rate * period;
+  max_steering_error_ = 0.0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    // Plain difference: both lie within +-max_steering_angle, so the path between them does too.
+    setpoint_headings_[s] = step_towards(setpoint_headings_[s], target_headings_[s], max_step);
+    max_steering_error_ =
+        std::fmax(max_steering_error_, std::abs(shortest_angular_distance(measured_headings_[s], target_headings_[s])));
+  }
+  if (max_steering_error_ <= config_.steering_tolerance) {
+    alignment_scale_ = 1.0;
+  } else if (max_steering_error_ >= config_.steering_stop_error) {
+    alignment_scale_ = 0.0;
+  } else {
+    alignment_scale_ = (config_.steering_stop_error - max_steering_error_) /
+                       (config_.steering_stop_error - config_.steering_tolerance);
+  }
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < nw; ++i) {
+    wheel_setpoints_[i] = k.wheels[i].axis_sign * rolling_speeds_[i] / k.wheel_radius * alignment_scale_;
+    fastest = std::fmax(fastest, std::abs(wheel_setpoints_[i]));
+  }
+  wheel_speed_scale_ = fastest > config_.max_wheel_speed ? config_.max_wheel_speed / fastest : 1.0;
+  for (double& w : wheel_setpoints_) w *= wheel_speed_scale_;
+
+  // 7. PIDs.
+  for (std::size_t s = 0; s < ns; ++s) {
+    const double set_point = k.steering_axis_signs[s] * setpoint_headings_[s];
+    efforts_[s] = pids_[s]->compute_command(shortest_angular_distance(steering_[s].position(), set_point), period);
+    steering_[s].set_command(efforts_[s]);
+  }
+  for (std::size_t i = 0; i < nw; ++i) {
+    efforts_[ns + i] = pids_[ns + i]->compute_command(wheel_setpoints_[i] - wheels_[i].velocity(), period);
+    wheels_[i].set_command(efforts_[ns + i]);
+  }
+
+  // 8. Odometry, then the snapshots.
+  update_odometry(time, period);
+  publish(time, period);
+  return UpdateStatus::Ok();
+}
+
+void RoverDriveController::update_odometry(double /*time*/, double period) noexcept {
+  const RoverKinematics& k = config_.kinematics;
+  if (reset_odometry_.exchange(false, std::memory_order_acq_rel)) pose_ = {};
+  for (std::size_t i = 0; i < wheels_.size(); ++i) {
+    measured_speeds_[i] = k.wheels[i].axis_sign * wheels_[i].velocity() * k.wheel_radius;
+  }
+  PlanarTwist twist;
+  // In crab the fixed wheels slide sideways by design; their no-side-slip rows would be wrong.
+  const double fixed_lateral_weight = choice_.mode == DriveMode::Crab && !steering_.empty() ? 0.0 : 1.0;
+  if (estimate_twist(k, measured_headings_, measured_speeds_, twist, &odom_residual_, fixed_lateral_weight)) {
+    odom_twist_ = twist;
+    odom_valid_ = true;
+    pose_ = integrate_pose(pose_, odom_twist_, period);
+  }
+}
+
+void RoverDriveController::publish(double time, double period) noexcept {
+  const RoverKinematics& k = config_.kinematics;
+  const std::size_t ns = steering_.size();
+  state_.publish_from_rt([&](JointGroupControllerState& s) {
+    s.stamp = time;
+    for (std::size_t j = 0; j < s.joints.size(); ++j) {
+      JointControllerState& js = s.joints[j];
+      js.stamp = time;
+      js.time_step = period;
+      js.command = efforts_[j];
+      js.gains = pids_[j]->rt_gains();
+      if (j < ns) {
+        const JointHandle& h = steering_[j];
+        js.set_point = k.steering_axis_signs[j] * setpoint_headings_[j];
+        js.process_value = h.position();
+        js.process_value_dot = h.velocity();
+        js.error = shortest_angular_distance(h.position(), js.set_point);
+      } else {
+        const JointHandle& h = wheels_[j - ns];
+        js.set_point = wheel_setpoints_[j - ns];
+        js.process_value = h.velocity();
+        js.process_value_dot = 0.0;
+        js.error = js.set_point - js.process_value;
+      }
+    }
+  });
+  odom_.publish_from_rt([&](OdometrySnapshot& o) {
+    o.stamp = time;
+    o.x = pose_.x;
+    o.y = pose_.y;
+    o.yaw = pose_.yaw;
+    o.linear = {odom_twist_.vx, odom_twist_.vy, 0.0};
+    o.angular = {0.0, 0.0, odom_twist_.wz};
+    o.residual = odom_residual_;
+    o.valid = odom_valid_;
+  });
+  status_.publish_from_rt([&](RoverDriveStatus& st) {
+    st.stamp = time;
+    st.requested_mode = requested_mode_;
+    st.active_mode = choice_.mode;
+    st.command = command_value_;
+    st.applied = choice_.twist;
+    st.timed_out = timed_out_;
+    st.unsupported = choice_.unsupported;
+    st.unsupported_count = unsupported_count_;
+    st.alignment_scale = alignment_scale_;
+    st.max_steering_error = max_steering_error_;
+    st.wheel_speed_scale = wheel_speed_scale_;
+  });
+}
+
+}  // namespace mechsim::control

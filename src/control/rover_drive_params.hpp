@@ -1,0 +1,61 @@
+#pragma once
+// Configuration of the rover drive controller (control/rover_drive_controller.hpp): reading
+// its parameters, and filling its geometry parameters from a robot description when the YAML
+// leaves them out. Configuration time only: allocates and throws ControllerConfigError or
+// ParamsError, each naming the parameter path.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "control/hardware.hpp"
+#include "control/params.hpp"
+#include "control/rover_drive_kinematics.hpp"
+#include "description/robot_model.hpp"
+
+namespace mechsim::control {
+
+inline constexpr const char* kRoverDriveControllerType = "mechsim/RoverDriveController";
+
+struct RoverDriveConfig {
+  std::vector<std::string> steering_joints;
+  std::vector<std::string> wheel_joints;
+  RoverKinematics kinematics;  // finished (finish_rover_kinematics)
+
+  double max_steering_rate = 0.0;         // rad/s of heading, > 0 (inf: unlimited)
+  double max_wheel_speed = 0.0;           // rad/s of wheel joint, > 0 (inf: unlimited)
+  double max_linear_velocity = 0.0;       // m/s, per component of the command (inf: unlimited)
+  double max_angular_velocity = 0.0;      // rad/s (inf: unlimited)
+  double max_linear_acceleration = 0.0;   // m/s^2, per component (inf: unlimited)
+  double max_angular_acceleration = 0.0;  // rad/s^2 (inf: unlimited)
+  double cmd_vel_timeout = 0.5;           // s; <= 0 disables the timeout
+  double steering_tolerance = 0.05;       // rad: wheels at full speed within it
+  double steering_stop_error = 0.35;      // rad: wheels stopped beyond it (linear in between)
+  std::string odom_frame_id = "odom";
+  std::string base_frame_id = "base_link";
+  std::array<double, 6> pose_covariance_diagonal{};   // x, y, z, roll, pitch, yaw
+  std::array<double, 6> twist_covariance_diagonal{};  // vx, vy, vz, wx, wy, wz
+};
+
+// A list of joint names at `key` (steering_joints, wheel_joints): at least `min_count`, none
+// empty or repeated.
+std::vector<std::string> read_rover_joint_list(const Params& params, const char* key, std::size_t min_count);
+
+// Reads every parameter (see the list in rover_drive_controller.hpp). `hardware` gives the
+// joints' URDF velocity limits, the defaults of max_steering_rate and max_wheel_speed. Throws
+// ControllerConfigError / ParamsError naming the parameter path.
+RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardware& hardware);
+
+// Sets the geometry parameters the controller at `params` lacks (wheel_radius,
+// wheel_positions, wheel_axis_signs, wheel_steering, steering_positions, steering_axis_signs)
+// from `model` (description::rover_geometry, base link = the base_frame_id parameter, default
+// base_link). Values already present are kept. Returns the number of parameters set. Throws
+// ControllerConfigError when the joints parameters are missing or the description does not fit
+// (the message names the parameter path and the joint).
+int fill_rover_drive_geometry(const Params& params, const description::RobotModel& model);
+
+// Calls fill_rover_drive_geometry for every controller under `ns` (a map of controllers, e.g.
+// /cc8) whose `type` is kRoverDriveControllerType. Returns the number of controllers filled.
+int fill_rover_drive_geometry_all(const Params& ns, const description::RobotModel& model);
+
+}  // namespace mechsim::control
