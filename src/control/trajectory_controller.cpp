@@ -126,17 +126,29 @@ void JointTrajectoryController::starting(double time) {
   for (auto& pid : pids_) pid->reset();
   have_previous_velocity_ = false;
   last_state_publish_ = last_feedback_publish_ = -1e300;
-  // Anything posted while stopped is dropped, as ros_control ignores commands then.
+  // A request posted just before the last stop is dropped: the controller starts holding.
   if (const TrajectoryRequest* r = channel_->take_from_rt()) {
     TrajectoryEvent e;
     e.kind = TrajectoryEvent::Kind::Taken;
     e.sequence = r->sequence;
+    e.goal_id = r->goal_id;
+    e.time = time;
     channel_->report_from_rt(e);
+    if (r->goal_id != 0) {
+      e.kind = TrajectoryEvent::Kind::Finished;
+      e.status = GoalStatus::Rejected;
+      e.code = TrajectoryResultCode::InvalidGoal;
+      e.reason = "the controller was stopped before the goal started";
+      channel_->report_from_rt(e);
+    }
   }
+  active_goal_ = 0;
   hold_current(time);
+  channel_->set_running_from_rt(true);
 }
 
 void JointTrajectoryController::stopping(double time) {
+  channel_->set_running_from_rt(false);
   if (active_goal_ != 0) finish_goal(GoalStatus::Preempted, TrajectoryResultCode::Successful, "the controller stopped", time);
 }
 

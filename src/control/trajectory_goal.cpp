@@ -53,6 +53,10 @@ TrajectoryResultCode TrajectoryChannel::validate(const JointTrajectory& t, const
                                                  std::string& error) {
   using Code = TrajectoryResultCode;
   const auto& joints = config_.joints;
+  if (!running_.load(std::memory_order_acquire)) {
+    error = "the controller is not running; it takes no trajectories";
+    return Code::InvalidGoal;
+  }
   if (!std::isfinite(t.start_time) || t.start_time < 0.0) {
     error = "header.stamp (start_time) " + num(t.start_time) + " is not a finite time >= 0";
     return Code::InvalidGoal;

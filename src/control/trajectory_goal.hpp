@@ -107,6 +107,9 @@ class TrajectoryChannel {
   void set_time_from_rt(double time) noexcept { time_.store(time, std::memory_order_relaxed); }
   void report_from_rt(const TrajectoryEvent& event) noexcept;
   bool next_cancel_from_rt(std::uint64_t& id) noexcept { return cancels_.pop(id); }
+  // Real-time: starting()/stopping(). Goals and commands are refused while not running, as
+  // ros_control refuses them ("Controller is not running").
+  void set_running_from_rt(bool running) noexcept { running_.store(running, std::memory_order_release); }
 
  private:
   struct Record {
@@ -130,6 +133,7 @@ class TrajectoryChannel {
   std::map<std::uint64_t, Record> records_;
   std::uint64_t taken_sequence_ = 0;  // real-time side
   std::atomic<double> time_{0.0};
+  std::atomic<bool> running_{false};
   SpscRing<TrajectoryEvent, 128> events_;
   SpscRing<std::uint64_t, 64> cancels_;
   std::atomic<std::uint64_t> event_overflows_{0};

@@ -5,8 +5,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <numbers>
+#include <thread>
 
 #include "control/controller_manager.hpp"
 #include "control/test/test_robot.hpp"
@@ -308,6 +311,74 @@ TEST(JointTrajectoryController, StoppingTheControllerPreemptsItsGoal) {
   ASSERT_TRUE(rig.manager->switch_controllers({}, {"c"}, SwitchStrictness::Strict).ok);
   rig.tick(1);
   EXPECT_EQ(rig.goals().status(s.id), GoalStatus::Preempted);
+}
+
+TEST(JointTrajectoryController, StopTrajectoryDurationBringsTheJointsToRestSmoothly) {
+  std::string yaml = kTwoJoints;
+  yaml += "  stop_trajectory_duration: 0.5\n";
+  Rig rig(2, yaml);
+  rig.start();
+  const GoalSubmission s = rig.goals().submit(move({"j0", "j1"}, {1.0, 1.0}, 2.0));
+  rig.tick(1000);
+  const auto before = rig.state();
+  ASSERT_GT(before.actual.velocities[0], 0.3);
+  ASSERT_TRUE(rig.goals().cancel(s.id));
+  rig.tick(1);
+  const auto at = rig.state();
+  // Starts from the measured state (no jump in position or velocity)...
+  EXPECT_NEAR(at.desired.positions[0], before.actual.positions[0], 2e-3);
+  EXPECT_NEAR(at.desired.velocities[0], before.actual.velocities[0], 2e-2);
+  rig.tick(600);
+  // ... and is at rest after the stop duration, about v * T / 2 further on.
+  const auto after = rig.state();
+  EXPECT_DOUBLE_EQ(after.desired.velocities[0], 0.0);
+  EXPECT_NEAR(after.desired.positions[0], before.actual.positions[0] + 0.5 * before.actual.velocities[0] * 0.5, 0.01);
+  EXPECT_EQ(rig.goals().status(s.id), GoalStatus::Preempted);
+}
+
+TEST(JointTrajectoryController, RefusesGoalsWhileNotRunning) {
+  Rig rig(2, kTwoJoints);
+  ASSERT_TRUE(rig.manager->load_controller("c").ok);
+  const GoalSubmission s = rig.goals().submit(move({"j0", "j1"}, {1.0, 1.0}, 2.0));
+  EXPECT_FALSE(s.accepted);
+  EXPECT_THAT(s.result.error_string, HasSubstr("not running"));
+  ASSERT_TRUE(rig.manager->switch_controllers({"c"}, {}, SwitchStrictness::Strict).ok);
+  rig.tick(1);
+  EXPECT_TRUE(rig.goals().submit(move({"j0", "j1"}, {1.0, 1.0}, 2.0)).accepted);
+}
+
+TEST(JointTrajectoryController, GoalsFromAnotherThreadWhileTicking) {
+  Rig rig(2, kTwoJoints);
+  rig.start();
+  std::vector<std::uint64_t> ids;
+  std::atomic<bool> done{false};
+  std::thread client([&] {
+    for (int k = 0; k < 200; ++k) {
+      const GoalSubmission s = rig.goals().submit(move({"j0", "j1"}, {0.001 * k, -0.001 * k}, 0.05));
+      if (s.accepted) ids.push_back(s.id);
+      if (k % 3 == 0) (void)rig.goals().cancel(s.id);
+      (void)rig.goals().feedback();
+      (void)rig.goals().status(s.id);
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    done = true;
+  });
+  while (!done) rig.tick(1);
+  client.join();
+  rig.tick(1000);
+  ASSERT_EQ(ids.size(), 200u);
+  int succeeded = 0;
+  for (std::uint64_t id : ids) {
+    const auto st = rig.goals().status(id);
+    ASSERT_TRUE(st.has_value());
+    EXPECT_TRUE(goal_finished(*st)) << id << ": " << goal_status_name(*st);
+    succeeded += *st == GoalStatus::Succeeded;
+  }
+  EXPECT_EQ(rig.goals().status(ids.back()).value_or(GoalStatus::Pending) == GoalStatus::Succeeded ||
+                rig.goals().status(ids.back()).value_or(GoalStatus::Pending) == GoalStatus::Preempted,
+            true);
+  EXPECT_NEAR(rig.state().desired.positions[0], 0.199, 1e-9);  // the last goal's end (not canceled: 199 % 3 != 0)
+  EXPECT_GE(succeeded, 1);
 }
 
 TEST(JointTrajectoryController, ConfigurationErrorsNameTheParameter) {

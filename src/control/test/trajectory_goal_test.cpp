@@ -34,6 +34,7 @@ FollowJointTrajectoryGoal valid_goal() {
 struct GoalPortTest : ::testing::Test {
   TrajectoryChannel channel{config()};
   TrajectoryGoalPort port{"follow_joint_trajectory", &channel};
+  GoalPortTest() { channel.set_running_from_rt(true); }
 
   void expect_rejected(const FollowJointTrajectoryGoal& goal, Code code, const std::string& text) {
     const GoalSubmission s = port.submit(goal);
@@ -64,6 +65,12 @@ TEST_F(GoalPortTest, AValidGoalIsPendingUntilTheTickTakesIt) {
   EXPECT_EQ(r->point_order[1], SplineOrder::Cubic);
   EXPECT_EQ(channel.take_from_rt(), nullptr);  // taken once
   EXPECT_FALSE(port.status(12345).has_value());
+}
+
+TEST_F(GoalPortTest, NothingIsTakenWhileTheControllerIsNotRunning) {
+  channel.set_running_from_rt(false);
+  expect_rejected(valid_goal(), Code::InvalidGoal, "the controller is not running");
+  EXPECT_EQ(channel.take_from_rt(), nullptr);
 }
 
 TEST_F(GoalPortTest, InvalidJoints) {
@@ -142,6 +149,7 @@ TEST_F(GoalPortTest, GoalTolerancesResolveAgainstTheDefaults) {
   c.default_tolerances.goal[1].position = 0.05;
   c.default_tolerances.goal_time = 0.5;
   TrajectoryChannel ch(c);
+  ch.set_running_from_rt(true);
   TrajectoryGoalPort p("g", &ch);
   auto g = valid_goal();
   g.path_tolerance = {{"a", 0.0, 0.3, 0.0}, {"b", 0.1, 0.0, 0.0}};
@@ -181,6 +189,7 @@ TEST_F(GoalPortTest, AGoalOverwrittenBeforeTheTickIsPreemptedUnrun) {
 
 TEST(TrajectoryCommandPort, RejectsWhatTheGoalPortRejectsAndCountsIt) {
   TrajectoryChannel channel(config(true));
+  channel.set_running_from_rt(true);
   TrajectoryCommandPort port("command", &channel);
   JointTrajectory t;
   t.joint_names = {"a"};
