@@ -27,7 +27,7 @@ struct GridBox {
   std::size_t r0, r1, c0, c1;  // inclusive sample ranges
 };
 
-// Samples within `reach` (m) of (x, y), clipped to the grid.
+// Samples covering the world rectangle [x_lo, x_hi] x [y_lo, y_hi] (m), clipped to the grid.
 GridBox box_around(const Heightmap& map, double x_lo, double x_hi, double y_lo, double y_hi) {
   auto col = [&](double x) {
     return std::clamp((x + 0.5 * map.size_x) / map.cell_x(), 0.0, static_cast<double>(map.cols - 1));
@@ -218,6 +218,7 @@ MarsYard generate_mars_yard(std::mt19937_64& rng, const MarsYardParams& p) {
       landform = std::clamp(landform * std::clamp(std::sqrt(ratio), 0.8, 1.25), 0.4, 2.5);
     }
   }
+  compose(layers, roughness, landform, map.heights);  // the heights match the factors kept
   yard.roughness_scale = roughness;
   yard.landform_scale = landform;
 

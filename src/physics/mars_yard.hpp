@@ -11,10 +11,12 @@
 // deterministic: the same seed (or the same RNG state) gives bit-identical heights on one
 // platform; nothing global is used.
 //
-// How the slope targets are met: the features are laid out from the RNG, then two scales are
-// calibrated by bisection on the usable area's statistics — the amplitude of the fractal
-// ground roughness (sets the median slope) and the depth/height of the large landforms (sets
-// the steep share) — so every seed lands inside the bands, not only the default one.
+// How the slope targets are met: the features are laid out from the RNG at nominal sizes, then
+// two factors are calibrated on the usable area's statistics by alternating proportional
+// corrections — the amplitude of the fractal ground roughness (drives the median slope) and
+// the depth/height of the canyon, river, craters and dunes (drives the steep share) — so every
+// seed lands inside the bands, not only the default one. Mounds, the plateau and rocks keep
+// their nominal sizes and so set the relief (about 3-4 m).
 
 #include <array>
 #include <cstdint>
@@ -35,8 +37,8 @@ struct MarsYardParams {
   // Grid spacing (m). 5 cm resolves the small rocks (8-18 cm) with 2-4 samples and keeps the
   // grid at 811 x 541 = 0.44 M samples (1.8 MB of floats), which a MuJoCo hfield handles.
   double cell = 0.05;
-  double target_median_deg = 11.5;  // calibration targets (deg, share of area)
-  double target_steep_share = 0.105;
+  double target_median_deg = 11.5;    // calibration target: median slope (deg)
+  double target_steep_share = 0.105;  // calibration target: share of area steeper than 30 deg
   int craters = 8;
   int mounds = 3;
   int large_rocks = 14;   // 0.5-0.9 m long
