@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "control/controller_manager.hpp"
 #include "control/test/test_robot.hpp"
 #include "description/urdf_parser.hpp"
 #include "mechanism/build_mechanism.hpp"
@@ -107,6 +108,35 @@ TEST(ControllerCheck, AllCc8ControllersLoadAgainstTheCc8Mechanism) {
   EXPECT_EQ(position_controllers, 10);
   EXPECT_EQ(checks[0].name, "joint_state_controller");
   EXPECT_TRUE(checks[0].claims.empty());
+}
+
+TEST(ControllerCheck, Cc8ControllersAllStartTogetherUnderStrictSwitching) {
+  const std::filesystem::path shared = MECHSIM_SHARED_DIR;
+  const auto urdf = shared / "robots/reference/cc8.urdf";
+  const auto yaml = shared / "robots/cc8_description/config/controller.yaml";
+  if (!std::filesystem::exists(urdf) || !std::filesystem::exists(yaml)) {
+    GTEST_SKIP() << "shared data not found at " << shared;
+  }
+  testing::TestRobot robot;
+  robot.model = mechanism::build_mechanism(description::parse_urdf_file(urdf.string(), description::UrdfOptions{}));
+  robot.state = mechanism::make_state(robot.model);
+  ControllerManager manager(robot.model, robot.state, Params::from_yaml_file(yaml.string()).child("cc8"));
+  std::vector<std::string> names = manager.params().keys();
+  ASSERT_EQ(names.size(), 11u);
+  for (const auto& n : names) ASSERT_TRUE(manager.load_controller(n).ok) << n;
+  auto s = manager.switch_controllers(names, {}, SwitchStrictness::Strict);
+  ASSERT_TRUE(s.ok) << s.error;
+  auto* steering = manager.controller("steering_FL_position_controller")->port_as<ScalarCommandPort>("command");
+  double time = testing::run(manager, robot, 0.0, 1);
+  ASSERT_TRUE(steering->write(0.3));
+  time = testing::run(manager, robot, time, 99);
+  for (const auto& info : manager.list_controllers()) {
+    EXPECT_EQ(info.state, ControllerLifecycle::Running) << info.name << " " << info.failure;
+  }
+  EXPECT_GT(robot.joint("steering_FL").position, 0.0);  // pushed towards +0.3 rad
+  auto* js = manager.controller("joint_state_controller")->port_as<StatePort<JointStateSnapshot>>("joint_states");
+  EXPECT_EQ(js->sequence(), 4u);  // 0.1 s at 50 Hz, the first one 20 ms after starting
+  EXPECT_EQ(js->read().names.size(), robot.model.joints.size());
 }
 
 }  // namespace
