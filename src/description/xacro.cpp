@@ -47,6 +47,8 @@ std::string expand(std::string_view text, const std::string& name, const XacroOp
     if (!f.where.empty()) msg += "\n  at " + f.where;
     for (const auto& t : f.trace) msg += "\n  " + t;
     throw XacroError(msg, f.kind);
+  } catch (const std::exception& e) {  // file-system and library errors outside expressions
+    throw XacroError(std::string(e.what()) + "\n  in " + name);
   }
 }
 

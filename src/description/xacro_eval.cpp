@@ -169,6 +169,8 @@ Value Context::eval_expression(std::string_view inner, Symbols& symbols) {
   } catch (Failure& f) {
     f.message += suffix;
     throw;
+  } catch (const std::exception& e) {  // e.g. out-of-range numbers in library conversions
+    fail(e.what() + suffix);
   }
 }
 
