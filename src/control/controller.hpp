@@ -39,7 +39,8 @@ class Controller {
   virtual UpdateStatus update(double time, double period) = 0;
   virtual void stopping(double /*time*/) {}
 
-  // The controller's ports, valid from a successful init() until destruction.
+  // The controller's ports, valid from a successful init() until destruction. Non-real-time
+  // (builds a vector): look ports up once, then use them from any thread.
   virtual std::vector<Port*> ports() { return {}; }
   Port* port(const std::string& name);  // null when absent
   template <class P>
