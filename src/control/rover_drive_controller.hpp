@@ -38,7 +38,8 @@
 //   wheel_steering             {wheel joint: steering joint}  for each steered wheel
 //   steering_positions         {steering joint: [x, y(, z)]}  a point of the steering axis [m]
 //   steering_axis_signs        {steering joint: +1|-1}  +1 for an axis up (+z), -1 down (the CC8)
-//   max_steering_angle         [rad]   feasible heading range +-this (default pi/2)
+//   max_steering_angle         [rad]   feasible heading range +-this (default pi/2, or less where
+//                                      revolute steering joints have tighter URDF limits)
 //   Limits and behaviour:
 //   max_steering_rate          [rad/s] default: the steering joints' URDF velocity limit, else none
 //   max_wheel_speed            [rad/s] wheel joint speed; default: the wheels' URDF velocity limit, else none

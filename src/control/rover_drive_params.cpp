@@ -138,7 +138,17 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
   }
   k.wheel_radius = positive(params, "wheel_radius", 0.0);
   if (!std::isfinite(k.wheel_radius)) throw ControllerConfigError("parameter " + path_of(params, "wheel_radius") + " is not finite");
-  k.max_steering_angle = positive(params, "max_steering_angle", std::numbers::pi / 2.0);
+  // Default: +-90 deg, narrowed to the steering joints' URDF limits where they have them.
+  double feasible = std::numbers::pi / 2.0;
+  for (const std::string& s : c.steering_joints) {
+    const int index = hardware.find_joint(s);
+    if (index < 0) continue;
+    const auto& info = hardware.model().joints[static_cast<std::size_t>(index)];
+    if (info.continuous || !info.limits || info.limits->lower >= info.limits->upper) continue;
+    const double both_ways = std::fmin(std::abs(info.limits->lower), std::abs(info.limits->upper));
+    if (both_ways > 0.0) feasible = std::fmin(feasible, both_ways);
+  }
+  k.max_steering_angle = positive(params, "max_steering_angle", feasible);
   if (k.max_steering_angle > std::numbers::pi) {
     throw ControllerConfigError("parameter " + path_of(params, "max_steering_angle") + " must be <= pi");
   }

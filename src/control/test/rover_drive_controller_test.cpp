@@ -16,6 +16,12 @@
 #include "control/test/rover_drive_test_util.hpp"
 
 namespace mechsim::control {
+namespace testing {
+// The counting operator new of this test program (allocation_test.cpp).
+void start_counting_allocations() noexcept;
+long stop_counting_allocations() noexcept;
+}  // namespace testing
+
 namespace {
 
 using ::testing::HasSubstr;
@@ -341,6 +347,52 @@ TEST(RoverDriveController, LoadsFromYamlAndClaimsItsTenJoints) {
   testing::run(*rig.manager, *rig.robot, time, 200);
   EXPECT_EQ(rig.manager->controller_info("rover")->state, ControllerLifecycle::Running);
   EXPECT_NEAR(c->state_port().read().joints[4].set_point, 1.0, 1e-12);
+}
+
+TEST(RoverDriveController, UpdateAllocatesNothing) {
+  ManagedRover rig(testing::test_rover_yaml("max_linear_acceleration: 2.0\nmax_angular_acceleration: 2.0"));
+  ASSERT_TRUE(rig.manager->load_controller("rover").ok);
+  ASSERT_TRUE(rig.manager->switch_controllers({"rover"}, {}, SwitchStrictness::Strict).ok);
+  auto* c = dynamic_cast<RoverDriveController*>(rig.manager->controller("rover"));
+  ASSERT_NE(c, nullptr);
+  double time = testing::run(*rig.manager, *rig.robot, 0.0, 1);
+  long allocations = 0;
+  for (const Twist& t : {Twist{{0.3, 0.0, 0.0}, {0.0, 0.0, 0.2}}, Twist{{0.2, 0.2, 0.0}, {}},
+                         Twist{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.5}}, Twist{{0.1, 0.3, 0.0}, {0.0, 0.0, 0.4}}}) {
+    ASSERT_TRUE(c->command_port().write(t));
+    ASSERT_TRUE(c->mode_port().write(DriveMode::Auto));
+    testing::start_counting_allocations();
+    time = testing::run(*rig.manager, *rig.robot, time, 300);
+    allocations += testing::stop_counting_allocations();
+  }
+  c->reset_odometry();
+  testing::start_counting_allocations();
+  time = testing::run(*rig.manager, *rig.robot, time, 700);  // through the command timeout
+  allocations += testing::stop_counting_allocations();
+  EXPECT_EQ(allocations, 0);
+  EXPECT_TRUE(c->status_port().read().timed_out);
+  EXPECT_EQ(rig.manager->controller_info("rover")->state, ControllerLifecycle::Running);
+}
+
+TEST(RoverDriveController, RevoluteSteeringLimitsNarrowTheHeadingRange) {
+  std::vector<testing::JointSpec> joints;
+  for (const char* s : {"steering_FL", "steering_FR", "steering_RL", "steering_RR"}) {
+    joints.push_back({s, description::JointType::Revolute, description::JointLimits{-0.6, 0.5, 100.0, 3.0}});
+  }
+  for (const char* w : {"wheel_joint_FL", "wheel_joint_FR", "wheel_joint_ML", "wheel_joint_MR", "wheel_joint_RL",
+                        "wheel_joint_RR"}) {
+    joints.push_back({w, description::JointType::Continuous, description::JointLimits{0.0, 0.0, 100.0, 20.0}});
+  }
+  auto robot = testing::make_robot(joints);
+  ControllerManager manager(robot->model, robot->state, Params::from_yaml_string(testing::test_rover_yaml()));
+  ASSERT_TRUE(manager.load_controller("rover").ok);
+  auto* c = dynamic_cast<RoverDriveController*>(manager.controller("rover"));
+  EXPECT_DOUBLE_EQ(c->config().kinematics.max_steering_angle, 0.5);
+  ASSERT_TRUE(manager.switch_controllers({"rover"}, {}, SwitchStrictness::Strict).ok);
+  double time = testing::run(manager, *robot, 0.0, 1);
+  ASSERT_TRUE(c->command_port().write(Twist{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.5}}));  // wants 0.9 rad
+  testing::run(manager, *robot, time, 300);
+  for (std::size_t s = 0; s < 4; ++s) EXPECT_NEAR(std::abs(c->state_port().read().joints[s].set_point), 0.5, 1e-12);
 }
 
 TEST(RoverDriveController, UnknownJointNamesTheParameter) {
