@@ -112,6 +112,16 @@ TEST(XacroFeatures, IncludeWithNamespaceAndYaml) {
             "<r>\n  <p n=\"3.0\" w=\"0.5\"/>\n  <y n=\"b\" r=\"0.25\"/>\n</r>\n");
 }
 
+TEST(XacroFeatures, DirnameAndGlobIncludes) {
+  test::TempDir dir;
+  dir.write("parts/a1.xml", "<a><one/></a>");
+  dir.write("parts/a2.xml", "<a><two d=\"$(dirname)\"/></a>");
+  const auto main = dir.write("main.xacro", doc(R"X(<here d="$(dirname)"/><xacro:include filename="parts/a?.xml"/>)X"));
+  const std::string d = dir.path().string();
+  EXPECT_EQ(test::strip_banner(expand_xacro_file(main.string(), {})),
+            "<r>\n  <here d=\"" + d + "\"/>\n  <one/>\n  <two d=\"" + d + "/parts\"/>\n</r>\n");
+}
+
 TEST(XacroFeatures, BannerAndDeclaration) {
   const std::string out = expand_xacro_string("<a/>", "robot.xacro", {});
   EXPECT_EQ(out,
