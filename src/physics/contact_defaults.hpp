@@ -22,8 +22,12 @@ struct ContactDefaults {
   std::array<double, 5> solimp{0.9, 0.95, 0.001, 0.5, 2.0};
   // Distance (m) at which contacts become active; 0 = only on penetration.
   double margin = 0.0;
-  // Contact dimensionality: 3 = normal + 2D sliding friction (Gazebo ODE's pyramid model).
+  // Contact dimensionality: 3 = normal + 2D sliding friction.
   int condim = 3;
+  // Elliptic friction cones. MuJoCo's pyramidal cone regularises the normal direction in
+  // proportion to mu^2, so Gazebo-style "no slip" coefficients (the PR2 wheels' mu = 100) make
+  // contacts sink centimetres; the elliptic cone keeps the normal stiff at any mu.
+  bool elliptic_cone = true;
   // Joint limits use the same soft-constraint model; stiffer than contacts so a limit stop
   // behaves like Gazebo ODE's hard stop (time constant >= 2 timesteps at 1 kHz).
   std::array<double, 2> limit_solref{0.005, 1.0};

@@ -83,7 +83,8 @@ class Writer {
                              : options_.integrator == Integrator::Rk4 ? "RK4"
                                                                       : "implicit";
     x_ << "  <option timestep=\"" << num(options_.timestep) << "\" integrator=\"" << integrator
-       << "\" gravity=\"0 0 " << num(-options_.world.gravity) << "\"/>\n";
+       << "\" gravity=\"0 0 " << num(-options_.world.gravity) << "\" cone=\""
+       << (c.elliptic_cone ? "elliptic" : "pyramidal") << "\"/>\n";
     x_ << "  <size njmax=\"4000\" nconmax=\"1000\"/>\n";
     x_ << "  <default>\n    <geom condim=\"" << c.condim << "\" friction=\"" << num(c.sliding_friction) << " "
        << num(c.torsional_friction) << " " << num(c.rolling_friction) << "\" solref=\"" << num(c.solref[0]) << " "
