@@ -21,5 +21,6 @@ void add_xacro_command(CLI::App& app, CommandResult& result);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_world_command(CLI::App& app, CommandResult& result);
 void add_run_command(CLI::App& app, CommandResult& result);
+void add_tune_command(CLI::App& app, CommandResult& result);
 
 }  // namespace mechsim::apps

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   add_check_command(app, result);
   add_world_command(app, result);
   add_run_command(app, result);
+  add_tune_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -54,10 +54,12 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   physics_joint_.assign(n, -1);
   physics_mode_.assign(n, HardwareInterface::Effort);
   servo_gains_.assign(n, physics::ServoGains{});
+  commanded_.assign(n, false);
   for (std::size_t j = 0; j < n; ++j) {
     const std::string& name = mechanism_->joints[j].name;
     if (auto p = physics_model_->joint_index(name); p && physics_model_->joints()[*p].actuated) {
       physics_joint_[j] = static_cast<int>(*p);
+      commanded_[j] = mechanism::physics_applies_command(mechanism_->joints[j]);
     }
     if (auto it = options_.servo_gains.find(name); it != options_.servo_gains.end()) servo_gains_[j] = it->second;
   }
@@ -86,7 +88,10 @@ void Simulation::write_physics() {
   mechanism::propagate_actuator_to_joint_effort(*mechanism_, state);
   for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
     const int p = physics_joint_[j];
-    if (p < 0) continue;
+    // Passive joints (PR2 fingers) follow their transmission's actuated joint, and simulated
+    // ones (PR2 screws) carry torques meant for a backend that models the screw: only actuated
+    // joints take commands.
+    if (p < 0 || !commanded_[j]) continue;
     const auto pj = static_cast<std::size_t>(p);
     const mechanism::JointState& js = state.joints[j];
     if (js.command_mode != physics_mode_[j]) {

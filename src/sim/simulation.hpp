@@ -134,6 +134,7 @@ class Simulation {
   std::vector<int> physics_joint_;
   std::vector<mechanism::HardwareInterface> physics_mode_;
   std::vector<physics::ServoGains> servo_gains_;
+  std::vector<bool> commanded_;  // the physics applies this joint's command (actuated joints)
 
   std::vector<Observer> observers_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;

@@ -1,0 +1,122 @@
+// `mechsim tune ROBOT --controllers FILE --joint J`: PID tuning by closed-loop step experiments
+// in simulation; prints the metrics before and after and writes the gains back to the YAML.
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.hpp"
+#include "control/params.hpp"
+#include "description/robot_loader.hpp"
+#include "sim/tuning.hpp"
+
+namespace mechsim::apps {
+namespace {
+
+struct TuneArgs {
+  std::string robot;
+  std::vector<std::string> mappings;  // name:=value
+  std::vector<std::string> packages;  // NAME=DIR
+  bool lenient = false;
+  std::string controllers;
+  std::string ns;
+  std::vector<std::string> joints;
+  double step = 0.0;
+  double settle = 0.3, rise = 0.2, overshoot = 5.0;
+  int evaluations = 80;
+  bool write = false;
+};
+
+std::string metrics_line(const sim::StepMetrics& m, bool velocity) {
+  if (m.diverged) return "diverged";
+  char buf[256];
+  auto t = [](double v) { return v < 0 ? std::string("never") : std::to_string(v).substr(0, 5) + " s"; };
+  std::snprintf(buf, sizeof buf, "step %.3g %s: 95%% at %s, settles (2%%) at %s, overshoot %.1f %%, final error %.3g, peak effort %.3g",
+                m.step, velocity ? "rad/s" : "rad", t(m.rise95).c_str(), t(m.settling_time).c_str(), m.overshoot,
+                m.steady_state_error, m.peak_effort);
+  return buf;
+}
+
+// The controllers' namespace: as given, else the YAML's single top-level map without a `type`.
+std::string detect_namespace(const std::string& file, const std::string& given) {
+  if (!given.empty()) return given;
+  const control::Params root = control::Params::from_yaml_file(file);
+  const std::vector<std::string> keys = root.keys();
+  if (keys.size() == 1 && root.child(keys[0]).is_map() && !root.child(keys[0]).has("type")) return keys[0];
+  return "";
+}
+
+void run(const TuneArgs& args, CommandResult& result) {
+  description::LoadOptions load;
+  load.lenient = args.lenient;
+  for (const std::string& m : args.mappings) {
+    const auto pos = m.find(":=");
+    if (pos == std::string::npos) throw UserError("expected name:=value, got '" + m + "'");
+    load.xacro_args[m.substr(0, pos)] = m.substr(pos + 2);
+  }
+  for (const std::string& p : args.packages) {
+    const auto pos = p.find('=');
+    if (pos == std::string::npos) throw UserError("--package expects NAME=DIR, got '" + p + "'");
+    load.packages[p.substr(0, pos)] = p.substr(pos + 1);
+  }
+  sim::TuneSetup setup;
+  setup.robot = description::load_robot(args.robot, load).model;
+  setup.controllers_file = args.controllers;
+  setup.controllers_namespace = detect_namespace(args.controllers, args.ns);
+  if (args.step != 0.0) setup.step = args.step;
+  setup.targets.settling_time = args.settle;
+  setup.targets.rise95 = args.rise;
+  setup.targets.overshoot = args.overshoot;
+  setup.max_evaluations = args.evaluations;
+  bool all_met = true;
+  for (const std::string& joint : args.joints) {
+    setup.joint = joint;
+    const sim::TuneResult r = sim::tune_joint(setup);
+    std::cout << r.controller << " (" << r.type << ", joint " << joint << ")\n"
+              << "  before: p " << r.before.p << " i " << r.before.i << " d " << r.before.d << "\n          "
+              << metrics_line(r.before_metrics, r.velocity) << "\n"
+              << "  after:  p " << r.after.p << " i " << r.after.i << " d " << r.after.d << "\n          "
+              << metrics_line(r.after_metrics, r.velocity) << "\n"
+              << "  " << r.evaluations << " experiments; targets (";
+    if (r.velocity) {
+      std::cout << "95 % within " << args.rise << " s";
+    } else {
+      std::cout << "settling within " << args.settle << " s";
+    }
+    std::cout << ", overshoot under " << args.overshoot << " %) " << (r.targets_met ? "met" : "NOT met") << "\n";
+    all_met = all_met && r.targets_met;
+    if (args.write) {
+      if (!sim::write_gains_in_place(args.controllers, r.controller, r.after)) {
+        throw UserError("could not find a one-line 'pid: {...}' for '" + r.controller + "' in " + args.controllers);
+      }
+      std::cout << "  written to " << args.controllers << "\n";
+    } else {
+      std::cout << "  YAML: " << r.controller << ": {pid: {p: " << r.after.p << ", i: " << r.after.i << ", d: " << r.after.d
+                << "}}\n";
+    }
+  }
+  result.exit_code = all_met ? 0 : 1;
+}
+
+}  // namespace
+
+void add_tune_command(CLI::App& app, CommandResult& result) {
+  auto args = std::make_shared<TuneArgs>();
+  CLI::App* cmd = app.add_subcommand("tune", "Tune a joint's PID controller by step experiments in simulation");
+  cmd->add_option("robot", args->robot, "Robot description (.urdf or .xacro)")->required();
+  cmd->add_option("mappings", args->mappings, "xacro arguments name:=value");
+  cmd->add_option("--controllers", args->controllers, "Controller YAML")->required();
+  cmd->add_option("--namespace", args->ns, "Namespace of the controllers in the YAML (default: its single top-level map)");
+  cmd->add_option("--joint", args->joints, "Joint whose controller is tuned (repeatable)")->required();
+  cmd->add_option("--step", args->step, "Step size (rad, m, or rad/s for velocity controllers)");
+  cmd->add_option("--settle", args->settle, "Target settling time (2 %) of position controllers (s)");
+  cmd->add_option("--rise", args->rise, "Target time to 95 % of velocity controllers (s)");
+  cmd->add_option("--overshoot", args->overshoot, "Target maximum overshoot (%)");
+  cmd->add_option("--evaluations", args->evaluations, "Maximum experiments per joint");
+  cmd->add_flag("--write", args->write, "Write the gains into the controller YAML (its pid line)");
+  cmd->add_option("--package", args->packages, "NAME=DIR for $(find NAME) and package://NAME");
+  cmd->add_flag("--lenient", args->lenient, "Physical-plausibility errors become warnings");
+  cmd->callback([args, &result] { run(*args, result); });
+}
+
+}  // namespace mechsim::apps

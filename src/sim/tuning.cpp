@@ -1,0 +1,300 @@
+#include "sim/tuning.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <tuple>
+#include <type_traits>
+#include <stdexcept>
+
+#include "control/params.hpp"
+#include "control/ports.hpp"
+#include "sim/simulation.hpp"
+
+namespace mechsim::sim {
+namespace {
+
+control::Params controller_namespace(const TuneSetup& setup) {
+  control::Params root = control::Params::from_yaml_file(setup.controllers_file);
+  return setup.controllers_namespace.empty() ? root : root.child(setup.controllers_namespace);
+}
+
+bool is_position_type(const std::string& type) {
+  return type == "effort_controllers/JointPositionController" || type == "robot_mechanism_controllers/JointPositionController";
+}
+bool is_velocity_type(const std::string& type) {
+  return type == "effort_controllers/JointVelocityController" || type == "robot_mechanism_controllers/JointVelocityController";
+}
+
+control::PidGains read_gains(const control::Params& pid) {
+  control::PidGains g;
+  g.p = pid.get<double>("p");
+  g.i = pid.get<double>("i", 0.0);
+  g.d = pid.get<double>("d", 0.0);
+  return g;
+}
+
+// Nelder-Mead over a small dimension (2 or 3): the standard reflection/expansion/contraction/
+// shrink steps. Written here because the search is tiny and Debian's minimisers (GSL) would add
+// a GPL dependency for forty lines.
+template <std::size_t N, class F>
+std::array<double, N> nelder_mead(F&& cost, std::array<double, N> start, double scale, int max_evaluations, int& evaluations) {
+  std::array<std::array<double, N>, N + 1> x;
+  std::array<double, N + 1> f;
+  for (std::size_t k = 0; k <= N; ++k) {
+    x[k] = start;
+    if (k > 0) x[k][k - 1] += scale;
+    f[k] = cost(x[k]);
+    ++evaluations;
+  }
+  while (evaluations < max_evaluations) {
+    std::array<std::size_t, N + 1> order;
+    for (std::size_t k = 0; k <= N; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return f[a] < f[b]; });
+    const std::size_t best = order[0], worst = order[N], second = order[N - 1];
+    if (std::abs(f[worst] - f[best]) < 1e-4 * (1.0 + std::abs(f[best]))) break;
+    std::array<double, N> centroid{};
+    for (std::size_t k = 0; k <= N; ++k) {
+      if (k == worst) continue;
+      for (std::size_t d = 0; d < N; ++d) centroid[d] += x[k][d] / static_cast<double>(N);
+    }
+    auto along = [&](double t) {
+      std::array<double, N> p;
+      for (std::size_t d = 0; d < N; ++d) p[d] = centroid[d] + t * (x[worst][d] - centroid[d]);
+      return p;
+    };
+    const auto reflected = along(-1.0);
+    const double fr = cost(reflected);
+    ++evaluations;
+    if (fr < f[best]) {
+      const auto expanded = along(-2.0);
+      const double fe = cost(expanded);
+      ++evaluations;
+      if (fe < fr) {
+        x[worst] = expanded, f[worst] = fe;
+      } else {
+        x[worst] = reflected, f[worst] = fr;
+      }
+    } else if (fr < f[second]) {
+      x[worst] = reflected, f[worst] = fr;
+    } else {
+      const auto contracted = along(fr < f[worst] ? -0.5 : 0.5);
+      const double fc = cost(contracted);
+      ++evaluations;
+      if (fc < std::min(fr, f[worst])) {
+        x[worst] = contracted, f[worst] = fc;
+      } else {
+        for (std::size_t k = 0; k <= N; ++k) {
+          if (k == best) continue;
+          for (std::size_t d = 0; d < N; ++d) x[k][d] = x[best][d] + 0.5 * (x[k][d] - x[best][d]);
+          f[k] = cost(x[k]);
+          ++evaluations;
+        }
+      }
+    }
+  }
+  std::size_t best = 0;
+  for (std::size_t k = 1; k <= N; ++k) {
+    if (f[k] < f[best]) best = k;
+  }
+  return x[best];
+}
+
+}  // namespace
+
+StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, bool velocity,
+                         const control::PidGains& gains) {
+  control::Params ns = controller_namespace(setup);
+  ns.set(controller + "/pid/p", gains.p);
+  ns.set(controller + "/pid/i", gains.i);
+  ns.set(controller + "/pid/d", gains.d);
+  SimulationOptions options;
+  options.spawn.z = setup.spawn_z;
+  Simulation sim(setup.robot, make_world(setup.world), ns, options);
+  std::vector<std::string> start{controller};
+  for (const std::string& name : ns.keys()) {
+    if (name == controller || !ns.child(name).is_map() || !ns.child(name).has("type")) continue;
+    if (sim.controllers().load_controller(name)) start.push_back(name);
+  }
+  if (control::ControlResult r = sim.controllers().load_controller(controller); !r) {
+    throw std::runtime_error("could not load controller '" + controller + "': " + r.error);
+  }
+  // The tuned controller first: under BEST_EFFORT it wins its joint over group controllers.
+  sim.controllers().switch_controllers(start, {}, control::SwitchStrictness::BestEffort);
+
+  const auto joint = sim.physics().model().joint_index(setup.joint);
+  if (!joint) throw std::runtime_error("joint '" + setup.joint + "' is not simulated");
+  auto value = [&] { return velocity ? sim.physics().velocity(*joint) : sim.physics().position(*joint); };
+  StepMetrics m;
+  m.step = setup.step.value_or(velocity ? 2.0 : 0.5);
+  if (!sim.run_for(setup.settle_before)) {
+    m.diverged = true;
+    return m;
+  }
+  const double y0 = value();
+  auto* port = dynamic_cast<control::ScalarCommandPort*>(sim.controllers().controller(controller)->port("command"));
+  if (port == nullptr) throw std::runtime_error("controller '" + controller + "' has no command port");
+  const double target = velocity ? m.step : y0 + m.step;
+  port->write(target);
+
+  const double t0 = sim.time();
+  double peak = 0.0, last_outside = 0.0;
+  bool outside_ever = false;
+  const auto ticks = static_cast<long>(std::lround(setup.observe / sim.period()));
+  for (long k = 0; k < ticks; ++k) {
+    if (!sim.step()) {
+      m.diverged = true;
+      return m;
+    }
+    const double t = sim.time() - t0;
+    const double normalised = velocity ? value() / m.step : (value() - y0) / m.step;
+    if (!std::isfinite(normalised)) {
+      m.diverged = true;
+      return m;
+    }
+    if (m.rise95 < 0.0 && normalised >= 0.95) m.rise95 = t;
+    peak = std::max(peak, normalised);
+    if (std::abs(normalised - 1.0) > 0.02) {
+      last_outside = t;
+      outside_ever = true;
+    }
+    m.peak_effort = std::max(m.peak_effort, std::abs(sim.physics().actuator_effort(*joint)));
+  }
+  m.overshoot = std::max(0.0, peak - 1.0) * 100.0;
+  m.steady_state_error = target - value();
+  const bool settled_at_end = std::abs((velocity ? value() / m.step : (value() - y0) / m.step) - 1.0) <= 0.02;
+  m.settling_time = settled_at_end ? (outside_ever ? last_outside : 0.0) : -1.0;
+  return m;
+}
+
+TuneResult tune_joint(const TuneSetup& setup) {
+  const control::Params ns = controller_namespace(setup);
+  TuneResult result;
+  for (const std::string& name : ns.keys()) {
+    const control::Params c = ns.child(name);
+    if (!c.is_map() || c.get<std::string>("joint", "") != setup.joint) continue;
+    const std::string type = c.get<std::string>("type", "");
+    if (!is_position_type(type) && !is_velocity_type(type)) continue;
+    result.controller = name;
+    result.type = type;
+    result.velocity = is_velocity_type(type);
+    result.before = read_gains(c.child("pid"));
+  }
+  if (result.controller.empty()) {
+    throw std::runtime_error("no PID position or velocity controller for joint '" + setup.joint + "' in " +
+                             setup.controllers_file + (setup.controllers_namespace.empty() ? "" : " under '" + setup.controllers_namespace + "'"));
+  }
+  result.before_metrics = measure_step(setup, result.controller, result.velocity, result.before);
+
+  const TuneTargets& tg = setup.targets;
+  auto cost_of = [&](const StepMetrics& m, const control::PidGains& g) {
+    if (m.diverged) return 1e6;
+    const double horizon = setup.observe;
+    double c = 0.0;
+    if (result.velocity) {
+      c += (m.rise95 < 0 ? 2.0 * horizon : m.rise95) / tg.rise95;
+    } else {
+      c += (m.settling_time < 0 ? 2.0 * horizon : m.settling_time) / tg.settling_time;
+    }
+    c += 10.0 * std::max(0.0, m.overshoot - tg.overshoot) / tg.overshoot;
+    c += std::abs(m.steady_state_error / m.step) * 20.0;
+    c += 0.02 * std::log10(1.0 + g.p + g.i + g.d);  // prefer gentler gains among equals
+    return c;
+  };
+  auto gains_of = [&](const auto& x) {
+    control::PidGains g = result.before;
+    g.p = std::exp(x[0]);
+    if constexpr (std::tuple_size_v<std::decay_t<decltype(x)>> == 2) {
+      g.i = std::exp(x[1]);  // velocity: PI
+      g.d = 0.0;
+    } else {
+      g.d = std::exp(x[1]);  // position: PID
+      g.i = std::exp(x[2]);
+    }
+    return g;
+  };
+  auto clamp_log = [](double v) { return std::log(std::clamp(v, 1e-3, 1e5)); };
+  int evaluations = 1;
+  control::PidGains best;
+  // Start from gains that move the joint at all: the YAML's, raised to at least a tenth of the
+  // joint's effort limit per unit of step (weak gains give a flat cost landscape).
+  const double start_p = std::max(result.before.p, 10.0);
+  if (result.velocity) {
+    auto cost = [&](const std::array<double, 2>& x) {
+      const control::PidGains g = gains_of(x);
+      return cost_of(measure_step(setup, result.controller, true, g), g);
+    };
+    const auto x = nelder_mead<2>(cost, {clamp_log(start_p), clamp_log(std::max(result.before.i, start_p))}, 1.0,
+                                  setup.max_evaluations, evaluations);
+    best = gains_of(x);
+  } else {
+    auto cost = [&](const std::array<double, 3>& x) {
+      const control::PidGains g = gains_of(x);
+      return cost_of(measure_step(setup, result.controller, false, g), g);
+    };
+    const auto x = nelder_mead<3>(cost, {clamp_log(start_p), clamp_log(std::max(result.before.d, 0.1 * std::sqrt(start_p))),
+                                         clamp_log(std::max(result.before.i, 0.1 * start_p))},
+                                  1.0, setup.max_evaluations, evaluations);
+    best = gains_of(x);
+  }
+  // Round to 3 significant digits: shipped YAML should be readable.
+  auto round3 = [](double v) {
+    if (v == 0.0) return 0.0;
+    const double scale = std::pow(10.0, 2 - std::floor(std::log10(std::abs(v))));
+    return std::round(v * scale) / scale;
+  };
+  best.p = round3(best.p);
+  best.i = round3(best.i);
+  best.d = round3(best.d);
+  result.after = best;
+  result.after_metrics = measure_step(setup, result.controller, result.velocity, best);
+  result.evaluations = evaluations + 1;
+  const StepMetrics& a = result.after_metrics;
+  result.targets_met = !a.diverged && a.overshoot <= tg.overshoot &&
+                       (result.velocity ? (a.rise95 >= 0 && a.rise95 <= tg.rise95)
+                                        : (a.settling_time >= 0 && a.settling_time <= tg.settling_time));
+  return result;
+}
+
+bool write_gains_in_place(const std::string& file, const std::string& controller, const control::PidGains& gains) {
+  std::ifstream in(file);
+  if (!in) return false;
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  in.close();
+  // Find "<indent>controller:" then, deeper indented, "pid: {...}".
+  const std::regex header("^(\\s*)" + std::regex_replace(controller, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") + ":\\s*$");
+  static const std::regex pid_line(R"(^(\s*)pid:\s*\{(.*)\}\s*$)");
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    std::smatch h;
+    if (!std::regex_match(lines[k], h, header)) continue;
+    const std::size_t indent = h[1].length();
+    for (std::size_t j = k + 1; j < lines.size(); ++j) {
+      const std::string& l = lines[j];
+      const std::size_t first = l.find_first_not_of(' ');
+      if (first == std::string::npos || l[first] == '#') continue;
+      if (first <= indent) break;
+      std::smatch m;
+      if (!std::regex_match(l, m, pid_line)) continue;
+      // Keep every other key of the map (i_clamp, antiwindup, ...).
+      std::string rest;
+      std::stringstream fields(m[2].str());
+      for (std::string field; std::getline(fields, field, ',');) {
+        const std::string key = field.substr(field.find_first_not_of(' '), field.find(':') - field.find_first_not_of(' '));
+        if (key != "p" && key != "i" && key != "d") rest += "," + field;
+      }
+      std::ostringstream out;
+      out << m[1].str() << "pid: {p: " << gains.p << ", i: " << gains.i << ", d: " << gains.d << rest << "}";
+      lines[j] = out.str();
+      std::ofstream o(file);
+      for (const std::string& line : lines) o << line << '\n';
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace mechsim::sim

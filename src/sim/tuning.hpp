@@ -1,0 +1,72 @@
+#pragma once
+// PID tuning in simulation (`mechsim tune`): closed-loop step experiments on one joint's
+// controller (effort_controllers/JointPositionController or JointVelocityController and their
+// robot_mechanism_controllers equivalents) with the rest of the robot held by its other
+// controllers, and a Nelder-Mead search over the gains (in log space) that minimises a cost
+// built from the stated targets: settling time and overshoot for position, time to 95 % and
+// overshoot for velocity, with a small preference for smaller gains.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "control/pid.hpp"
+#include "description/robot_model.hpp"
+#include "sim/world.hpp"
+
+namespace mechsim::sim {
+
+struct StepMetrics {
+  double step = 0.0;            // commanded change (rad, m, rad/s or m/s)
+  double rise95 = -1.0;         // s from the step to 95 % of it; -1 when never reached
+  double settling_time = -1.0;  // s from the step until it stays within 2 %; -1 when never
+  double overshoot = 0.0;       // % of the step beyond the target
+  double steady_state_error = 0.0;  // at the end, in units of the step's quantity
+  double peak_effort = 0.0;     // N m or N
+  bool diverged = false;
+};
+
+struct TuneTargets {
+  double settling_time = 0.3;  // s (position)
+  double rise95 = 0.2;         // s (velocity)
+  double overshoot = 5.0;      // %
+};
+
+struct TuneSetup {
+  description::RobotModel robot;
+  WorldConfig world;
+  double spawn_z = 0.02;        // m above the ground
+  std::string controllers_file;
+  std::string controllers_namespace;  // "" when the controllers are at the top level
+  std::string joint;            // the joint whose controller is tuned
+  std::optional<double> step;   // default: 0.5 rad/m (position), 2.0 rad/s (velocity)
+  double settle_before = 0.5;   // s of holding before the step
+  double observe = 1.0;         // s after the step
+  TuneTargets targets;
+  int max_evaluations = 80;
+};
+
+struct TuneResult {
+  std::string controller;  // name in the YAML
+  std::string type;
+  bool velocity = false;   // a velocity controller (else position)
+  control::PidGains before, after;
+  StepMetrics before_metrics, after_metrics;
+  int evaluations = 0;
+  bool targets_met = false;
+};
+
+// The controller of `setup.joint` in the YAML, its step response with the YAML's gains, and the
+// tuned gains with theirs. Throws std::runtime_error naming the joint/controller when the YAML
+// has no PID position/velocity controller for the joint.
+TuneResult tune_joint(const TuneSetup& setup);
+
+// One step experiment with the given gains (exposed for tests).
+StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, bool velocity,
+                         const control::PidGains& gains);
+
+// Rewrites the controller's `pid: {...}` line in a YAML file (one-line flow maps, comments and
+// layout kept). False when the file has no such line for the controller.
+bool write_gains_in_place(const std::string& file, const std::string& controller, const control::PidGains& gains);
+
+}  // namespace mechsim::sim
