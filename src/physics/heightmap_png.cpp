@@ -109,7 +109,9 @@ Raster read_png_raster(const std::filesystem::path& path) {
   if (job.png == nullptr) throw HeightmapError(where + ": cannot start the PNG reader");
   job.info = png_create_info_struct(job.png);
   if (job.info == nullptr) throw HeightmapError(where + ": cannot start the PNG reader");
-  if (!read_header(job)) throw HeightmapError(where + ": not a readable PNG: " + job.message);
+  if (!read_header(job)) {
+    throw HeightmapError(where + ": not a readable PNG (corrupt or truncated header): " + job.message);
+  }
 
   if (job.color_type != PNG_COLOR_TYPE_GRAY) {
     throw HeightmapError(where + ": PNG is " + color_name(job.color_type) +

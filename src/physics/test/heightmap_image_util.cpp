@@ -3,6 +3,8 @@
 #include <png.h>
 #include <tiffio.h>
 
+#include <csetjmp>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -32,6 +34,42 @@ void write_gray_png(const std::filesystem::path& path, std::uint32_t width, std:
     ok = png_image_write_to_file(&image, path.c_str(), 0, bytes.data(), 0, nullptr);
   }
   if (ok == 0) throw std::runtime_error("test PNG write failed: " + std::string(image.message));
+}
+
+namespace {
+
+// libpng's classic writer reports errors by longjmp; this function owns nothing with a
+// destructor, so the jump skips no cleanup.
+bool write_low_depth(std::FILE* file, std::uint32_t width, std::uint32_t height, int bits,
+                     png_bytepp rows) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
+  if (info == nullptr || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, file);
+  png_set_IHDR(png, info, width, height, bits, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  png_write_image(png, rows);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
+
+void write_low_depth_png(const std::filesystem::path& path, std::uint32_t width,
+                         std::uint32_t height, int bits) {
+  std::vector<png_byte> bytes(std::size_t{width} * height, 0);  // a byte per row is plenty
+  std::vector<png_bytep> rows(height);
+  for (std::uint32_t r = 0; r < height; ++r) rows[r] = bytes.data() + std::size_t{r} * width;
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (file == nullptr) throw std::runtime_error("test PNG open failed");
+  const bool ok = write_low_depth(file, width, height, bits, rows.data());
+  std::fclose(file);
+  if (!ok) throw std::runtime_error("test PNG write failed");
 }
 
 void write_rgb_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height) {

@@ -17,6 +17,10 @@ std::filesystem::path temp_dir(const std::string& name);
 void write_gray_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                     int bits, const std::vector<std::uint16_t>& values);
 
+// Grayscale PNG of 1, 2 or 4 bits per sample, all zero (for the error path).
+void write_low_depth_png(const std::filesystem::path& path, std::uint32_t width,
+                         std::uint32_t height, int bits);
+
 // RGB 8-bit PNG (for the error path).
 void write_rgb_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height);
 

@@ -192,10 +192,16 @@ TEST(HeightmapIoErrors, NotAnImage) {
 
 TEST(HeightmapIoErrors, TruncatedPng) {
   const auto dir = test::temp_dir("errors_trunc");
-  test::write_gray_png(dir / "h.png", 64, 64, 16, std::vector<std::uint16_t>(64 * 64, 7));
+  // Noisy samples so that the image data, not the header, makes up most of the file.
+  std::vector<std::uint16_t> values(64 * 64);
+  std::uint32_t state = 12345;
+  for (auto& v : values) v = static_cast<std::uint16_t>((state = state * 1664525u + 1013904223u) >> 16);
+  test::write_gray_png(dir / "h.png", 64, 64, 16, values);
   const auto size = std::filesystem::file_size(dir / "h.png");
-  std::filesystem::resize_file(dir / "h.png", size / 2);
-  expect_error(dir / "h.png", full(1, 1, 0, 1), "PNG");
+  std::filesystem::resize_file(dir / "h.png", size * 3 / 4);
+  expect_error(dir / "h.png", full(1, 1, 0, 1), "corrupt PNG data");
+  std::filesystem::resize_file(dir / "h.png", 20);
+  expect_error(dir / "h.png", full(1, 1, 0, 1), "not a readable PNG (corrupt or truncated header)");
 }
 
 TEST(HeightmapIoErrors, ColourPng) {
@@ -203,6 +209,12 @@ TEST(HeightmapIoErrors, ColourPng) {
   test::write_rgb_png(dir / "h.png", 4, 4);
   expect_error(dir / "h.png", full(1, 1, 0, 1),
                "PNG is RGB; a heightmap must be single-channel grayscale");
+}
+
+TEST(HeightmapIoErrors, LowBitDepthPng) {
+  const auto dir = test::temp_dir("errors_depth");
+  test::write_low_depth_png(dir / "h.png", 8, 8, 4);
+  expect_error(dir / "h.png", full(1, 1, 0, 1), "unsupported bit depth 4 of a grayscale PNG");
 }
 
 TEST(HeightmapIoErrors, UnsupportedTiffSampleFormats) {
