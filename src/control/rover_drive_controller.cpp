@@ -95,7 +95,7 @@ PlanarTwist RoverDriveController::limit_command(const PlanarTwist& target, doubl
 }
 
 UpdateStatus RoverDriveController::update(double time, double period) {
-  if (!(period > 0.0)) return UpdateStatus::Error("rover drive: non-positive period");
+  if (!(period > 0.0)) return UpdateStatus::Ok();  // nothing to integrate; the commands stay
   const RoverKinematics& k = config_.kinematics;
   const std::size_t ns = steering_.size(), nw = wheels_.size();
 
@@ -123,13 +123,17 @@ UpdateStatus RoverDriveController::update(double time, double period) {
   // 5-6. Steering rate limit; wheels wait for the steering.
   const double max_step = config_.max_steering_rate * period;
   max_steering_error_ = 0.0;
+  bool steering_measured = true;  // false when a steering joint reports a non-finite angle
   for (std::size_t s = 0; s < ns; ++s) {
     // Plain difference: both lie within +-max_steering_angle, so the path between them does too.
     setpoint_headings_[s] = step_towards(setpoint_headings_[s], target_headings_[s], max_step);
-    max_steering_error_ =
-        std::fmax(max_steering_error_, std::abs(shortest_angular_distance(measured_headings_[s], target_headings_[s])));
+    const double e = std::abs(shortest_angular_distance(measured_headings_[s], target_headings_[s]));
+    steering_measured = steering_measured && std::isfinite(e);
+    max_steering_error_ = std::fmax(max_steering_error_, e);
   }
-  if (max_steering_error_ <= config_.steering_tolerance) {
+  if (!steering_measured) {
+    alignment_scale_ = 0.0;  // do not drive blind
+  } else if (max_steering_error_ <= config_.steering_tolerance) {
     alignment_scale_ = 1.0;
   } else if (max_steering_error_ >= config_.steering_stop_error) {
     alignment_scale_ = 0.0;

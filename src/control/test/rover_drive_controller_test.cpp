@@ -194,6 +194,23 @@ TEST(RoverDriveController, NonFiniteCommandsAreRejectedAndCounted) {
   for (std::size_t j = 0; j < 10; ++j) EXPECT_TRUE(std::isfinite(rover.state().joints[j].command));
 }
 
+TEST(RoverDriveController, NonFiniteMeasurementsStopTheWheelsAndSpareTheOdometry) {
+  KinematicRover rover;
+  rover.command(0.3, 0.0, 0.0);
+  rover.ticks(100);
+  const OdometrySnapshot before = rover.odom();
+  rover.joint(1).position = std::numeric_limits<double>::quiet_NaN();  // steering_FR
+  rover.joint(6).velocity = std::numeric_limits<double>::infinity();   // wheel_joint_ML
+  ASSERT_TRUE(rover.controller.update(rover.time, kDt).ok);
+  const JointGroupControllerState s = rover.state();
+  for (std::size_t i = 4; i < 10; ++i) EXPECT_EQ(s.joints[i].set_point, 0.0) << s.joint_names[i];
+  for (std::size_t j = 0; j < 10; ++j) EXPECT_TRUE(std::isfinite(s.joints[j].command)) << s.joint_names[j];
+  const OdometrySnapshot after = rover.odom();
+  EXPECT_TRUE(std::isfinite(after.x));
+  EXPECT_NEAR(after.x, before.x, 1e-3);
+  EXPECT_EQ(rover.status().alignment_scale, 0.0);
+}
+
 TEST(RoverDriveController, ModePortForcesAMode) {
   KinematicRover rover;
   ASSERT_TRUE(rover.controller.mode_port().write("crab"));
