@@ -181,7 +181,8 @@ double Physics::position(std::size_t j) const { return data_->d->qpos[model_->jo
 double Physics::velocity(std::size_t j) const { return data_->d->qvel[model_->joints()[j].dof_adr]; }
 double Physics::actuator_effort(std::size_t j) const { return data_->d->qfrc_actuator[model_->joints()[j].dof_adr]; }
 double Physics::constraint_effort(std::size_t j) const { return data_->d->qfrc_constraint[model_->joints()[j].dof_adr]; }
-double Physics::effort(std::size_t j) const { return actuator_effort(j) + constraint_effort(j); }
+double Physics::applied_effort(std::size_t j) const { return data_->d->qfrc_applied[model_->joints()[j].dof_adr]; }
+double Physics::effort(std::size_t j) const { return actuator_effort(j) + applied_effort(j) + constraint_effort(j); }
 
 void Physics::set_effort(std::size_t j, double effort) {
   const JointInfo& info = model_->joints()[j];

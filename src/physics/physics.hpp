@@ -85,7 +85,10 @@ class Physics {
   double actuator_effort(std::size_t joint) const;
   // Generalised force from constraints: limits, friction loss, contacts, mimic equalities.
   double constraint_effort(std::size_t joint) const;
-  // actuator_effort + constraint_effort (what a joint torque sensor would report).
+  // Generalised force applied by plugin laws (the differential spring), N m or N.
+  double applied_effort(std::size_t joint) const;
+  // actuator + applied + constraint effort: everything acting on the joint in the last step
+  // (Gazebo's Joint::GetForce sums what was set on the joint, plugins included).
   double effort(std::size_t joint) const;
 
   // Commands, applied by the next step(). set_effort is for JointMode::Effort; the others

@@ -144,6 +144,8 @@ TEST(PhysicsServo, DifferentialPluginLawAppliesTheSpringTorques) {
   ASSERT_TRUE(p.step().ok());
   EXPECT_DOUBLE_EQ(p.differential_torque_a(), -1000.0 * 0.03);
   EXPECT_DOUBLE_EQ(p.differential_torque_b(), 1000.0 * 0.03);
+  EXPECT_DOUBLE_EQ(p.applied_effort(a), -30.0);
+  EXPECT_DOUBLE_EQ(p.effort(b), 30.0);  // nothing else acts on the rocker
   // The torques act: after one step, qdot = tau / I dt for each rocker (I = 0.1 kg m^2).
   EXPECT_NEAR(p.velocity(a), -30.0 / 0.1 * 0.001, 1e-9);
   EXPECT_NEAR(p.velocity(b), 30.0 / 0.1 * 0.001, 1e-9);
