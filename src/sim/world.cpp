@@ -1,34 +1,27 @@
 #include "sim/world.hpp"
 
-#include <filesystem>
+#include "physics/terrain_world.hpp"
 
 namespace mechsim::sim {
 
 World make_world(const WorldConfig& config) {
+  physics::WorldTerrainOptions options;
+  if (config.name == "mars_yard_2024") options.seed = config.seed;
+  if (config.name != "empty" && config.name != "mars_yard_2024") options.heightmap = config.heightmap;
+  physics::WorldTerrain terrain;
+  try {
+    terrain = physics::load_world_terrain(config.name, options);
+  } catch (const std::exception& e) {
+    throw WorldError("world '" + config.name + "': " + e.what());
+  }
   World world;
   world.name = config.name;
-  if (config.name == "empty") {
-    world.spec.kind = physics::WorldSpec::Kind::Empty;
-    return world;
-  }
-  if (config.name == "mars_yard_2024") {
-    world.mars_yard = physics::generate_mars_yard(config.seed);
+  world.mars_yard = std::move(terrain.yard);
+  if (terrain.heightmap) {
     world.spec.kind = physics::WorldSpec::Kind::Heightmap;
-    world.spec.terrain = world.mars_yard->heightmap;
+    world.spec.terrain = std::move(terrain.heightmap);
     world.spec.ground_plane = false;
-    return world;
   }
-  if (!std::filesystem::exists(config.name)) {
-    throw WorldError("unknown world '" + config.name +
-                     "': expected 'empty', 'mars_yard_2024' or an existing heightmap file (.png, .tif)");
-  }
-  try {
-    world.spec.terrain = physics::load_heightmap(config.name, config.heightmap);
-  } catch (const physics::HeightmapError& e) {
-    throw WorldError(e.what());
-  }
-  world.spec.kind = physics::WorldSpec::Kind::Heightmap;
-  world.spec.ground_plane = false;
   return world;
 }
 
