@@ -132,7 +132,12 @@ class Planner {
                            joint->child_link + "' not found");
       const Pose X_BC = compose(X_BL, joint->origin);
       const bool movable = joint->type != JointType::Fixed;
-      if (massless(*child)) {
+      const bool lump = movable && massless(*child) && lump_fixed_descendants(*child);
+      if (lumped_.count(child->name)) {  // its mass is already part of this body
+        visit(*child, body, X_BC);
+        continue;
+      }
+      if (massless(*child) && !lump) {
         if (movable) {
           plan_.warnings.push_back("joint '" + joint->name + "': its child link '" + child->name +
                                    "' has no mass, so it is merged into '" + link.name +
@@ -146,12 +151,71 @@ class Planner {
       nb.name = child->name;
       nb.parent = body;
       nb.X_PB = X_BC;
-      nb.inertial = child->inertial;
+      nb.inertial = lump ? lumped_inertial_ : child->inertial;
       add_joints(*joint, nb);
       const int index = static_cast<int>(plan_.bodies.size());
       plan_.bodies.push_back(std::move(nb));
       if (body >= 0) add_exclude(plan_.bodies[body].name, child->name);
       visit(*child, index, Pose{});
+    }
+  }
+
+  // A massless link on a movable joint whose fixed-joint descendants carry mass: their
+  // inertials are lumped into its body (exact for rigid attachments, as Gazebo lumps fixed
+  // joints), so the joint is kept. Returns false when there is no such mass.
+  bool lump_fixed_descendants(const Link& link) {
+    std::vector<std::pair<Pose, description::Inertial>> parts;  // X_LI' = X_L<desc> * X_<desc>I
+    std::vector<std::string> names;
+    collect_fixed_mass(link, Pose{}, parts, names);
+    if (parts.empty()) return false;
+    double mass = 0.0;
+    Vec3 com{};
+    for (const auto& [X, in] : parts) {
+      mass += in.mass;
+      com.x += in.mass * X.position.x, com.y += in.mass * X.position.y, com.z += in.mass * X.position.z;
+    }
+    com = {com.x / mass, com.y / mass, com.z / mass};
+    double I[3][3] = {};
+    for (const auto& [X, in] : parts) {
+      // Rotate the part's inertia into the link frame, then move it to the common centre of mass.
+      const Quat& q = X.orientation;
+      const double R[3][3] = {
+          {1 - 2 * (q.y * q.y + q.z * q.z), 2 * (q.x * q.y - q.z * q.w), 2 * (q.x * q.z + q.y * q.w)},
+          {2 * (q.x * q.y + q.z * q.w), 1 - 2 * (q.x * q.x + q.z * q.z), 2 * (q.y * q.z - q.x * q.w)},
+          {2 * (q.x * q.z - q.y * q.w), 2 * (q.y * q.z + q.x * q.w), 1 - 2 * (q.x * q.x + q.y * q.y)}};
+      const double Ip[3][3] = {{in.ixx, in.ixy, in.ixz}, {in.ixy, in.iyy, in.iyz}, {in.ixz, in.iyz, in.izz}};
+      const double d[3] = {X.position.x - com.x, X.position.y - com.y, X.position.z - com.z};
+      const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          double rot = 0.0;
+          for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l) rot += R[i][k] * Ip[k][l] * R[j][l];
+          I[i][j] += rot + in.mass * ((i == j ? dd : 0.0) - d[i] * d[j]);
+        }
+    }
+    lumped_inertial_ = description::Inertial{};
+    lumped_inertial_.origin.position = com;
+    lumped_inertial_.mass = mass;
+    lumped_inertial_.ixx = I[0][0], lumped_inertial_.iyy = I[1][1], lumped_inertial_.izz = I[2][2];
+    lumped_inertial_.ixy = I[0][1], lumped_inertial_.ixz = I[0][2], lumped_inertial_.iyz = I[1][2];
+    lumped_.insert(names.begin(), names.end());
+    return true;
+  }
+
+  void collect_fixed_mass(const Link& link, const Pose& X_RL, std::vector<std::pair<Pose, description::Inertial>>& parts,
+                          std::vector<std::string>& names) {
+    for (const std::string& joint_name : link.child_joints) {
+      const description::Joint* joint = robot_.joint(joint_name);
+      if (joint == nullptr || joint->type != JointType::Fixed) continue;
+      const Link* child = robot_.link(joint->child_link);
+      if (child == nullptr) continue;
+      const Pose X_RC = compose(X_RL, joint->origin);
+      if (!massless(*child)) {
+        parts.emplace_back(compose(X_RC, child->inertial->origin), *child->inertial);
+        names.push_back(child->name);
+      }
+      collect_fixed_mass(*child, X_RC, parts, names);
     }
   }
 
@@ -300,6 +364,8 @@ class Planner {
   std::set<std::pair<std::string, std::string>> excluded_;
   std::size_t depth_guard_ = 0;
   description::GazeboLinkProperties no_gazebo_;
+  std::set<std::string> lumped_;  // links whose mass was lumped into an ancestor's body
+  description::Inertial lumped_inertial_;
 };
 
 }  // namespace

@@ -62,6 +62,32 @@ TEST(PhysicsDynamics, InertialOriginRotationIsHonoured) {
   EXPECT_NEAR(measured, analytic, 0.005 * analytic);
 }
 
+// A massless link on the hinge with the mass on a fixed child: the mass is lumped into the
+// hinge's body (as Gazebo lumps fixed joints), the joint is kept, the period is the same.
+TEST(PhysicsDynamics, MassOnAFixedChildOfAMasslessLinkIsLumped) {
+  const std::string urdf = R"(<robot name="lumped">
+  <link name="world"/>
+  <link name="mount"/>
+  <link name="bob"><inertial><origin xyz="0 0 -0.5"/><mass value="2"/>
+    <inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="hinge" type="continuous"><parent link="world"/><child link="mount"/><origin xyz="0 0 2"/><axis xyz="0 1 0"/></joint>
+  <joint name="weld" type="fixed"><parent link="mount"/><child link="bob"/><origin xyz="0 0 -0.5" rpy="0 0.3 0"/></joint>
+</robot>)";
+  auto model = test::build(urdf);
+  EXPECT_TRUE(model->warnings().empty()) << model->warnings().front();
+  ASSERT_TRUE(model->joint_index("hinge").has_value());
+  EXPECT_EQ(model->body_count(), 2);  // world + mount (bob lumped in)
+  Physics p(model);
+  p.set_joint_state(0, 0.01);
+  const auto t = upward_crossings(p, 0, 10.0);
+  ASSERT_GE(t.size(), 3u);
+  const double measured = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
+  const double analytic = 2.0 * M_PI * std::sqrt((0.001 + 2.0 * 1.0) / (2.0 * kG * 1.0));
+  EXPECT_NEAR(measured, analytic, 0.005 * analytic);
+  // The bob's frame is still where the URDF puts it.
+  EXPECT_NEAR(p.link_pose(*model->link_index("bob")).position.z, 1.5, 1e-3);
+}
+
 // A free body falls z(t) = z0 - g t^2 / 2. Default options. Tolerance 1 % of the drop.
 TEST(PhysicsDynamics, FreeFallWithinOnePercent) {
   BuildOptions o;
