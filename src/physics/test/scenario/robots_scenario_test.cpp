@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -114,6 +115,37 @@ TEST(RobotsScenario, Cc8RestsOnHeightmapTerrainAtTheGridsHeight) {
   const double on_terrain = expect_cc8_rests_on_six_wheels(DifferentialMode::MimicConstraint, h);
   const double on_plane = expect_cc8_rests_on_six_wheels(DifferentialMode::MimicConstraint);
   EXPECT_NEAR(on_terrain - on_plane, 0.3, 0.005);
+}
+
+// Two CC8 instances driven by the same wheel efforts (plugin law, contacts, servos) stay
+// bit-identical at every step.
+TEST(RobotsScenario, Cc8TrajectoriesAreBitIdentical) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  BuildOptions o;
+  o.spawn.z = 0.05;
+  o.differential = DifferentialMode::PluginLaw;
+  auto model = PhysicsModel::build(load("cc8.urdf"), o);
+  Physics a(model), b(model);
+  const std::size_t steer = *model->joint_index("steering_FL");
+  a.set_mode(steer, JointMode::Position, {50.0, 2.0});
+  b.set_mode(steer, JointMode::Position, {50.0, 2.0});
+  for (int i = 0; i < 2000; ++i) {
+    for (const char* w : {"wheel_joint_FL", "wheel_joint_ML", "wheel_joint_RL"}) {
+      a.set_effort(*model->joint_index(w), 2.0);
+      b.set_effort(*model->joint_index(w), 2.0);
+    }
+    a.set_position_command(steer, 0.3 * std::sin(0.002 * i));
+    b.set_position_command(steer, 0.3 * std::sin(0.002 * i));
+    ASSERT_TRUE(a.step().ok());
+    ASSERT_TRUE(b.step().ok());
+    for (std::size_t j = 0; j < a.joint_count(); ++j) {
+      const double qa = a.position(j), qb = b.position(j);
+      ASSERT_EQ(std::memcmp(&qa, &qb, sizeof qa), 0) << model->joints()[j].name << " at step " << i;
+    }
+    const auto Xa = a.base_pose(), Xb = b.base_pose();
+    ASSERT_EQ(std::memcmp(&Xa, &Xb, sizeof Xa), 0) << "base at step " << i;
+  }
+  EXPECT_GT(std::fabs(a.base_pose().position.x) + std::fabs(a.base_pose().position.y), 0.05);  // it drove
 }
 
 TEST(RobotsScenario, Pr2BuildsWithItsDaeMeshesAndSteps) {
