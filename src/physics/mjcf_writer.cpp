@@ -210,9 +210,10 @@ class Writer {
         auto it = usable_.find(key);
         if (it == usable_.end()) {
           auto any = all_.find(key);
-          const std::string why = any != all_.end() && !any->second->error.empty() ? any->second->error
-                                                                                   : "MuJoCo could not compile it";
-          doc_.warnings.push_back(what + ": mesh '" + geo.mesh_path + "' unsupported (" + why + "); left out");
+          const std::string why = any != all_.end() && !any->second->error.empty()
+                                      ? any->second->error
+                                      : "mesh '" + geo.mesh_path + "': MuJoCo could not compile it";
+          doc_.warnings.push_back(what + ": unsupported " + why + "; left out");
           return;
         }
         shape << " type=\"mesh\" mesh=\"" << it->second->name << "\"";
