@@ -5,6 +5,8 @@
 #include "control/pid_joint_controllers.hpp"
 #include "control/trajectory_controller.hpp"
 #include "control/rover_drive_controller.hpp"
+#include "control/pr2_base_controller.hpp"
+#include "control/pr2_odometry.hpp"
 
 namespace mechsim::control {
 
@@ -68,6 +70,10 @@ void register_builtin_controllers(ControllerRegistry& r) {
   r.add("robot_mechanism_controllers/JointTrajectoryActionController", trajectory(HI::Effort, ControllerFlavour::Pr2));
 
   r.add(kRoverDriveControllerType, [] { return std::make_unique<RoverDriveController>(); });
+
+  r.add(kPr2BaseController2Type, [] { return std::make_unique<Pr2BaseController>(); });
+  r.add(kPr2BaseControllerType, [] { return std::make_unique<Pr2BaseController>(); });
+  r.add(kPr2OdometryType, [] { return std::make_unique<Pr2OdometryController>(); });
 }
 
 }  // namespace mechsim::control

@@ -34,6 +34,10 @@ enum class PortKind : std::uint8_t {
   TrajectoryCommand,    // TrajectoryCommandPort (trajectory_msgs/JointTrajectory), trajectory_goal.hpp
   TrajectoryGoal,       // TrajectoryGoalPort (control_msgs/FollowJointTrajectory action)
   JointTrajectoryState, // StatePort<JointTrajectoryControllerState>
+  Pr2BaseStatus,        // StatePort<Pr2BaseStatus> (control/pr2_base_controller.hpp)
+  GripperCommand,       // GripperCommandPort (pr2_controllers_msgs/Pr2GripperCommand), pr2_gripper_ports.hpp
+  GripperGoal,          // GripperGoalPort (control_msgs/GripperCommand action), pr2_gripper_ports.hpp
+  PeriodicCommand,      // PeriodicCommandPort (pr2_msgs/PeriodicCmd), laser_scanner_traj_controller.hpp
 };
 
 class Port {
