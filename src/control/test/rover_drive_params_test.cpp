@@ -9,6 +9,7 @@
 #include "control/controller_manager.hpp"
 #include "control/rover_drive_controller.hpp"
 #include "control/rover_drive_params.hpp"
+#include "description/robot_loader.hpp"
 #include "description/urdf_parser.hpp"
 #include "mechanism/build_mechanism.hpp"
 
@@ -72,6 +73,35 @@ TEST(RoverDriveParams, FillsTheGeometryOfTheReferenceCc8AndLoads) {
   EXPECT_EQ(k.wheels[4].steering, 2);
   EXPECT_EQ(k.wheels[2].steering, -1);
   EXPECT_EQ(k.wheels[3].axis_sign, -1.0);
+}
+
+TEST(RoverDriveParams, DrivesMechsimsOwnCc8Xacro) {
+  const fs::path dir = fs::path(MECHSIM_SOURCE_DIR) / "robots" / "cc8";
+  description::LoadOptions options;
+  options.packages["mechsim_cc8"] = dir.string();
+  const description::LoadedRobot robot = description::load_robot((dir / "urdf" / "cc8.urdf.xacro").string(), options);
+  const Params ns = Params::from_yaml_string(kYaml).child("cc8");
+  EXPECT_EQ(fill_rover_drive_geometry_all(ns, robot.model), 1);
+  const mechanism::MechanismModel model = mechanism::build_mechanism(robot.model);
+  mechanism::MechanismState state = mechanism::make_state(model);
+  ControllerManager manager(model, state, ns);
+  const ControlResult r = manager.load_controller("rover");
+  ASSERT_TRUE(r.ok) << r.error;
+  auto* c = dynamic_cast<RoverDriveController*>(manager.controller("rover"));
+  ASSERT_NE(c, nullptr);
+  const RoverKinematics& k = c->config().kinematics;
+  EXPECT_DOUBLE_EQ(k.wheel_radius, 0.09);
+  EXPECT_NEAR(k.wheels[0].offset, 0.059 - 0.045, 1e-9);  // mechsim's tyres sit 0.045 m inboard
+  EXPECT_DOUBLE_EQ(c->config().max_steering_rate, 3.0);  // the steering joints' URDF limit
+  EXPECT_DOUBLE_EQ(c->config().max_wheel_speed, 20.0);
+  ASSERT_TRUE(manager.switch_controllers({"rover"}, {}, SwitchStrictness::Strict).ok);
+  manager.update(0.0, 0.001);
+  ASSERT_TRUE(c->command_port().write(Twist{{0.5, 0.0, 0.0}, {}}));
+  manager.update(0.001, 0.001);
+  // Straight ahead: 0.5 / 0.09 rad/s on every wheel, signed by its axis (FL +y, ML -y).
+  const auto s = c->state_port().read();
+  EXPECT_NEAR(s.joints[4].set_point, 0.5 / 0.09, 1e-9);
+  EXPECT_NEAR(s.joints[6].set_point, -0.5 / 0.09, 1e-9);
 }
 
 TEST(RoverDriveParams, KeepsWhatTheYamlGives) {
