@@ -1,0 +1,139 @@
+// mechsim_node: the simulation as a ROS 1 node (drop-in for gazebo_ros + gazebo_ros_control).
+//
+// Private parameters (~):
+//   model              xacro/URDF file to load (expanded by mechsim; xacro args in ~xacro_args,
+//                      a map). Without it the URDF comes from robot_description (searched
+//                      upwards from the node's namespace, like spawn_model -param).
+//   robot_description  the parameter name to read when ~model is absent (default robot_description)
+//   world              empty | mars_yard_2024 | heightmap file (default empty)
+//   x y z R P Y        spawn pose (m, rad), as spawn_model's -x -y -z -R -P -Y
+//   paused             start paused (default false), as gazebo's paused arg
+//   real_time_factor   0: as fast as possible (default); 1: wall-clock pace
+//   robot_namespace    overrides the gazebo_ros_control plugin's robotNamespace (default "/")
+//   pr2                also serve /pr2_controller_manager/* (default: the PR2 gazebo plugin is present)
+//   publish_tf         built-in robot state publisher (default true); tf_rate (Hz, default 50)
+//   publish_odom_tf    odom -> root link from the physics (default false); odom_frame (default odom)
+//   state_publish_rate Hz of <controller>/state (default 50; 0: every tick)
+//   clock_publish_rate Hz (wall) at most of /clock (default 1000)
+// When ~model is used, the expanded URDF is also set as robot_description (for RViz).
+#include <csignal>
+#include <iostream>
+
+#include <ros/ros.h>
+
+#include "description/robot_loader.hpp"
+#include "description/urdf_parser.hpp"
+#include "ros/sim_node.hpp"
+
+namespace {
+
+using mechsim::description::RobotModel;
+
+std::string plugin_namespace(const RobotModel& robot, bool* pr2) {
+  std::string ns;
+  for (const auto& plugin : robot.plugins) {
+    if (plugin.filename.find("gazebo_ros_control") != std::string::npos) {
+      if (auto it = plugin.parameters.find("robotNamespace"); it != plugin.parameters.end()) ns = it->second;
+    }
+    // The PR2's own gazebo plugin (pr2_gazebo_plugins) runs pr2_controller_manager.
+    if (plugin.filename.find("gazebo_ros_controller_manager") != std::string::npos) *pr2 = true;
+  }
+  return ns;
+}
+
+int run(int argc, char** argv) {
+  ::ros::init(argc, argv, "mechsim", ::ros::init_options::NoSigintHandler);
+  ::ros::NodeHandle pnh("~");
+  ::ros::NodeHandle nh;
+
+  mechsim::ros::BridgeOptions bridge;
+  std::string urdf, source = "robot_description";
+  std::string model_path;
+  if (pnh.getParam("model", model_path)) {
+    mechsim::description::LoadOptions load;
+    pnh.getParam("xacro_args", load.xacro_args);
+    mechsim::description::LoadedRobot loaded = mechsim::description::load_robot(model_path, load);
+    for (const std::string& w : loaded.warnings) ROS_WARN_STREAM("mechsim: " << model_path << ": " << w);
+    urdf = loaded.urdf;
+    bridge.robot = std::move(loaded.model);
+    nh.setParam("robot_description", urdf);
+  } else {
+    std::string param_name = pnh.param<std::string>("robot_description", "robot_description");
+    std::string found;
+    if (!nh.searchParam(param_name, found) || !nh.getParam(found, urdf)) {
+      throw std::runtime_error("no robot: set ~model to a xacro/URDF file or the parameter '" + param_name +
+                               "' to a URDF (searched upwards from '" + nh.getNamespace() + "')");
+    }
+    source = found;
+    std::vector<std::string> warnings;
+    bridge.robot = mechsim::description::parse_urdf_string(urdf, source, {}, &warnings);
+    for (const std::string& w : warnings) ROS_WARN_STREAM("mechsim: " << source << ": " << w);
+  }
+
+  bool pr2 = false;
+  mechsim::ros::NodeOptions options;
+  options.robot_namespace = plugin_namespace(bridge.robot, &pr2);
+  pnh.getParam("robot_namespace", options.robot_namespace);
+  if (options.robot_namespace.empty()) options.robot_namespace = "/";
+  options.pr2 = pnh.param("pr2", pr2);
+  options.publish_tf = pnh.param("publish_tf", true);
+  options.publish_odom_tf = pnh.param("publish_odom_tf", false);
+  options.odom_frame = pnh.param<std::string>("odom_frame", "odom");
+  options.tf_rate = pnh.param("tf_rate", 50.0);
+  options.state_publish_rate = pnh.param("state_publish_rate", 50.0);
+  options.clock_publish_rate = pnh.param("clock_publish_rate", 1000.0);
+
+  bridge.world = pnh.param<std::string>("world", "empty");
+  bridge.x = pnh.param("x", 0.0);
+  bridge.y = pnh.param("y", 0.0);
+  bridge.z = pnh.param("z", 0.0);
+  bridge.roll = pnh.param("R", 0.0);
+  bridge.pitch = pnh.param("P", 0.0);
+  bridge.yaw = pnh.param("Y", 0.0);
+  bridge.paused = pnh.param("paused", false);
+  bridge.real_time_factor = pnh.param("real_time_factor", 0.0);
+  // The controllers' namespace in the Params tree carries its ROS path (errors name it).
+  const std::string ns = options.robot_namespace;
+  const std::string key = ns.find_first_not_of('/') == std::string::npos ? "" : ns.substr(ns.find_first_not_of('/'));
+  mechsim::control::Params root;
+  bridge.controller_params = key.empty() ? root : root.child_or_create(key);
+
+  mechsim::ros::SimNode node(pnh, std::move(bridge), options);
+  ROS_INFO_STREAM("mechsim: " << node.bridge().robot().name << " in world '" << pnh.param<std::string>("world", "empty")
+                              << "', controller manager at " << ns << (ns.back() == '/' ? "" : "/")
+                              << "controller_manager" << (node.bridge().paused() ? " (paused)" : ""));
+
+  ::ros::AsyncSpinner spinner(2);
+  spinner.start();
+  node.start();
+  // SIGINT/SIGTERM: a clean stop (loop thread joined before ROS shuts down).
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  while (::ros::ok()) {  // rosnode kill shuts ROS down without a signal
+    timespec wait{0, 100000000};
+    if (sigtimedwait(&signals, nullptr, &wait) > 0) break;
+  }
+  node.stop();
+  spinner.stop();
+  ::ros::shutdown();
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Block the stop signals in every thread (ROS's and ours inherit the mask); main waits for them.
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "mechsim_node: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,105 @@
+// Reads and writes of controller ports through the opaque PortRef (C++20 side of the bridge).
+#include <cmath>
+
+#include "control/ports.hpp"
+#include "control/rover_drive_ports.hpp"
+#include "ros/bridge/sim_bridge.hpp"
+
+namespace mechsim::ros {
+
+namespace {
+
+template <class P>
+P* as(const PortRef& ref, std::string* error) {
+  auto* p = dynamic_cast<P*>(static_cast<control::Port*>(ref.port));
+  if (!p && error) *error = "port '" + ref.name + "' of controller '" + ref.controller + "' has another type";
+  return p;
+}
+
+// True when the state port has a snapshot newer than *sequence.
+template <class T>
+const control::StatePort<T>* fresh(const PortRef& ref, std::uint64_t* sequence) {
+  auto* p = dynamic_cast<const control::StatePort<T>*>(static_cast<control::Port*>(ref.port));
+  if (!p) return nullptr;
+  const std::uint64_t seq = p->sequence();
+  if (seq == 0 || (sequence && seq == *sequence)) return nullptr;
+  if (sequence) *sequence = seq;
+  return p;
+}
+
+}  // namespace
+
+bool write_scalar(const PortRef& port, double value, std::string* error) {
+  auto* p = as<control::ScalarCommandPort>(port, error);
+  return p && p->write(value, error);
+}
+
+bool write_array(const PortRef& port, const std::vector<double>& values, std::string* error) {
+  auto* p = as<control::ArrayCommandPort>(port, error);
+  return p && p->write(std::span<const double>(values.data(), values.size()), error);
+}
+
+bool write_twist(const PortRef& port, double vx, double vy, double vz, double wx, double wy, double wz,
+                 std::string* error) {
+  auto* p = as<control::TwistCommandPort>(port, error);
+  if (!p) return false;
+  control::Twist t;
+  t.linear = {vx, vy, vz};
+  t.angular = {wx, wy, wz};
+  return p->write(t, error);
+}
+
+bool read_joint_controller_state(const PortRef& port, JointControllerStateData& out, std::uint64_t* sequence) {
+  const auto* p = fresh<control::JointControllerState>(port, sequence);
+  if (!p) return false;
+  const control::JointControllerState s = p->read();
+  out.stamp = s.stamp;
+  out.set_point = s.set_point;
+  out.process_value = s.process_value;
+  out.process_value_dot = s.process_value_dot;
+  out.error = s.error;
+  out.time_step = s.time_step;
+  out.command = s.command;
+  out.p = s.gains.p;
+  out.i = s.gains.i;
+  out.d = s.gains.d;
+  out.i_clamp = s.gains.i_max;
+  out.antiwindup = s.gains.antiwindup;
+  return true;
+}
+
+bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t* sequence) {
+  const auto* p = fresh<control::JointStateSnapshot>(port, sequence);
+  if (!p) return false;
+  control::JointStateSnapshot s = p->read();
+  out.stamp = s.stamp;
+  out.names = std::move(s.names);
+  out.position = std::move(s.position);
+  out.velocity = std::move(s.velocity);
+  out.effort = std::move(s.effort);
+  return true;
+}
+
+bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequence) {
+  const auto* p = fresh<control::OdometrySnapshot>(port, sequence);
+  if (!p) return false;
+  const control::OdometrySnapshot s = p->read();
+  out.stamp = s.stamp;
+  out.frame_id = s.frame_id;
+  out.child_frame_id = s.child_frame_id;
+  out.x = s.x;
+  out.y = s.y;
+  const control::Quaternion q = s.orientation();
+  out.qw = q.w;
+  out.qx = q.x;
+  out.qy = q.y;
+  out.qz = q.z;
+  out.vx = s.linear.x;
+  out.vy = s.linear.y;
+  out.wz = s.angular.z;
+  out.pose_covariance.assign(s.pose_covariance.begin(), s.pose_covariance.end());
+  out.twist_covariance.assign(s.twist_covariance.begin(), s.twist_covariance.end());
+  return true;
+}
+
+}  // namespace mechsim::ros

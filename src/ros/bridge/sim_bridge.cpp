@@ -1,0 +1,186 @@
+// SimBridge over sim::Simulation (C++20; see sim_bridge.hpp for why it exists).
+#include "ros/bridge/sim_bridge.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "control/rover_drive_params.hpp"
+#include "sim/simulation.hpp"
+#include "sim/world.hpp"
+
+namespace mechsim::ros {
+
+namespace {
+
+const char* lifecycle_string(control::ControllerLifecycle state) {
+  switch (state) {
+    case control::ControllerLifecycle::Initialized: return "initialized";
+    case control::ControllerLifecycle::Running: return "running";
+    case control::ControllerLifecycle::Stopped: return "stopped";
+  }
+  return "unknown";
+}
+
+const char* ros_control_interface(mechanism::HardwareInterface hw) {
+  switch (hw) {
+    case mechanism::HardwareInterface::Effort: return "hardware_interface::EffortJointInterface";
+    case mechanism::HardwareInterface::Position: return "hardware_interface::PositionJointInterface";
+    case mechanism::HardwareInterface::Velocity: return "hardware_interface::VelocityJointInterface";
+  }
+  return "hardware_interface::JointStateInterface";
+}
+
+PortType port_type(const control::Port& port) {
+  switch (port.kind()) {
+    case control::PortKind::ScalarCommand: return PortType::ScalarCommand;
+    case control::PortKind::ArrayCommand: return PortType::ArrayCommand;
+    case control::PortKind::TwistCommand: return PortType::TwistCommand;
+    case control::PortKind::JointControllerState: return PortType::JointControllerState;
+    case control::PortKind::JointStates: return PortType::JointStates;
+    case control::PortKind::Odometry: return PortType::Odometry;
+    default: return PortType::Other;
+  }
+}
+
+}  // namespace
+
+struct SimBridge::Impl {
+  explicit Impl(BridgeOptions o) : options(std::move(o)) {}
+  BridgeOptions options;
+  control::Params params;
+  std::unique_ptr<sim::Simulation> simulation;
+  std::vector<int> physics_joint;  // per description joint; -1 when the physics has none
+};
+
+SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
+  Impl& m = *impl_;
+  sim::WorldConfig world_config;
+  world_config.name = m.options.world;
+  const sim::World world = sim::make_world(world_config);
+  sim::SimulationOptions sim_options;
+  sim_options.period = m.options.period;
+  sim_options.spawn = {m.options.x, m.options.y, m.options.z, m.options.roll, m.options.pitch, m.options.yaw};
+  sim_options.start_paused = m.options.paused;
+  sim_options.real_time_factor = m.options.real_time_factor;
+  m.params = m.options.controller_params;
+  m.simulation = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, sim_options);
+  if (m.options.paused) m.simulation->pause();
+  const description::RobotModel& robot = m.simulation->robot();
+  for (const description::Joint& joint : robot.joints) {
+    const auto index = m.simulation->physics().model().joint_index(joint.name);
+    m.physics_joint.push_back(index ? static_cast<int>(*index) : -1);
+  }
+}
+
+SimBridge::~SimBridge() = default;
+
+bool SimBridge::run_for(double duration, std::string* error) {
+  const sim::TickResult r = impl_->simulation->run_for(duration);
+  if (!r.ok && error) *error = r.error;
+  return r.ok;
+}
+
+void SimBridge::add_observer(Observer observer) {
+  impl_->simulation->add_observer(
+      [obs = std::move(observer)](const sim::Simulation& s) { obs(s.time()); });
+}
+
+void SimBridge::joint_positions(std::vector<double>& out) const {
+  const physics::Physics& p = impl_->simulation->physics();
+  out.resize(impl_->physics_joint.size());
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const int pj = impl_->physics_joint[j];
+    out[j] = pj >= 0 ? p.position(static_cast<std::size_t>(pj)) : 0.0;
+  }
+}
+
+description::Pose SimBridge::base_pose() const { return impl_->simulation->physics().base_pose(); }
+
+double SimBridge::time() const { return impl_->simulation->time(); }
+double SimBridge::period() const { return impl_->simulation->period(); }
+std::uint64_t SimBridge::ticks() const { return impl_->simulation->ticks(); }
+std::uint64_t SimBridge::resets() const { return impl_->simulation->resets(); }
+void SimBridge::pause() { impl_->simulation->pause(); }
+void SimBridge::unpause() { impl_->simulation->unpause(); }
+bool SimBridge::paused() const { return impl_->simulation->paused(); }
+void SimBridge::request_reset() { impl_->simulation->request_reset(); }
+const description::RobotModel& SimBridge::robot() const { return impl_->simulation->robot(); }
+control::Params SimBridge::controller_params() const { return impl_->params; }
+
+BridgeResult SimBridge::load_controller(const std::string& name) {
+  control::ControllerManager& cm = impl_->simulation->controllers();
+  try {
+    // The rover drive takes its geometry from the URDF where the parameters leave it out.
+    if (auto p = impl_->params.find(name); p && p->is_map()) {
+      if (p->get<std::string>("type", "") == control::kRoverDriveControllerType) {
+        control::fill_rover_drive_geometry(*p, impl_->simulation->robot());
+      }
+    }
+  } catch (const std::exception& e) {
+    return {false, e.what()};
+  }
+  const control::ControlResult r = cm.load_controller(name);
+  return {r.ok, r.error};
+}
+
+BridgeResult SimBridge::unload_controller(const std::string& name) {
+  const control::ControlResult r = impl_->simulation->controllers().unload_controller(name);
+  return {r.ok, r.error};
+}
+
+BridgeResult SimBridge::switch_controllers(const std::vector<std::string>& start, const std::vector<std::string>& stop,
+                                           bool strict, double timeout) {
+  control::ControllerManager& cm = impl_->simulation->controllers();
+  const control::SwitchResult r = cm.switch_controllers(
+      start, stop, strict ? control::SwitchStrictness::Strict : control::SwitchStrictness::BestEffort);
+  if (!r.ok) return {false, r.error};
+  BridgeResult result;
+  for (const std::string& s : r.skipped) result.error += (result.error.empty() ? "" : "; ") + s;
+  // ros_control waits for the update loop to apply the switch; a paused world never does.
+  if (!paused() && cm.switch_pending() && !cm.wait_for_switch(timeout > 0.0 ? timeout : 5.0)) {
+    return {false, "the switch was accepted but not applied within the timeout"};
+  }
+  return result;
+}
+
+std::vector<ControllerSummary> SimBridge::list_controllers() const {
+  std::vector<ControllerSummary> out;
+  for (const control::ControllerInfo& info : impl_->simulation->controllers().list_controllers()) {
+    ControllerSummary s;
+    s.name = info.name;
+    s.type = info.type;
+    s.state = lifecycle_string(info.state);
+    for (const control::ResourceClaim& claim : info.claims) {
+      s.claims.push_back({ros_control_interface(claim.interface), claim.joints});
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<std::string> SimBridge::list_controller_types() const {
+  return impl_->simulation->controllers().list_controller_types();
+}
+
+bool SimBridge::is_loaded(const std::string& name) const {
+  return impl_->simulation->controllers().controller(name) != nullptr;
+}
+
+std::vector<PortRef> SimBridge::ports(const std::string& controller) const {
+  std::vector<PortRef> out;
+  control::Controller* c = impl_->simulation->controllers().controller(controller);
+  if (!c) return out;
+  for (control::Port* p : c->ports()) {
+    PortRef ref;
+    ref.controller = controller;
+    ref.name = p->name();
+    ref.type = port_type(*p);
+    if (auto* array = dynamic_cast<control::ArrayCommandPort*>(p)) ref.size = array->size();
+    ref.port = p;
+    out.push_back(std::move(ref));
+  }
+  return out;
+}
+
+}  // namespace mechsim::ros

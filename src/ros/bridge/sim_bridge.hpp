@@ -1,0 +1,159 @@
+#pragma once
+// SimBridge: the C++17-clean face of the simulation for the ROS node. ROS headers do not compile
+// as C++20 and the sim/control headers do not compile as C++17 (std::span, defaulted
+// comparisons), so the node (C++17) reaches Simulation, ControllerManager and the controllers'
+// ports only through this header; its implementation (bridge/*.cpp) is C++20 and lives in the
+// small library mechsim_ros_bridge.
+//
+// Threads: run_for() and the tick observers belong to the node's loop thread. pause(),
+// unpause(), request_reset() and the controller-manager calls may come from any thread (the
+// simulation and the manager serialise them). A PortRef is valid while its controller is loaded:
+// the node drops every PortRef of a controller before unloading it.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "control/params.hpp"
+#include "description/robot_model.hpp"
+
+namespace mechsim::ros {
+
+struct BridgeOptions {
+  description::RobotModel robot;       // parsed robot_description
+  control::Params controller_params;  // the namespace holding the controllers (e.g. /cc8)
+  std::string world = "empty";        // empty | mars_yard_2024 | heightmap file path
+  double x = 0.0, y = 0.0, z = 0.0;   // m, spawn position (z above the ground under x, y)
+  double roll = 0.0, pitch = 0.0, yaw = 0.0;  // rad, spawn orientation
+  bool paused = false;
+  double real_time_factor = 0.0;  // 0: as fast as possible
+  double period = 0.001;          // s
+};
+
+// What a controller port is, as far as ROS binding goes.
+enum class PortType : std::uint8_t {
+  ScalarCommand,   // std_msgs/Float64
+  ArrayCommand,    // std_msgs/Float64MultiArray (size values)
+  TwistCommand,    // geometry_msgs/Twist
+  JointControllerState,  // control_msgs/JointControllerState
+  JointStates,     // sensor_msgs/JointState
+  Odometry,        // nav_msgs/Odometry
+  Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
+};
+
+// A handle on one port of one loaded controller (see the lifetime rule above).
+struct PortRef {
+  std::string controller;
+  std::string name;  // the port's name: "command", "state", "joint_states", "cmd_vel", "odom", ...
+  PortType type = PortType::Other;
+  std::size_t size = 0;  // ArrayCommand: values expected
+  void* port = nullptr;  // control::Port*, opaque here
+};
+
+struct ClaimedResources {
+  std::string hardware_interface;  // e.g. hardware_interface::EffortJointInterface
+  std::vector<std::string> resources;  // joint names
+};
+
+struct ControllerSummary {
+  std::string name, type;
+  std::string state;  // "initialized", "running", "stopped"
+  std::vector<ClaimedResources> claims;
+};
+
+struct BridgeResult {
+  bool ok = true;
+  std::string error;
+};
+
+// control_msgs/JointControllerState's content.
+struct JointControllerStateData {
+  double stamp = 0.0;
+  double set_point = 0.0, process_value = 0.0, process_value_dot = 0.0, error = 0.0;
+  double time_step = 0.0, command = 0.0;
+  double p = 0.0, i = 0.0, d = 0.0, i_clamp = 0.0;
+  bool antiwindup = false;
+};
+
+// sensor_msgs/JointState's content.
+struct JointStatesData {
+  double stamp = 0.0;
+  std::vector<std::string> names;
+  std::vector<double> position, velocity, effort;
+};
+
+// nav_msgs/Odometry's content (planar: z = 0).
+struct OdometryData {
+  double stamp = 0.0;
+  std::string frame_id, child_frame_id;
+  double x = 0.0, y = 0.0;                     // m
+  double qw = 1.0, qx = 0.0, qy = 0.0, qz = 0.0;  // orientation
+  double vx = 0.0, vy = 0.0, wz = 0.0;         // m/s, rad/s in child_frame_id
+  std::vector<double> pose_covariance, twist_covariance;  // 36 each, row-major
+};
+
+class SimBridge {
+ public:
+  using Observer = std::function<void(double time)>;  // sim time (s) after a tick
+
+  // Builds world, physics, mechanism and controller manager. Throws std::runtime_error with
+  // what failed (world name, description, mechanism).
+  explicit SimBridge(BridgeOptions options);
+  ~SimBridge();
+  SimBridge(const SimBridge&) = delete;
+  SimBridge& operator=(const SimBridge&) = delete;
+
+  // ---- loop thread
+  // Runs `duration` seconds of simulation time (paced to the real-time factor); returns at once
+  // while paused (after applying a pending reset). False with `error` when the physics diverged.
+  bool run_for(double duration, std::string* error);
+  void add_observer(Observer observer);
+  // Joint positions (rad or m) per description joint (robot().joints order); 0 for joints the
+  // physics does not have (fixed). Base pose X_WB of the root link.
+  void joint_positions(std::vector<double>& out) const;
+  description::Pose base_pose() const;
+
+  // ---- any thread
+  double time() const;  // s
+  double period() const;
+  std::uint64_t ticks() const;
+  std::uint64_t resets() const;
+  void pause();
+  void unpause();
+  bool paused() const;
+  void request_reset();
+  const description::RobotModel& robot() const;
+  // The controllers' parameter namespace (a handle on the tree the manager reads at load time).
+  control::Params controller_params() const;
+
+  BridgeResult load_controller(const std::string& name);
+  BridgeResult unload_controller(const std::string& name);
+  // strict: ros_control STRICT, else BEST_EFFORT. Waits for the tick to apply the switch (at
+  // most `timeout` seconds of wall time; not while paused).
+  BridgeResult switch_controllers(const std::vector<std::string>& start, const std::vector<std::string>& stop,
+                                  bool strict, double timeout);
+  std::vector<ControllerSummary> list_controllers() const;
+  std::vector<std::string> list_controller_types() const;
+  bool is_loaded(const std::string& name) const;
+  std::vector<PortRef> ports(const std::string& controller) const;  // empty when not loaded
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Port access (non-real-time, any thread). Writes return false with `error` when rejected (wrong
+// type, non-finite, wrong size). Reads return false when the port has nothing new since
+// `*sequence` (updated on success) or is of another type.
+bool write_scalar(const PortRef& port, double value, std::string* error);
+bool write_array(const PortRef& port, const std::vector<double>& values, std::string* error);
+bool write_twist(const PortRef& port, double vx, double vy, double vz, double wx, double wy, double wz,
+                 std::string* error);
+bool read_joint_controller_state(const PortRef& port, JointControllerStateData& out, std::uint64_t* sequence);
+bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t* sequence);
+bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequence);
+
+}  // namespace mechsim::ros

@@ -1,0 +1,260 @@
+// Each loaded controller's ROS interface, as ros_controllers names it, made at load and removed
+// at unload:
+//   command ports     <robot ns>/<controller>/<port> (std_msgs/Float64, Float64MultiArray,
+//                     geometry_msgs/Twist for the rover drive's "cmd_vel")
+//   "state"           <robot ns>/<controller>/state (control_msgs/JointControllerState) at the
+//                     controller's state_publish_rate, else the node's (default 50 Hz sim time)
+//   "joint_states"    <robot ns>/joint_states (sensor_msgs/JointState) whenever the controller
+//                     fills it (its publish_rate)
+//   "odom"            <robot ns>/<controller>/odom (nav_msgs/Odometry) at the controller's
+//                     publish_rate (default 50 Hz), and odom -> base on /tf unless enable_odom_tf
+//                     is false (diff_drive_controller's behaviour)
+// A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
+// relative names resolve in the controller's namespace. Remapping the full name works too.
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/Float64.h>
+#include <std_msgs/Float64MultiArray.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <control_msgs/JointControllerState.h>
+
+#include "ros/sim_node.hpp"
+
+namespace mechsim::ros {
+
+struct SimNode::Binding {
+  PortRef port;
+  bool alive = true;  // under bindings_mutex_: false once unbinding started
+  ::ros::Subscriber subscriber;
+  ::ros::Publisher publisher;
+  ::ros::Publisher tf_publisher;  // odometry only
+  double period = 0.0;            // s (sim time) between state messages; 0: every new snapshot
+  double next_due = 0.0;
+  std::uint64_t sequence = 0;
+  JointControllerStateData jcs;
+  JointStatesData joint_states;
+  OdometryData odom;
+};
+
+namespace {
+
+double rate_param(const control::Params& params, const std::string& controller, const char* key, double fallback) {
+  try {
+    if (auto c = params.find(controller); c && c->has(key)) return c->get<double>(key);
+  } catch (const std::exception& e) {
+    ROS_WARN_STREAM("mechsim: " << e.what());
+  }
+  return fallback;
+}
+
+std::string topic_param(const control::Params& params, const std::string& controller, const std::string& port) {
+  try {
+    if (auto c = params.find(controller); c && c->has(port + "_topic")) return c->get<std::string>(port + "_topic");
+  } catch (const std::exception& e) {
+    ROS_WARN_STREAM("mechsim: " << e.what());
+  }
+  return port;
+}
+
+}  // namespace
+
+BridgeResult SimNode::load(const std::string& name) {
+  std::lock_guard<std::mutex> lock(manager_mutex_);
+  refresh_params(name);
+  BridgeResult r = bridge_->load_controller(name);
+  if (r.ok) bind(name);
+  return r;
+}
+
+BridgeResult SimNode::unload(const std::string& name) {
+  std::lock_guard<std::mutex> lock(manager_mutex_);
+  if (!bridge_->is_loaded(name)) return {false, "controller '" + name + "' is not loaded"};
+  for (const ControllerSummary& c : bridge_->list_controllers()) {
+    if (c.name == name && c.state == "running") return {false, "controller '" + name + "' is running: stop it first"};
+  }
+  unbind(name);  // no PortRef may outlive the controller
+  BridgeResult r = bridge_->unload_controller(name);
+  if (!r.ok) bind(name);
+  return r;
+}
+
+void SimNode::bind(const std::string& controller) {
+  const control::Params params = bridge_->controller_params();
+  ::ros::NodeHandle controller_nh(controller_ns(controller));
+  std::vector<std::shared_ptr<Binding>> made;
+  for (const PortRef& port : bridge_->ports(controller)) {
+    auto b = std::make_shared<Binding>();
+    b->port = port;
+    std::weak_ptr<Binding> weak = b;
+    const std::string topic = topic_param(params, controller, port.name);
+    switch (port.type) {
+      case PortType::ScalarCommand:
+        b->subscriber = controller_nh.subscribe<std_msgs::Float64>(
+            topic, 1, [this, weak](const std_msgs::Float64::ConstPtr& msg) {
+              std::lock_guard<std::mutex> lock(bindings_mutex_);
+              auto self = weak.lock();
+              std::string error;
+              if (self && self->alive && !write_scalar(self->port, msg->data, &error)) {
+                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": command rejected: " << error);
+              }
+            });
+        break;
+      case PortType::ArrayCommand:
+        b->subscriber = controller_nh.subscribe<std_msgs::Float64MultiArray>(
+            topic, 1, [this, weak](const std_msgs::Float64MultiArray::ConstPtr& msg) {
+              std::lock_guard<std::mutex> lock(bindings_mutex_);
+              auto self = weak.lock();
+              std::string error;
+              if (self && self->alive && !write_array(self->port, msg->data, &error)) {
+                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": command rejected: " << error);
+              }
+            });
+        break;
+      case PortType::TwistCommand:
+        b->subscriber = controller_nh.subscribe<geometry_msgs::Twist>(
+            topic, 1, [this, weak](const geometry_msgs::Twist::ConstPtr& msg) {
+              std::lock_guard<std::mutex> lock(bindings_mutex_);
+              auto self = weak.lock();
+              std::string error;
+              if (self && self->alive &&
+                  !write_twist(self->port, msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.x,
+                               msg->angular.y, msg->angular.z, &error)) {
+                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": cmd_vel rejected: " << error);
+              }
+            });
+        break;
+      case PortType::JointControllerState: {
+        b->publisher = controller_nh.advertise<control_msgs::JointControllerState>(topic, 1);
+        const double rate = rate_param(params, controller, "state_publish_rate", options_.state_publish_rate);
+        b->period = rate > 0.0 ? 1.0 / rate : 0.0;
+        break;
+      }
+      case PortType::JointStates:
+        // joint_state_controller publishes in the robot namespace, not its own.
+        b->publisher = robot_nh_.advertise<sensor_msgs::JointState>(topic, 1);
+        break;
+      case PortType::Odometry: {
+        b->publisher = controller_nh.advertise<nav_msgs::Odometry>(topic, 1);
+        const double rate = rate_param(params, controller, "publish_rate", options_.odom_publish_rate);
+        b->period = rate > 0.0 ? 1.0 / rate : 0.0;
+        bool odom_tf = true;
+        try {
+          if (auto c = params.find(controller)) odom_tf = c->get<bool>("enable_odom_tf", true);
+        } catch (const std::exception& e) {
+          ROS_WARN_STREAM("mechsim: " << e.what());
+        }
+        if (odom_tf) b->tf_publisher = root_nh_.advertise<tf2_msgs::TFMessage>("/tf", 100);
+        break;
+      }
+      case PortType::Other:
+        continue;
+    }
+    made.push_back(std::move(b));
+  }
+  std::lock_guard<std::mutex> lock(bindings_mutex_);
+  for (auto& b : made) bindings_.push_back(std::move(b));
+}
+
+void SimNode::unbind(const std::string& controller) {
+  std::vector<std::shared_ptr<Binding>> removed;
+  {
+    std::lock_guard<std::mutex> lock(bindings_mutex_);
+    for (auto it = bindings_.begin(); it != bindings_.end();) {
+      if ((*it)->port.controller == controller) {
+        (*it)->alive = false;
+        removed.push_back(std::move(*it));
+        it = bindings_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  // Shut the subscribers down outside the lock: roscpp waits for a running callback, which may
+  // be waiting for the lock.
+  for (auto& b : removed) {
+    b->subscriber.shutdown();
+    b->publisher.shutdown();
+    b->tf_publisher.shutdown();
+  }
+}
+
+void SimNode::publish_controller_states(double time) {
+  std::lock_guard<std::mutex> lock(bindings_mutex_);
+  for (const std::shared_ptr<Binding>& bp : bindings_) {
+    Binding& b = *bp;
+    switch (b.port.type) {
+      case PortType::JointControllerState: {
+        if (time + 1e-9 < b.next_due) break;
+        if (!read_joint_controller_state(b.port, b.jcs, &b.sequence)) break;
+        b.next_due = time + b.period;
+        control_msgs::JointControllerState msg;
+        msg.header.stamp = ::ros::Time(b.jcs.stamp);
+        msg.set_point = b.jcs.set_point;
+        msg.process_value = b.jcs.process_value;
+        msg.process_value_dot = b.jcs.process_value_dot;
+        msg.error = b.jcs.error;
+        msg.time_step = b.jcs.time_step;
+        msg.command = b.jcs.command;
+        msg.p = b.jcs.p;
+        msg.i = b.jcs.i;
+        msg.d = b.jcs.d;
+        msg.i_clamp = b.jcs.i_clamp;
+        msg.antiwindup = b.jcs.antiwindup;
+        b.publisher.publish(msg);
+        break;
+      }
+      case PortType::JointStates: {
+        if (!read_joint_states(b.port, b.joint_states, &b.sequence)) break;
+        sensor_msgs::JointState msg;
+        msg.header.stamp = ::ros::Time(b.joint_states.stamp);
+        msg.name = b.joint_states.names;
+        msg.position = b.joint_states.position;
+        msg.velocity = b.joint_states.velocity;
+        msg.effort = b.joint_states.effort;
+        b.publisher.publish(msg);
+        break;
+      }
+      case PortType::Odometry: {
+        if (time + 1e-9 < b.next_due) break;
+        if (!read_odometry(b.port, b.odom, &b.sequence)) break;
+        b.next_due = time + b.period;
+        nav_msgs::Odometry msg;
+        msg.header.stamp = ::ros::Time(b.odom.stamp);
+        msg.header.frame_id = b.odom.frame_id;
+        msg.child_frame_id = b.odom.child_frame_id;
+        msg.pose.pose.position.x = b.odom.x;
+        msg.pose.pose.position.y = b.odom.y;
+        msg.pose.pose.orientation.w = b.odom.qw;
+        msg.pose.pose.orientation.x = b.odom.qx;
+        msg.pose.pose.orientation.y = b.odom.qy;
+        msg.pose.pose.orientation.z = b.odom.qz;
+        msg.twist.twist.linear.x = b.odom.vx;
+        msg.twist.twist.linear.y = b.odom.vy;
+        msg.twist.twist.angular.z = b.odom.wz;
+        for (std::size_t k = 0; k < 36 && k < b.odom.pose_covariance.size(); ++k) {
+          msg.pose.covariance[k] = b.odom.pose_covariance[k];
+          msg.twist.covariance[k] = b.odom.twist_covariance[k];
+        }
+        b.publisher.publish(msg);
+        if (b.tf_publisher) {
+          tf2_msgs::TFMessage tf;
+          geometry_msgs::TransformStamped t;
+          t.header = msg.header;
+          t.child_frame_id = msg.child_frame_id;
+          t.transform.translation.x = b.odom.x;
+          t.transform.translation.y = b.odom.y;
+          t.transform.rotation = msg.pose.pose.orientation;
+          tf.transforms.push_back(t);
+          b.tf_publisher.publish(tf);
+        }
+        break;
+      }
+      default:
+        break;
+    }
+  }
+}
+
+}  // namespace mechsim::ros

@@ -1,0 +1,123 @@
+// SimNode: construction, the loop thread, /clock and gazebo's simulation services.
+#include "ros/sim_node.hpp"
+
+#include <rosgraph_msgs/Clock.h>
+#include <std_srvs/Empty.h>
+
+#include "ros/xmlrpc_params.hpp"
+
+namespace mechsim::ros {
+
+SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options)
+    : private_nh_(std::move(nh)), root_nh_("/"), robot_nh_(options.robot_namespace), options_(std::move(options)) {
+  // The controllers' parameters as they are now; each load re-reads its own namespace.
+  XmlRpc::XmlRpcValue all;
+  if (robot_nh_.getParam(robot_nh_.getNamespace(), all) && all.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
+    std::string warning;
+    fill_params_from_xmlrpc(bridge.controller_params, all, &warning);
+    if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
+  }
+  bridge_ = std::make_unique<SimBridge>(std::move(bridge));
+  clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  if (options_.publish_tf) {
+    tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
+    tf_->publish_static(bridge_->time());
+  }
+  bridge_->add_observer([this](double time) { on_tick(time); });
+  advertise_sim_services();
+  advertise_controller_manager();
+  if (options_.pr2) advertise_pr2_controller_manager();
+}
+
+SimNode::~SimNode() { stop(); }
+
+void SimNode::start() {
+  stop_.store(false);
+  loop_thread_ = std::thread([this] { loop(); });
+}
+
+void SimNode::stop() {
+  stop_.store(true);
+  if (loop_thread_.joinable()) loop_thread_.join();
+}
+
+void SimNode::loop() {
+  // Chunks of 10 ms of simulation time keep stop() and pause() responsive at any pace.
+  while (!stop_.load() && ::ros::ok()) {
+    if (bridge_->paused()) {
+      bridge_->run_for(bridge_->period(), nullptr);  // applies a pending reset, sleeps 1 ms
+      // Time stands still but /clock keeps coming, as gazebo does while paused.
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last_clock_ > std::chrono::milliseconds(100)) {
+        rosgraph_msgs::Clock clock;
+        clock.clock = ::ros::Time(bridge_->time());
+        clock_pub_.publish(clock);
+        last_clock_ = now;
+      }
+      continue;
+    }
+    std::string error;
+    if (!bridge_->run_for(0.01, &error)) {
+      if (error != divergence_) ROS_ERROR_STREAM("mechsim: " << error);
+      divergence_ = error;
+    }
+  }
+}
+
+void SimNode::on_tick(double time) {
+  const auto now = std::chrono::steady_clock::now();
+  const double min_wall = options_.clock_publish_rate > 0.0 ? 1.0 / options_.clock_publish_rate : 0.0;
+  if (std::chrono::duration<double>(now - last_clock_).count() >= min_wall) {
+    rosgraph_msgs::Clock clock;
+    clock.clock = ::ros::Time(time);
+    clock_pub_.publish(clock);
+    last_clock_ = now;
+  }
+  publish_controller_states(time);
+  if (tf_) {
+    const double tf_period = options_.tf_rate > 0.0 ? 1.0 / options_.tf_rate : 0.0;
+    if (time + 1e-9 >= next_tf_) {
+      bridge_->joint_positions(joint_positions_);
+      tf_->publish(time, joint_positions_, bridge_->base_pose());
+      next_tf_ = time + tf_period;
+    }
+  }
+}
+
+void SimNode::advertise_sim_services() {
+  using Req = std_srvs::Empty::Request;
+  using Res = std_srvs::Empty::Response;
+  services_.push_back(root_nh_.advertiseService<Req, Res>("/gazebo/pause_physics", [this](Req&, Res&) {
+    bridge_->pause();
+    return true;
+  }));
+  services_.push_back(root_nh_.advertiseService<Req, Res>("/gazebo/unpause_physics", [this](Req&, Res&) {
+    bridge_->unpause();
+    return true;
+  }));
+  // Both resets put the robot back at its spawn pose and restart the running controllers; time
+  // goes on (sim/simulation.hpp says why).
+  auto reset = [this](Req&, Res&) {
+    bridge_->request_reset();
+    return true;
+  };
+  services_.push_back(root_nh_.advertiseService<Req, Res>("/gazebo/reset_simulation", reset));
+  services_.push_back(root_nh_.advertiseService<Req, Res>("/gazebo/reset_world", reset));
+}
+
+void SimNode::refresh_params(const std::string& controller) {
+  XmlRpc::XmlRpcValue value;
+  const std::string key = controller_ns(controller);
+  if (!root_nh_.getParam(key, value)) return;  // the manager reports the missing parameters
+  control::Params params = bridge_->controller_params();
+  std::string warning;
+  set_param_from_xmlrpc(params, controller, value, &warning);
+  if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
+}
+
+std::string SimNode::controller_ns(const std::string& controller) const {
+  const std::string& ns = robot_nh_.getNamespace();
+  return (ns.empty() || ns.back() != '/' ? ns + "/" : ns) + controller;
+}
+
+}  // namespace mechsim::ros

@@ -1,0 +1,92 @@
+#pragma once
+// mechsim_node: the simulation as a ROS 1 node, a drop-in for gazebo_ros + gazebo_ros_control +
+// controller_manager (README.md, "The node"). One SimNode owns:
+//   - the SimBridge (world, robot, controller manager) and the loop thread that ticks it;
+//   - /clock, and gazebo's /gazebo/{pause_physics, unpause_physics, reset_simulation, reset_world};
+//   - the controller manager services under <robot namespace>/controller_manager/ (cm_services.cpp);
+//   - each loaded controller's topics (controller_bindings.cpp);
+//   - the built-in robot state publisher (tf_publisher.cpp).
+//
+// Threads: the loop thread ticks and runs the observers (clock, controller state topics, TF);
+// ROS callbacks (services, command subscribers) run on the node's spinner threads. The binding
+// table is shared by both under `bindings_mutex_`.
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <ros/ros.h>
+
+#include "ros/bridge/sim_bridge.hpp"
+#include "ros/tf_publisher.hpp"
+
+namespace mechsim::ros {
+
+struct NodeOptions {
+  std::string robot_namespace = "/";  // where the controllers' parameters and topics live
+  double state_publish_rate = 50.0;   // Hz (sim time) of <controller>/state; 0: every tick
+  double odom_publish_rate = 50.0;    // Hz (sim time) of <controller>/odom; 0: every tick
+  double clock_publish_rate = 1000.0; // Hz (wall time) at most of /clock
+  bool publish_tf = true;
+  bool publish_odom_tf = false;
+  double tf_rate = 50.0;          // Hz (sim time)
+  std::string odom_frame = "odom";
+  bool pr2 = false;               // also the pr2_mechanism_msgs services under /pr2_controller_manager
+};
+
+class SimNode {
+ public:
+  // `nh` is the node's private handle (~). Throws std::runtime_error when the robot, world or
+  // parameters are unusable.
+  SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options);
+  ~SimNode();
+
+  void start();  // loop thread
+  void stop();   // joins it
+  SimBridge& bridge() { return *bridge_; }
+
+ private:
+  struct Binding;
+  void loop();
+  void on_tick(double time);
+  void publish_controller_states(double time);  // loop thread (controller_bindings.cpp)
+  void advertise_sim_services();
+  void advertise_controller_manager();
+  void advertise_pr2_controller_manager();
+  // Re-reads <ns>/<controller> from the parameter server into the manager's Params tree.
+  void refresh_params(const std::string& controller);
+  // Controller lifecycle with bindings (controller_bindings.cpp).
+  BridgeResult load(const std::string& name);
+  BridgeResult unload(const std::string& name);
+  void bind(const std::string& controller);
+  void unbind(const std::string& controller);
+  std::string controller_ns(const std::string& controller) const;
+
+  ::ros::NodeHandle private_nh_;
+  ::ros::NodeHandle root_nh_;
+  ::ros::NodeHandle robot_nh_;  // the robot namespace
+  NodeOptions options_;
+  std::unique_ptr<SimBridge> bridge_;
+  std::unique_ptr<TfPublisher> tf_;
+
+  ::ros::Publisher clock_pub_;
+  std::vector<::ros::ServiceServer> services_;
+  std::chrono::steady_clock::time_point last_clock_{};
+  double next_tf_ = 0.0;                 // s, sim time of the next /tf message
+  std::vector<double> joint_positions_;  // reused by the loop thread
+
+  std::mutex bindings_mutex_;
+  std::vector<std::shared_ptr<Binding>> bindings_;
+  std::mutex manager_mutex_;  // one controller-manager service at a time (as ros_control)
+
+  std::thread loop_thread_;
+  std::atomic<bool> stop_{false};
+  std::string divergence_;
+};
+
+}  // namespace mechsim::ros
