@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 namespace mechsim::control {
 
@@ -257,6 +258,10 @@ void TrajectoryChannel::drain() {
     } else {
       it->second.result.error_string = describe(e);
     }
+  }
+  // Forget the oldest finished goals beyond a bound, so that a long run does not grow.
+  for (auto it = records_.begin(); records_.size() > kMaxGoalRecords && it != records_.end();) {
+    it = goal_finished(it->second.status) ? records_.erase(it) : std::next(it);
   }
 }
 

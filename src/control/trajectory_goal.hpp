@@ -101,6 +101,9 @@ class TrajectoryChannel {
   std::optional<GoalStatus> status(std::uint64_t id);
   std::optional<TrajectoryResult> result(std::uint64_t id);
   std::uint64_t event_overflows() const { return event_overflows_.load(); }
+  // Finished goals are remembered up to this many (the oldest are forgotten first: status()
+  // and result() then return nothing for them).
+  static constexpr std::size_t kMaxGoalRecords = 1024;
 
   // Real-time (the controller's tick).
   const TrajectoryRequest* take_from_rt() noexcept;  // the newest request not yet taken, or null

@@ -187,6 +187,19 @@ TEST_F(GoalPortTest, AGoalOverwrittenBeforeTheTickIsPreemptedUnrun) {
   EXPECT_EQ(id, second.id);
 }
 
+TEST_F(GoalPortTest, RemembersABoundedNumberOfFinishedGoals) {
+  auto g = valid_goal();
+  g.trajectory.joint_names = {"a", "nope"};
+  const std::uint64_t first = port.submit(g).id;
+  std::uint64_t last = first;
+  for (std::size_t k = 0; k < TrajectoryChannel::kMaxGoalRecords + 10; ++k) last = port.submit(g).id;
+  EXPECT_FALSE(port.status(first).has_value());
+  EXPECT_EQ(port.status(last), GoalStatus::Rejected);
+  const GoalSubmission pending = port.submit(valid_goal());
+  for (std::size_t k = 0; k < TrajectoryChannel::kMaxGoalRecords + 10; ++k) (void)port.submit(g);
+  EXPECT_EQ(port.status(pending.id), GoalStatus::Pending);  // unfinished goals are never forgotten
+}
+
 TEST(TrajectoryCommandPort, RejectsWhatTheGoalPortRejectsAndCountsIt) {
   TrajectoryChannel channel(config(true));
   channel.set_running_from_rt(true);
