@@ -7,6 +7,8 @@
 #include "control/rover_drive_controller.hpp"
 #include "control/pr2_base_controller.hpp"
 #include "control/pr2_odometry.hpp"
+#include "control/pr2_gripper_controller.hpp"
+#include "control/laser_scanner_traj_controller.hpp"
 
 namespace mechsim::control {
 
@@ -74,6 +76,8 @@ void register_builtin_controllers(ControllerRegistry& r) {
   r.add(kPr2BaseController2Type, [] { return std::make_unique<Pr2BaseController>(); });
   r.add(kPr2BaseControllerType, [] { return std::make_unique<Pr2BaseController>(); });
   r.add(kPr2OdometryType, [] { return std::make_unique<Pr2OdometryController>(); });
+  r.add(kPr2GripperControllerType, [] { return std::make_unique<Pr2GripperController>(); });
+  r.add(kLaserScannerTrajControllerType, [] { return std::make_unique<LaserScannerTrajController>(); });
 }
 
 }  // namespace mechsim::control
