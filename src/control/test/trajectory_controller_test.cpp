@@ -381,6 +381,26 @@ TEST(JointTrajectoryController, GoalsFromAnotherThreadWhileTicking) {
   EXPECT_GE(succeeded, 1);
 }
 
+TEST(JointTrajectoryController, AGoalThatIsStaleWhenTheTickTakesItIsRejectedAndTheActiveOneGoesOn) {
+  Rig rig(2, kTwoJoints);
+  rig.start();
+  const GoalSubmission a = rig.goals().submit(move({"j0", "j1"}, {0.5, 0.5}, 3.0));
+  rig.tick(999);  // the last update ran at t = 0.999 s
+  auto stale = move({"j0", "j1"}, {-1.0, -1.0}, 0.0004);
+  stale.trajectory.start_time = 0.9995;  // ends at 0.9999 s: after the last update, before the next
+  const GoalSubmission b = rig.goals().submit(stale);
+  ASSERT_TRUE(b.accepted) << b.result.error_string;
+  rig.tick(1);
+  EXPECT_EQ(rig.goals().status(b.id), GoalStatus::Rejected);
+  const auto result = rig.goals().result(b.id);
+  ASSERT_TRUE(result.has_value());
+  EXPECT_EQ(result->error_code, TrajectoryResultCode::OldHeaderTimestamp);
+  EXPECT_THAT(result->error_string, HasSubstr("OLD_HEADER_TIMESTAMP"));
+  EXPECT_EQ(rig.goals().status(a.id), GoalStatus::Active);
+  rig.tick(3000);
+  EXPECT_EQ(rig.goals().status(a.id), GoalStatus::Succeeded);
+}
+
 TEST(JointTrajectoryController, ConfigurationErrorsNameTheParameter) {
   Rig rig(2, R"(
 nogains: {type: effort_controllers/JointTrajectoryController, joints: [j0]}
