@@ -44,7 +44,12 @@ std::optional<std::string> search_tree(const fs::path& root, const std::string& 
 }  // namespace
 
 std::optional<std::string> find_package(const std::string& name, const PackageMap& explicit_packages) {
-  if (auto it = explicit_packages.find(name); it != explicit_packages.end()) return it->second;
+  // Absolute, as rospack returns it: includes resolve relative names against the including file.
+  if (auto it = explicit_packages.find(name); it != explicit_packages.end()) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(it->second, ec);
+    return ec ? it->second : absolute.lexically_normal().string();
+  }
   const char* env = std::getenv("ROS_PACKAGE_PATH");
   if (env == nullptr) return std::nullopt;
   std::stringstream paths(env);

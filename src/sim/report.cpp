@@ -228,11 +228,11 @@ void write_report(const Scenario& s, const Simulation& sim, ScenarioResult& resu
       std::ostringstream tr;
       tr << "set terminal pngcairo size " << 560 * cols << "," << 260 * rows + 60 << " font 'DejaVu Sans,9'\nset output "
          << quoted((dir / "tracking.png").string()) << "\nset datafile separator ','\nset key top left\nset grid\n"
-         << "set multiplot layout " << rows << "," << cols << " title " << quoted(s.name + ": set point vs measured") << "\n";
+         << "set multiplot layout " << rows << "," << cols << " title " << quoted(s.name + ": set point vs measured") << " noenhanced\n";
       std::ostringstream er;
       er << "set terminal pngcairo size 1200,700 font 'DejaVu Sans,10'\nset output " << quoted((dir / "errors.png").string())
          << "\nset datafile separator ','\nset key outside right\nset grid\nset xlabel 'time (s)'\nset ylabel 'error'\n"
-         << "set title " << quoted(s.name + ": controller errors") << "\nplot ";
+         << "set title " << quoted(s.name + ": controller errors") << " noenhanced\nplot ";
       for (std::size_t k = 0; k < n; ++k) {
         const std::size_t col = 2 + 4 * k;
         tr << "set title " << quoted(result.tracking[k].controller) << " noenhanced\nplot " << csv << " using 1:" << col

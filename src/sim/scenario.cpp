@@ -104,7 +104,7 @@ TimelineEvent read_event(const Params& e) {
 Check read_check(const Params& c) {
   Check check;
   const std::vector<std::string> keys = c.keys();
-  if (keys.size() != 1) fail(c, "a check is a map with one key (reach, final_pose, final_heading, upright, odometry, distance)");
+  if (keys.size() != 1) fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance)");
   const std::string& kind = keys.front();
   const Params p = c.child(kind);
   check.text = kind;
@@ -124,6 +124,10 @@ Check read_check(const Params& c) {
     check.kind = Check::Kind::FinalHeading;
     check.yaw = p.get<double>("yaw_deg") * kDeg;
     check.within_angle = p.get<double>("within_deg") * kDeg;
+  } else if (kind == "direction") {
+    check.kind = Check::Kind::Direction;
+    check.yaw = p.get<double>("deg") * kDeg;
+    check.within_angle = p.get<double>("within_deg") * kDeg;
   } else if (kind == "upright") {
     check.kind = Check::Kind::Upright;
     check.max_tilt = p.get<double>("max_tilt_deg") * kDeg;
@@ -135,7 +139,7 @@ Check read_check(const Params& c) {
     check.min_distance = p.get<double>("min", 0.0);
     check.max_distance = p.get<double>("max", 1e300);
   } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, upright, odometry, distance)");
+    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance)");
   }
   return check;
 }

@@ -26,6 +26,7 @@
 //     - {reach: {x: 10, y: 0, within: 0.5, by: 40}}
 //     - {final_pose: {x: 5, y: 0, within: 0.1, lateral_within: 0.05}}
 //     - {final_heading: {yaw_deg: 90, within_deg: 5}}
+//     - {direction: {deg: 45, within_deg: 5}}   # of the straight line from spawn to the end
 //     - {upright: {max_tilt_deg: 30}}
 //     - {odometry: {max_error_fraction: 0.03}}
 
@@ -67,11 +68,11 @@ struct TimelineEvent {
 };
 
 struct Check {
-  enum class Kind { Reach, FinalPose, FinalHeading, Upright, Odometry, Distance } kind = Kind::Reach;
+  enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance } kind = Kind::Reach;
   std::string text;  // as written, for the report
   double x = 0.0, y = 0.0, within = 0.0, by = 0.0;  // Reach / FinalPose (m, s)
   std::optional<double> lateral_within;            // FinalPose: |y error| (m)
-  double yaw = 0.0, within_angle = 0.0;            // FinalHeading (rad)
+  double yaw = 0.0, within_angle = 0.0;            // FinalHeading, Direction (rad)
   double max_tilt = 0.0;                           // Upright (rad)
   double max_error_fraction = 0.0;                 // Odometry
   double min_distance = 0.0, max_distance = 0.0;   // Distance (m)

@@ -37,7 +37,15 @@ struct BoundEvent {
   control::Controller* controller = nullptr;
 };
 
-void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::TwistCommandPort*& route_port) {
+// Twist commands are held and re-sent at 50 Hz, as a teleoperation node publishes cmd_vel:
+// drive controllers stop when their command times out.
+struct HeldTwist {
+  control::TwistCommandPort* port = nullptr;
+  control::Twist twist;
+};
+
+void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::TwistCommandPort*& route_port,
+           std::vector<HeldTwist>& held) {
   const TimelineEvent& e = *b.event;
   std::string error;
   bool ok = true;
@@ -48,10 +56,18 @@ void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::Tw
     case TimelineEvent::Kind::Array:
       ok = find_port<control::ArrayCommandPort>(b.controller, control::PortKind::ArrayCommand)->write(e.array, &error);
       break;
-    case TimelineEvent::Kind::Twist:
+    case TimelineEvent::Kind::Twist: {
       route.reset();
-      ok = find_port<control::TwistCommandPort>(b.controller, control::PortKind::TwistCommand)->write(e.twist, &error);
+      auto* port = find_port<control::TwistCommandPort>(b.controller, control::PortKind::TwistCommand);
+      ok = port->write(e.twist, &error);
+      auto it = std::find_if(held.begin(), held.end(), [&](const HeldTwist& h) { return h.port == port; });
+      if (it == held.end()) {
+        held.push_back({port, e.twist});
+      } else {
+        it->twist = e.twist;
+      }
       break;
+    }
     case TimelineEvent::Kind::Mode:
       ok = find_port<control::DriveModeCommandPort>(b.controller, control::PortKind::DriveModeCommand)->write(e.mode, &error);
       break;
@@ -149,6 +165,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
 
   std::optional<RouteFollower> route;
   control::TwistCommandPort* route_port = nullptr;
+  std::vector<HeldTwist> held;
   std::size_t next_event = 0;
   const std::uint64_t total_ticks = static_cast<std::uint64_t>(std::llround(s.duration / s.period));
   const std::uint64_t record_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(1.0 / (s.record_rate * s.period))));
@@ -166,13 +183,17 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
     const double t = sim->time();
     while (next_event < events.size() && events[next_event].event->at <= t + 1e-9) {
-      apply(events[next_event], route, route_port);
+      apply(events[next_event], route, route_port, held);
       ++next_event;
     }
     const description::Pose X_WB = sim->physics().base_pose();
     const double yaw = yaw_of(X_WB.orientation);
-    if (route && route_port != nullptr && tick % route_every == 0) {
-      route_port->write(route->update(X_WB.position.x, X_WB.position.y, yaw));
+    if (tick % route_every == 0) {
+      if (route && route_port != nullptr) {
+        route_port->write(route->update(X_WB.position.x, X_WB.position.y, yaw));
+      } else {
+        for (const HeldTwist& h : held) h.port->write(h.twist);
+      }
     }
     if (tick % record_every == 0) recorder.sample(odometry);
 
@@ -235,6 +256,15 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         const double err = std::abs(wrap_angle(result.final_yaw - c.yaw));
         out.passed = err <= c.within_angle;
         std::snprintf(buf, sizeof buf, "final heading %.2f deg, wanted %.2f +- %.2f deg: off by %.2f deg", result.final_yaw * 180 / M_PI,
+                      c.yaw * 180 / M_PI, c.within_angle * 180 / M_PI, err * 180 / M_PI);
+        break;
+      }
+      case Check::Kind::Direction: {
+        const double dx = result.final_x - s.spawn.x, dy = result.final_y - s.spawn.y;
+        const double direction = std::atan2(dy, dx);
+        const double err = std::abs(wrap_angle(direction - c.yaw));
+        out.passed = std::hypot(dx, dy) > 1e-3 && err <= c.within_angle;
+        std::snprintf(buf, sizeof buf, "direction of travel %.2f deg, wanted %.2f +- %.2f deg: off by %.2f deg", direction * 180 / M_PI,
                       c.yaw * 180 / M_PI, c.within_angle * 180 / M_PI, err * 180 / M_PI);
         break;
       }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "control/rover_drive_params.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/propagation.hpp"
 #include "physics/heightmap_sample.hpp"
@@ -48,6 +49,9 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   physics_ = std::make_unique<physics::Physics>(physics_model_);
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
+  // Rover drives take their geometry (wheel positions, axis signs, radius) from the robot
+  // description where their YAML leaves it out, as a user would otherwise measure it by hand.
+  control::fill_rover_drive_geometry_all(controller_params, robot_);
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params));
 
   const std::size_t n = mechanism_->joints.size();

@@ -113,7 +113,12 @@ StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, 
   ns.set(controller + "/pid/d", gains.d);
   SimulationOptions options;
   options.spawn.z = setup.spawn_z;
-  Simulation sim(setup.robot, make_world(setup.world), ns, options);
+  World world = make_world(setup.world);
+  if (velocity && setup.velocity_on_stand) {
+    world.spec.gravity = 0.0;
+    options.spawn.z = 1.0;
+  }
+  Simulation sim(setup.robot, world, ns, options);
   std::vector<std::string> start{controller};
   for (const std::string& name : ns.keys()) {
     if (name == controller || !ns.child(name).is_map() || !ns.child(name).has("type")) continue;
@@ -200,7 +205,9 @@ TuneResult tune_joint(const TuneSetup& setup) {
       c += (m.settling_time < 0 ? 2.0 * horizon : m.settling_time) / tg.settling_time;
     }
     c += 10.0 * std::max(0.0, m.overshoot - tg.overshoot) / tg.overshoot;
-    c += std::abs(m.steady_state_error / m.step) * 20.0;
+    // A final error costs as much as missing the time target by several times: a velocity loop
+    // that settles off its set point is useless for driving.
+    c += std::abs(m.steady_state_error / m.step) * 100.0;
     c += 0.02 * std::log10(1.0 + g.p + g.i + g.d);  // prefer gentler gains among equals
     return c;
   };

@@ -36,6 +36,10 @@ struct TuneSetup {
   description::RobotModel robot;
   WorldConfig world;
   double spawn_z = 0.02;        // m above the ground
+  // Velocity controllers are tuned with the robot "on a stand", wheels free: no gravity and
+  // spawned 1 m up, as wheel loops are tuned on blocks. Position controllers are tuned on the
+  // ground, where steering meets its real load (tyre scrub).
+  bool velocity_on_stand = true;
   std::string controllers_file;
   std::string controllers_namespace;  // "" when the controllers are at the top level
   std::string joint;            // the joint whose controller is tuned
