@@ -1,5 +1,6 @@
 #include "description/robot_loader.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -17,6 +18,8 @@ bool needs_xacro(const std::string& path, const std::string& text) {
 }  // namespace
 
 LoadedRobot load_robot(const std::string& path, const LoadOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw DescriptionError(path + ": is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DescriptionError(path + ": cannot open the file");
   std::ostringstream buffer;

@@ -336,6 +336,8 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
 
 RobotModel parse_urdf_file(const std::string& path, const UrdfOptions& options,
                            std::vector<std::string>* warnings) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw DescriptionError(path + ": is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DescriptionError(path + ": cannot open the file");
   std::ostringstream buffer;

@@ -155,6 +155,10 @@ TEST(CheckCli, CommandLineMistakes) {
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_THAT(missing.err, HasSubstr("/nonexistent/robot.urdf: cannot open the file"));
 
+  const ProcessResult directory = check({::testing::TempDir()});
+  EXPECT_EQ(directory.exit_code, 1);
+  EXPECT_THAT(directory.err, HasSubstr("is a directory, not a file"));
+
   const std::string ok = temp_file("ok.urdf", R"(<robot name="ok"><link name="a"/></robot>)");
   const ProcessResult bad_mapping = check({ok, "no_separator"});
   EXPECT_EQ(bad_mapping.exit_code, 1);
