@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iomanip>
@@ -199,19 +200,34 @@ void write_report(const Scenario& s, const Simulation& sim, ScenarioResult& resu
          << ":" << terrain->size_y / 2 << "]\n";
       plots += quoted((dir / "terrain.csv").string()) + " using 1:2:3 with image notitle, ";
     } else {
-      gp << "set grid\n";
+      // Flat ground: frame the path and waypoints with a 1 m margin, square.
+      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+      auto extend = [&](double x, double y) {
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      };
+      std::ifstream csv(dir / "base.csv");
+      std::string line;
+      std::getline(csv, line);
+      while (std::getline(csv, line)) {
+        double t = 0, x = 0, y = 0;
+        if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &t, &x, &y) == 3) extend(x, y);
+      }
+      for (const auto& w : waypoints) extend(w[0], w[1]);
+      const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+      const double half = std::max({x1 - x0, y1 - y0, 1.0}) / 2 + 1.0;
+      gp << "set grid\nset xrange [" << cx - half << ":" << cx + half << "]\nset yrange [" << cy - half << ":" << cy + half << "]\n";
     }
     std::ofstream wp(dir / "waypoints.csv");
     wp << "x,y\n";
     for (const auto& w : waypoints) wp << w[0] << ',' << w[1] << '\n';
     wp.close();
     const std::string base = quoted((dir / "base.csv").string());
-    plots += base + " using 2:3 with lines lw 3 lc rgb '#0050ff' title 'true path', ";
-    if (result.has_odometry) plots += base + " using 8:9 with lines lw 2 dt 2 lc rgb '#ff00ff' title 'odometry', ";
     if (!waypoints.empty()) {
-      plots += quoted((dir / "waypoints.csv").string()) + " using 1:2 with linespoints pt 7 ps 1.5 lc rgb '#00c000' title 'waypoints', ";
+      plots += quoted((dir / "waypoints.csv").string()) + " using 1:2 with linespoints lw 1 pt 7 ps 1.5 lc rgb '#00c000' title 'waypoints', ";
     }
-    plots += base + " every ::0::0 using 2:3 with points pt 5 ps 2 lc rgb '#000000' title 'start'\n";
+    if (result.has_odometry) plots += base + " using 8:9 with lines lw 2 dt 2 lc rgb '#ff00ff' title 'odometry', ";
+    plots += base + " using 2:3 with lines lw 3 lc rgb '#0050ff' title 'true path', ";
+    plots += base + " every ::1::1 using 2:3 with points pt 5 ps 2 lc rgb '#000000' title 'start'\n";
     const std::string script = gp.str() + "plot " + plots;
     if (const std::string err = run_gnuplot(dir, "path", script); !err.empty()) {
       result.warnings.push_back(err);
