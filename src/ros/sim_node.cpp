@@ -54,6 +54,8 @@ void SimNode::loop() {
         clock_pub_.publish(clock);
         last_clock_ = now;
       }
+      // The frames at the paused time, once (a world started paused has never ticked).
+      if (tf_ && last_tf_ != bridge_->time()) publish_tf(bridge_->time());
       continue;
     }
     std::string error;
@@ -74,14 +76,16 @@ void SimNode::on_tick(double time) {
     last_clock_ = now;
   }
   publish_controller_states(time);
-  if (tf_) {
-    const double tf_period = options_.tf_rate > 0.0 ? 1.0 / options_.tf_rate : 0.0;
-    if (time + 1e-9 >= next_tf_) {
-      bridge_->joint_positions(joint_positions_);
-      tf_->publish(time, joint_positions_, bridge_->base_pose());
-      next_tf_ = time + tf_period;
-    }
+  if (tf_ && time + 1e-9 >= next_tf_) {
+    publish_tf(time);
+    next_tf_ = time + (options_.tf_rate > 0.0 ? 1.0 / options_.tf_rate : 0.0);
   }
+}
+
+void SimNode::publish_tf(double time) {
+  bridge_->joint_positions(joint_positions_);
+  tf_->publish(time, joint_positions_, bridge_->base_pose());
+  last_tf_ = time;
 }
 
 void SimNode::advertise_sim_services() {

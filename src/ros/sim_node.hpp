@@ -54,7 +54,8 @@ class SimNode {
   struct Binding;
   void loop();
   void on_tick(double time);
-  void publish_controller_states(double time);  // loop thread (controller_bindings.cpp)
+  void publish_controller_states(double time);
+  void publish_tf(double time);  // loop thread  // loop thread (controller_bindings.cpp)
   void advertise_sim_services();
   void advertise_controller_manager();
   void advertise_pr2_controller_manager();
@@ -78,6 +79,7 @@ class SimNode {
   std::vector<::ros::ServiceServer> services_;
   std::chrono::steady_clock::time_point last_clock_{};
   double next_tf_ = 0.0;                 // s, sim time of the next /tf message
+  double last_tf_ = -1.0;                // s, sim time of the last one
   std::vector<double> joint_positions_;  // reused by the loop thread
 
   std::mutex bindings_mutex_;

@@ -5,6 +5,7 @@
 //                      a map). Without it the URDF comes from robot_description (searched
 //                      upwards from the node's namespace, like spawn_model -param).
 //   robot_description  the parameter name to read when ~model is absent (default robot_description)
+//   spawn_timeout      s (wall) to wait for that parameter to appear (default 60)
 //   world              empty | mars_yard_2024 | heightmap file (default empty)
 //   x y z R P Y        spawn pose (m, rad), as spawn_model's -x -y -z -R -P -Y
 //   paused             start paused (default false), as gazebo's paused arg
@@ -60,7 +61,16 @@ int run(int argc, char** argv) {
   } else {
     std::string param_name = pnh.param<std::string>("robot_description", "robot_description");
     std::string found;
-    if (!nh.searchParam(param_name, found) || !nh.getParam(found, urdf)) {
+    // Like gazebo waiting for spawn_model: the description may be set after the node starts.
+    const ::ros::WallTime deadline = ::ros::WallTime::now() + ::ros::WallDuration(pnh.param("spawn_timeout", 60.0));
+    auto have = [&] { return nh.searchParam(param_name, found) && nh.getParam(found, urdf); };
+    bool waited = false;
+    while (!have() && ::ros::WallTime::now() < deadline && ::ros::ok()) {
+      if (!waited) ROS_INFO_STREAM("mechsim: waiting for the parameter '" << param_name << "' (the robot to spawn)");
+      waited = true;
+      ::ros::WallDuration(0.1).sleep();
+    }
+    if (urdf.empty() && !have()) {
       throw std::runtime_error("no robot: set ~model to a xacro/URDF file or the parameter '" + param_name +
                                "' to a URDF (searched upwards from '" + nh.getNamespace() + "')");
     }
