@@ -20,7 +20,10 @@ if [[ "${1:-}" == "--with-ros" ]]; then
              libtrajectory-msgs-dev libactionlib-msgs-dev libtf2-msgs-dev libros-rosgraph-msgs-dev
              ros-std-msgs ros-std-srvs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs
              ros-trajectory-msgs ros-actionlib-msgs ros-tf2-msgs ros-rosgraph-msgs
-             python3-genmsg python3-gencpp python3-empy)
+             python3-genmsg python3-gencpp python3-empy
+             libtopic-tools-dev
+             # mechsim_node's launch files and scripts/rviz_screenshot.sh: RViz under Xvfb.
+             rviz xvfb imagemagick)
 fi
 
 missing=()
