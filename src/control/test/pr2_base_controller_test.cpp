@@ -171,6 +171,33 @@ TEST(Pr2BaseController, InitErrorsNameTheParameterPath) {
               HasSubstr("/base/base_controller/max_rotational_velocity"));
 }
 
+TEST(Pr2BaseController, ClosedLoopOnTheTestPlantConvergesAndOdometryAgrees) {
+  // Every joint a unit inertia (no ground): the casters must settle at their headings and the
+  // wheels at their speeds, and the odometry running beside must read the commanded twist.
+  auto robot = testing::make_pr2_base_robot();
+  std::string yaml = testing::pr2_base_yaml("    max_translational_acceleration: {x: 1.0, y: 1.0}\n    timeout: 0\n");
+  yaml.replace(yaml.find("caster_pid: {p: 20.0, d: 1.0}"), 29, "caster_pid: {p: 100.0, d: 20.0}");
+  ControllerManager m(robot->model, robot->state, Params::from_yaml_string(yaml).child("base"));
+  ASSERT_TRUE(m.load_controller("base_controller").ok);
+  ASSERT_TRUE(m.load_controller("odometry").ok);
+  ASSERT_TRUE(m.switch_controllers({"base_controller", "odometry"}, {}, SwitchStrictness::Strict).ok);
+  auto* base = dynamic_cast<Pr2BaseController*>(m.controller("base_controller"));
+  auto* odom = dynamic_cast<Pr2OdometryController*>(m.controller("odometry"));
+  double t = testing::run(m, *robot, 0.0, 1);
+  ASSERT_TRUE(base->command_port().write({{0.1, 0.2, 0.0}, {}}));
+  t = testing::run(m, *robot, t, 8000);
+  const auto s = base->state_port().read();
+  const double heading = std::atan2(0.2, 0.1);
+  for (std::size_t c = 0; c < 4; ++c) EXPECT_NEAR(s.joints[c].process_value, heading, 1e-3) << s.joint_names[c];
+  const double wheel = std::hypot(0.1, 0.2) / kPr2WheelRadius;
+  for (std::size_t w = 4; w < 12; ++w) EXPECT_NEAR(s.joints[w].process_value, wheel, 0.01) << s.joint_names[w];
+  const OdometrySnapshot o = odom->odometry_port().read();
+  EXPECT_NEAR(o.linear.x, 0.1, 1e-3);
+  EXPECT_NEAR(o.linear.y, 0.2, 1e-3);
+  EXPECT_NEAR(o.angular.z, 0.0, 1e-3);
+  EXPECT_LT(o.residual, 1e-3);
+}
+
 TEST(Pr2Odometry, IntegratesTheWheelsOfTheTestBase) {
   auto robot = testing::make_pr2_base_robot();
   ControllerManager m(robot->model, robot->state, Params::from_yaml_string(testing::pr2_base_yaml()).child("base"));
@@ -248,6 +275,38 @@ TEST(Pr2BaseParams, FillsTheGeometryFromTheReferencePr2AndLoadsOnItsMechanism) {
   double t = 0.0;
   for (int i = 0; i < 10; ++i, t += 0.001) manager.update(t, 0.001);
   EXPECT_EQ(manager.controller_info("base_controller")->statistics.failures, 0u);
+}
+
+TEST(Pr2BaseParams, GripperAndLaserLoadOnTheReferencePr2Mechanism) {
+  const auto robot = reference_pr2();
+  if (!robot) GTEST_SKIP() << "shared data not found at " << MECHSIM_SHARED_DIR << "/robots/reference/pr2.urdf";
+  const Params ns = Params::from_yaml_string(R"(pr2:
+  r_gripper_controller:
+    type: pr2_mechanism_controllers/Pr2GripperController
+    joint: r_gripper_joint
+    pid: {p: 10000.0, d: 1000.0}
+  laser_tilt_controller:
+    type: pr2_mechanism_controllers/LaserScannerTrajController
+    joint: laser_tilt_mount_joint
+    pid: {p: 8.0, d: 0.4}
+    profile: linear
+    period: 2.0
+    amplitude: 0.6
+    offset: 0.3
+)").child("pr2");
+  const mechanism::MechanismModel model = mechanism::build_mechanism(*robot);
+  mechanism::MechanismState state = mechanism::make_state(model);
+  ControllerManager manager(model, state, ns);
+  for (const char* name : {"r_gripper_controller", "laser_tilt_controller"}) {
+    const ControlResult r = manager.load_controller(name);
+    ASSERT_TRUE(r.ok) << r.error;
+  }
+  ASSERT_TRUE(manager.switch_controllers({"r_gripper_controller", "laser_tilt_controller"}, {}, SwitchStrictness::Strict).ok);
+  double t = 0.0;
+  for (int i = 0; i < 10; ++i, t += 0.001) manager.update(t, 0.001);
+  EXPECT_EQ(manager.controller_info("r_gripper_controller")->statistics.failures, 0u);
+  auto* laser = manager.controller("laser_tilt_controller")->port_as<StatePort<JointControllerState>>("state");
+  EXPECT_NEAR(laser->read().set_point, 0.3 - 0.6 + 4.0 * 0.6 * 0.009 / 2.0, 1e-9);
 }
 
 TEST(Pr2BaseParams, UnknownCasterLinkNamesTheParameter) {
