@@ -46,6 +46,18 @@
 //   "gains/<joint>"  PidGainsPort per joint
 //
 // starting() holds the measured caster headings, zeroes the command and resets the PIDs.
+//
+// A minimal YAML for the PR2 (the geometry comes from the URDF through
+// control::fill_pr2_base_geometry_all, which the simulation calls on the controller namespace):
+//   base_controller:
+//     type: pr2_mechanism_controllers/Pr2BaseController2
+//     caster_names: fl_caster_rotation_link fr_caster_rotation_link bl_caster_rotation_link br_caster_rotation_link
+//     caster_pid: {p: 100.0, d: 8.0}
+//     wheel_pid: {p: 8.0, i: 0.5, i_clamp: 2.0}
+//   base_odometry:
+//     type: pr2_mechanism_controllers/Pr2Odometry
+//     caster_names: fl_caster_rotation_link fr_caster_rotation_link bl_caster_rotation_link br_caster_rotation_link
+// (gains to be tuned in simulation; the values above are a starting point, not the PR2's).
 
 #include <memory>
 #include <vector>

@@ -165,12 +165,20 @@ int fill_pr2_base_geometry(const Params& params, const description::RobotModel& 
   const std::string base = params.get<std::string>("base_link_frame", "base_link");
   const auto where = [&](const std::string& key, std::size_t i) { return path_of(params, key) + "[" + std::to_string(i) + "]"; };
 
+  // The wheels of a caster: the joints below its rotation link whose axis is lateral.
+  const auto wheels_below = [&](const description::Link& link, std::vector<std::string>& wheels) {
+    for (const std::string& j : link.child_joints) {
+      const description::Joint* joint = model.joint(j);
+      if (joint != nullptr && std::abs(joint->axis.y) > 0.9) wheels.push_back(j);
+    }
+  };
+  std::vector<std::string> derived_wheels;
   if (!p.has("caster_joints")) {
     if (!p.has("caster_names")) {
       throw ControllerConfigError("parameter " + path_of(params, "caster_joints") + " not found (nor caster_names)");
     }
     const auto links = names_list(params, "caster_names");
-    std::vector<std::string> casters, wheels;
+    std::vector<std::string> casters;
     for (std::size_t i = 0; i < links.size(); ++i) {
       const description::Link* link = model.link(links[i]);
       if (link == nullptr || link->parent_joint.empty()) {
@@ -178,17 +186,25 @@ int fill_pr2_base_geometry(const Params& params, const description::RobotModel& 
                                     ") in robot '" + model.name + "'");
       }
       casters.push_back(link->parent_joint);
-      for (const std::string& j : link->child_joints) {
-        const description::Joint* joint = model.joint(j);
-        if (joint != nullptr && std::abs(joint->axis.y) > 0.9) wheels.push_back(j);
-      }
+      wheels_below(*link, derived_wheels);
     }
     p.set("caster_joints", casters);
     ++set;
-    if (!p.has("wheel_joints")) {
-      p.set("wheel_joints", wheels);
-      ++set;
+  } else if (!p.has("wheel_joints")) {
+    const auto casters = read_rover_joint_list(params, "caster_joints", 1);
+    for (std::size_t i = 0; i < casters.size(); ++i) {
+      const description::Joint* joint = model.joint(casters[i]);
+      const description::Link* link = joint != nullptr ? model.link(joint->child_link) : nullptr;
+      if (link == nullptr) {
+        throw ControllerConfigError("unknown joint '" + casters[i] + "' (parameter " + where("caster_joints", i) +
+                                    ") in robot '" + model.name + "'");
+      }
+      wheels_below(*link, derived_wheels);
     }
+  }
+  if (!p.has("wheel_joints")) {
+    p.set("wheel_joints", derived_wheels);
+    ++set;
   }
   const auto casters = read_rover_joint_list(params, "caster_joints", 1);
   const auto wheels = read_rover_joint_list(params, "wheel_joints", 1);

@@ -59,8 +59,8 @@ struct Pr2BaseConfig {
 Pr2BaseConfig read_pr2_base_config(const Params& params);
 
 // Sets the geometry parameters the controller at `params` lacks from `model` (caster and wheel
-// joint poses at zero, collision cylinder radius): caster_joints and wheel_joints (from
-// caster_names when absent), wheel_radius, caster_positions, caster_axis_signs, wheel_casters,
+// joint poses at zero, collision cylinder radius): caster_joints (from caster_names when
+// absent), wheel_joints (the lateral-axis joints below the casters' links when absent), wheel_radius, caster_positions, caster_axis_signs, wheel_casters,
 // wheel_offsets, wheel_axis_signs. Values present are kept. Returns the number of parameters
 // set. Throws ControllerConfigError naming the parameter path and the joint when the
 // description does not fit (unknown joint or link, a caster axis not vertical, a wheel axis not

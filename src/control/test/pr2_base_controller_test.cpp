@@ -245,7 +245,7 @@ TEST(Pr2BaseParams, FillsTheGeometryFromTheReferencePr2AndLoadsOnItsMechanism) {
     fl_caster_l_wheel_joint: {p: 5.0}
   odometry:
     type: pr2_mechanism_controllers/Pr2Odometry
-    caster_names: [fl_caster_rotation_link, fr_caster_rotation_link, bl_caster_rotation_link, br_caster_rotation_link]
+    caster_joints: [fl_caster_rotation_joint, fr_caster_rotation_joint, bl_caster_rotation_joint, br_caster_rotation_joint]
 )").child("pr2");
   EXPECT_EQ(fill_pr2_base_geometry_all(ns, *robot), 2);
   const Params p = ns.child("base_controller");
@@ -259,6 +259,10 @@ TEST(Pr2BaseParams, FillsTheGeometryFromTheReferencePr2AndLoadsOnItsMechanism) {
   EXPECT_EQ(p.get<std::string>("wheel_casters/bl_caster_r_wheel_joint"), "bl_caster_rotation_joint");
   EXPECT_EQ(p.get<double>("wheel_axis_signs/fr_caster_l_wheel_joint"), 1.0);
   EXPECT_EQ(fill_pr2_base_geometry(p, *robot), 0);
+  EXPECT_EQ(ns.child("odometry").get<std::vector<std::string>>("wheel_joints"),
+            (std::vector<std::string>{"fl_caster_l_wheel_joint", "fl_caster_r_wheel_joint", "fr_caster_l_wheel_joint",
+                                      "fr_caster_r_wheel_joint", "bl_caster_l_wheel_joint", "bl_caster_r_wheel_joint",
+                                      "br_caster_l_wheel_joint", "br_caster_r_wheel_joint"}));
 
   const mechanism::MechanismModel model = mechanism::build_mechanism(*robot);
   mechanism::MechanismState state = mechanism::make_state(model);
