@@ -225,6 +225,22 @@ TEST(Pr2Odometry, IntegratesTheWheelsOfTheTestBase) {
   EXPECT_NEAR(odom->odometry_port().read().x, 0.0005, 1e-9);
 }
 
+TEST(Pr2Odometry, InitErrorsNameTheParameterPath) {
+  auto robot = testing::make_pr2_base_robot();
+  const auto load = [&](const std::string& extra) {
+    const std::string yaml = "base:\n  odometry:\n    type: pr2_mechanism_controllers/Pr2Odometry\n" +
+                             testing::pr2_base_geometry_yaml(4) + extra;
+    ControllerManager m(robot->model, robot->state, Params::from_yaml_string(yaml).child("base"));
+    return m.load_controller("odometry").error;
+  };
+  EXPECT_EQ(load(""), "");
+  EXPECT_THAT(load("    ils_weight_type: Huber\n"), HasSubstr("/base/odometry/ils_weight_type"));
+  EXPECT_THAT(load("    ils_max_iterations: -2\n"), HasSubstr("/base/odometry/ils_max_iterations"));
+  EXPECT_THAT(load("    wheel_radius_multiplier: 0\n"), HasSubstr("/base/odometry/wheel_radius_multiplier"));
+  EXPECT_THAT(load("    caster_axis_signs: {fl_caster_rotation_joint: 2}\n"),
+              HasSubstr("/base/odometry/caster_axis_signs/fl_caster_rotation_joint"));
+}
+
 std::optional<description::RobotModel> reference_pr2() {
   const std::filesystem::path path = std::filesystem::path(MECHSIM_SHARED_DIR) / "robots" / "reference" / "pr2.urdf";
   if (!std::filesystem::exists(path)) return std::nullopt;
