@@ -22,5 +22,6 @@ void add_check_command(CLI::App& app, CommandResult& result);
 void add_world_command(CLI::App& app, CommandResult& result);
 void add_run_command(CLI::App& app, CommandResult& result);
 void add_tune_command(CLI::App& app, CommandResult& result);
+void add_spawner_command(CLI::App& app, CommandResult& result);  // ROS builds: mechsim_spawner
 
 }  // namespace mechsim::apps

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   add_world_command(app, result);
   add_run_command(app, result);
   add_tune_command(app, result);
+  add_spawner_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
