@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   add_run_command(app, result);
   add_tune_command(app, result);
   add_spawner_command(app, result);
+  add_bench_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,113 @@
+// `mechsim bench ROBOT --controllers FILE`: the speed of the full tick (transmissions, controller
+// manager, safety limits, physics) against the bare physics step of the same model, and the
+// real-time factor, on one core.
+
+#include <ctime>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.hpp"
+#include "control/params.hpp"
+#include "description/robot_loader.hpp"
+#include "sim/simulation.hpp"
+
+namespace mechsim::apps {
+namespace {
+
+struct BenchArgs {
+  std::string robot;
+  std::vector<std::string> mappings, packages, start;
+  std::string controllers, ns, world = "empty";
+  bool lenient = false;
+  double seconds = 5.0;
+  double spawn_z = 0.02;
+};
+
+void run(const BenchArgs& args) {
+  description::LoadOptions load;
+  load.lenient = args.lenient;
+  for (const std::string& m : args.mappings) {
+    const auto pos = m.find(":=");
+    if (pos == std::string::npos) throw UserError("expected name:=value, got '" + m + "'");
+    load.xacro_args[m.substr(0, pos)] = m.substr(pos + 2);
+  }
+  for (const std::string& p : args.packages) {
+    const auto pos = p.find('=');
+    if (pos == std::string::npos) throw UserError("--package expects NAME=DIR, got '" + p + "'");
+    load.packages[p.substr(0, pos)] = p.substr(pos + 1);
+  }
+  description::RobotModel robot = description::load_robot(args.robot, load).model;
+  control::Params params;
+  std::vector<std::string> start = args.start;
+  if (!args.controllers.empty()) {
+    control::Params root = control::Params::from_yaml_file(args.controllers);
+    std::string ns = args.ns;
+    if (ns.empty() && root.keys().size() == 1 && !root.child(root.keys()[0]).has("type")) ns = root.keys()[0];
+    params = ns.empty() ? root : root.child(ns);
+    if (start.empty()) {
+      for (const std::string& k : params.keys()) {
+        if (params.child(k).is_map() && params.child(k).has("type")) start.push_back(k);
+      }
+    }
+  }
+  sim::WorldConfig world;
+  world.name = args.world;
+  sim::SimulationOptions options;
+  options.spawn.z = args.spawn_z;
+  sim::Simulation sim(std::move(robot), sim::make_world(world), params, options);
+  // Load everything asked for; start what does not conflict (BEST_EFFORT), as a user would.
+  std::vector<std::string> loaded;
+  for (const std::string& name : start) {
+    if (control::ControlResult r = sim.controllers().load_controller(name); r) {
+      loaded.push_back(name);
+    } else {
+      std::cerr << "warning: " << r.error << "\n";
+    }
+  }
+  const control::SwitchResult s = sim.controllers().switch_controllers(loaded, {}, control::SwitchStrictness::BestEffort);
+  for (const std::string& skipped : s.skipped) std::cerr << "warning: " << skipped << "\n";
+  sim.run_for(0.2);
+
+  const auto ticks = static_cast<long>(args.seconds / sim.period());
+  // CPU time of this thread: on a shared machine wall time measures the neighbours too.
+  auto cpu_now = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  };
+  auto time_it = [&](auto&& body) {
+    const double t0 = cpu_now();
+    for (long k = 0; k < ticks; ++k) body();
+    return cpu_now() - t0;
+  };
+  const double bare = time_it([&] { sim.physics().step(); });
+  const double full = time_it([&] { sim.step(); });
+  const double bare_rate = static_cast<double>(ticks) / bare, full_rate = static_cast<double>(ticks) / full;
+  std::printf("robot %s, %zu controllers running, %ld steps of %.4g s\n", sim.robot().name.c_str(), s.starting.size(), ticks,
+              sim.period());
+  std::printf("bare physics step: %10.0f steps/s (%.2f us)\n", bare_rate, 1e6 / bare_rate);
+  std::printf("full tick:         %10.0f steps/s (%.2f us)\n", full_rate, 1e6 / full_rate);
+  std::printf("tick overhead:     %+.1f %% over the bare step\n", 100.0 * (bare_rate / full_rate - 1.0));
+  std::printf("real-time factor:  %.2f (full tick, as fast as possible, one core)\n", full_rate * sim.period());
+  std::printf("(thread CPU time; wall time is longer when other processes share the core)\n");
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand("bench", "Speed of the full tick against the bare physics step, and the real-time factor");
+  cmd->add_option("robot", args->robot, "Robot description (.urdf or .xacro)")->required();
+  cmd->add_option("mappings", args->mappings, "xacro arguments name:=value");
+  cmd->add_option("--controllers", args->controllers, "Controller YAML (all its controllers are loaded)");
+  cmd->add_option("--namespace", args->ns, "Namespace of the controllers in the YAML");
+  cmd->add_option("--start", args->start, "Controllers to start (default: all in the namespace)");
+  cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
+  cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
+  cmd->add_option("--package", args->packages, "NAME=DIR for $(find NAME) and package://NAME");
+  cmd->add_flag("--lenient", args->lenient, "Physical-plausibility errors become warnings");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace mechsim::apps
