@@ -9,6 +9,9 @@
 //   "odom"            <robot ns>/<controller>/odom (nav_msgs/Odometry) at the controller's
 //                     publish_rate (default 50 Hz), and odom -> base on /tf unless enable_odom_tf
 //                     is false (diff_drive_controller's behaviour)
+//   trajectories      <robot ns>/<controller>/command (trajectory_msgs/JointTrajectory),
+//                     <robot ns>/<controller>/state (control_msgs/JointTrajectoryControllerState,
+//                     at the state rate), <robot ns>/<controller>/follow_joint_trajectory (action)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
 // relative names resolve in the controller's namespace. Remapping the full name works too.
 #include <geometry_msgs/Twist.h>
@@ -21,6 +24,7 @@
 #include <control_msgs/JointControllerState.h>
 
 #include "ros/sim_node.hpp"
+#include "ros/trajectory_action.hpp"
 
 namespace mechsim::ros {
 
@@ -36,6 +40,8 @@ struct SimNode::Binding {
   JointControllerStateData jcs;
   JointStatesData joint_states;
   OdometryData odom;
+  control::JointTrajectoryControllerState trajectory_state;
+  std::unique_ptr<TrajectoryActionServer> action;
 };
 
 namespace {
@@ -148,6 +154,27 @@ void SimNode::bind(const std::string& controller) {
         if (odom_tf) b->tf_publisher = root_nh_.advertise<tf2_msgs::TFMessage>("/tf", 100);
         break;
       }
+      case PortType::TrajectoryCommand:
+        b->subscriber = controller_nh.subscribe<trajectory_msgs::JointTrajectory>(
+            topic, 1, [this, weak](const trajectory_msgs::JointTrajectory::ConstPtr& msg) {
+              const control::JointTrajectory trajectory = from_msg(*msg);
+              std::lock_guard<std::mutex> lock(bindings_mutex_);
+              auto self = weak.lock();
+              std::string error;
+              if (self && self->alive && !write_trajectory(self->port, trajectory, &error)) {
+                ROS_WARN_STREAM("mechsim: " << self->port.controller << ": trajectory rejected: " << error);
+              }
+            });
+        break;
+      case PortType::TrajectoryState: {
+        b->publisher = controller_nh.advertise<control_msgs::JointTrajectoryControllerState>(topic, 1);
+        const double rate = rate_param(params, controller, "state_publish_rate", options_.state_publish_rate);
+        b->period = rate > 0.0 ? 1.0 / rate : 0.0;
+        break;
+      }
+      case PortType::TrajectoryGoal:
+        b->action = std::make_unique<TrajectoryActionServer>(controller_nh, topic, port);
+        break;
       case PortType::Other:
         continue;
     }
@@ -174,6 +201,10 @@ void SimNode::unbind(const std::string& controller) {
   // Shut the subscribers down outside the lock: roscpp waits for a running callback, which may
   // be waiting for the lock.
   for (auto& b : removed) {
+    if (b->action) {
+      b->action->shutdown();
+      b->action.reset();
+    }
     b->subscriber.shutdown();
     b->publisher.shutdown();
     b->tf_publisher.shutdown();
@@ -249,6 +280,13 @@ void SimNode::publish_controller_states(double time) {
           tf.transforms.push_back(t);
           b.tf_publisher.publish(tf);
         }
+        break;
+      }
+      case PortType::TrajectoryState: {
+        if (time + 1e-9 < b.next_due) break;
+        if (!read_trajectory_state(b.port, b.trajectory_state, &b.sequence)) break;
+        b.next_due = time + b.period;
+        b.publisher.publish(to_msg(b.trajectory_state));
         break;
       }
       default:

@@ -39,6 +39,9 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::JointControllerState: return PortType::JointControllerState;
     case control::PortKind::JointStates: return PortType::JointStates;
     case control::PortKind::Odometry: return PortType::Odometry;
+    case control::PortKind::TrajectoryCommand: return PortType::TrajectoryCommand;
+    case control::PortKind::TrajectoryGoal: return PortType::TrajectoryGoal;
+    case control::PortKind::JointTrajectoryState: return PortType::TrajectoryState;
     default: return PortType::Other;
   }
 }

@@ -14,10 +14,12 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "control/params.hpp"
+#include "control/trajectory_msgs.hpp"
 #include "description/robot_model.hpp"
 
 namespace mechsim::ros {
@@ -41,6 +43,9 @@ enum class PortType : std::uint8_t {
   JointControllerState,  // control_msgs/JointControllerState
   JointStates,     // sensor_msgs/JointState
   Odometry,        // nav_msgs/Odometry
+  TrajectoryCommand,  // trajectory_msgs/JointTrajectory ("command")
+  TrajectoryGoal,     // control_msgs/FollowJointTrajectoryAction ("follow_joint_trajectory")
+  TrajectoryState,    // control_msgs/JointTrajectoryControllerState ("state")
   Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
 };
 
@@ -155,5 +160,21 @@ bool write_twist(const PortRef& port, double vx, double vy, double vz, double wx
 bool read_joint_controller_state(const PortRef& port, JointControllerStateData& out, std::uint64_t* sequence);
 bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t* sequence);
 bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequence);
+
+// Trajectory controllers (control/trajectory_goal.hpp explains the goal life).
+bool write_trajectory(const PortRef& port, const control::JointTrajectory& trajectory, std::string* error);
+bool read_trajectory_state(const PortRef& port, control::JointTrajectoryControllerState& out,
+                           std::uint64_t* sequence);
+struct GoalTicket {
+  std::uint64_t id = 0;
+  bool accepted = false;
+  control::TrajectoryResult result;  // why it was rejected
+};
+// False when the port is not a goal port.
+bool submit_goal(const PortRef& port, const control::FollowJointTrajectoryGoal& goal, GoalTicket& ticket);
+bool cancel_goal(const PortRef& port, std::uint64_t id);
+std::optional<control::GoalStatus> goal_status(const PortRef& port, std::uint64_t id);
+std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::uint64_t id);
+bool read_goal_feedback(const PortRef& port, control::FollowJointTrajectoryFeedback& out, std::uint64_t* sequence);
 
 }  // namespace mechsim::ros
