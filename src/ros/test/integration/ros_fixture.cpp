@@ -87,11 +87,11 @@ void CC8Node::SetUp() {
   const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   // Paced at real time so that rates can be measured in wall-clock time; the physics' odom
   // frame is "world" so that it does not meet the rover drive's odom -> base_footprint.
-  node_ = std::make_unique<ChildProcess>(
-      std::vector<std::string>{MECHSIM_NODE_EXE, "__name:=mechsim",
-                               "_model:=" + std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/urdf/cc8.urdf.xacro",
-                               "_real_time_factor:=1.0", "_publish_odom_tf:=true", "_odom_frame:=world"},
-      log_dir() + "/node_" + name + ".log");
+  std::vector<std::string> argv{MECHSIM_NODE_EXE, "__name:=mechsim",
+                                "_model:=" + std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/urdf/cc8.urdf.xacro",
+                                "_real_time_factor:=1.0", "_publish_odom_tf:=true", "_odom_frame:=world"};
+  for (const std::string& a : extra_node_args()) argv.push_back(a);
+  node_ = std::make_unique<ChildProcess>(argv, log_dir() + "/node_" + name + ".log");
   clock_sub_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 10, [this](const rosgraph_msgs::Clock::ConstPtr& m) {
     std::lock_guard<std::mutex> lock(clock_mutex_);
     clock_ = m->clock.toSec();

@@ -36,6 +36,8 @@ class CC8Node : public ::testing::Test {
  protected:
   void SetUp() override;
   void TearDown() override;
+  // More mechsim_node arguments (private parameters as _name:=value).
+  virtual std::vector<std::string> extra_node_args() const { return {}; }
 
   // Runs mechsim_spawner with `args` (in namespace /cc8); the process stays until stopped.
   ChildProcess& spawner(const std::vector<std::string>& args, const std::string& name);
