@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cmd_common.hpp"
 #include "apps/commands.hpp"
 #include "control/params.hpp"
 #include "description/robot_loader.hpp"
@@ -16,35 +17,19 @@ namespace mechsim::apps {
 namespace {
 
 struct BenchArgs {
-  std::string robot;
-  std::vector<std::string> mappings, packages, start;
+  RobotArgs robot;
+  std::vector<std::string> start;
   std::string controllers, ns, world = "empty";
-  bool lenient = false;
   double seconds = 5.0;
   double spawn_z = 0.02;
 };
 
 void run(const BenchArgs& args) {
-  description::LoadOptions load;
-  load.lenient = args.lenient;
-  for (const std::string& m : args.mappings) {
-    const auto pos = m.find(":=");
-    if (pos == std::string::npos) throw UserError("expected name:=value, got '" + m + "'");
-    load.xacro_args[m.substr(0, pos)] = m.substr(pos + 2);
-  }
-  for (const std::string& p : args.packages) {
-    const auto pos = p.find('=');
-    if (pos == std::string::npos) throw UserError("--package expects NAME=DIR, got '" + p + "'");
-    load.packages[p.substr(0, pos)] = p.substr(pos + 1);
-  }
-  description::RobotModel robot = description::load_robot(args.robot, load).model;
+  description::RobotModel robot = description::load_robot(args.robot.file, load_options(args.robot)).model;
   control::Params params;
   std::vector<std::string> start = args.start;
   if (!args.controllers.empty()) {
-    control::Params root = control::Params::from_yaml_file(args.controllers);
-    std::string ns = args.ns;
-    if (ns.empty() && root.keys().size() == 1 && !root.child(root.keys()[0]).has("type")) ns = root.keys()[0];
-    params = ns.empty() ? root : root.child(ns);
+    params = controller_namespace(args.controllers, args.ns);
     if (start.empty()) {
       for (const std::string& k : params.keys()) {
         if (params.child(k).is_map() && params.child(k).has("type")) start.push_back(k);
@@ -59,7 +44,7 @@ void run(const BenchArgs& args) {
   // Load everything asked for; start what does not conflict (BEST_EFFORT), as a user would.
   std::vector<std::string> loaded;
   for (const std::string& name : start) {
-    if (control::ControlResult r = sim.controllers().load_controller(name); r) {
+    if (control::ControlResult r = sim.load_controller(name); r) {
       loaded.push_back(name);
     } else {
       std::cerr << "warning: " << r.error << "\n";
@@ -98,15 +83,12 @@ void run(const BenchArgs& args) {
 void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Speed of the full tick against the bare physics step, and the real-time factor");
-  cmd->add_option("robot", args->robot, "Robot description (.urdf or .xacro)")->required();
-  cmd->add_option("mappings", args->mappings, "xacro arguments name:=value");
+  add_robot_options(cmd, args->robot);
   cmd->add_option("--controllers", args->controllers, "Controller YAML (all its controllers are loaded)");
   cmd->add_option("--namespace", args->ns, "Namespace of the controllers in the YAML");
   cmd->add_option("--start", args->start, "Controllers to start (default: all in the namespace)");
   cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
   cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
-  cmd->add_option("--package", args->packages, "NAME=DIR for $(find NAME) and package://NAME");
-  cmd->add_flag("--lenient", args->lenient, "Physical-plausibility errors become warnings");
   cmd->callback([args] { run(*args); });
 }
 

@@ -1,18 +1,22 @@
-// `mechsim check FILE [name:=value ...] [--package NAME=DIR ...] [--lenient]`: expands (when the
+// `mechsim check FILE [name:=value ...] [--package NAME=DIR ...] [--lenient] [--controllers YAML]`: expands (when the
 // file is xacro), parses and validates a robot description and prints a summary, like ROS's
 // check_urdf. Problems go to stderr through main's error path (exit status 1); warnings go to
 // stderr with exit status 0.
 //
 // The command is a list of steps over one CheckContext: options are gathered in CheckOptions,
 // the robot is loaded once, then each check of the loaded robot runs in turn. A further check
-// (e.g. `--controllers FILE.yaml`) adds its option in add_check_command and a step in run_check.
+// (`--controllers FILE.yaml` is one) adds its option in add_check_command and a step in run_check.
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "apps/cmd_common.hpp"
 #include "apps/commands.hpp"
+#include "control/controller_check.hpp"
+#include "mechanism/build_mechanism.hpp"
+#include "sim/simulation.hpp"
 #include "description/robot_loader.hpp"
 #include "description/robot_summary.hpp"
 
@@ -21,78 +25,76 @@ namespace mechsim::apps {
 namespace {
 
 struct CheckOptions {
-  std::string file;
-  std::vector<std::string> mappings;  // name:=value
-  std::vector<std::string> packages;  // NAME=DIR
-  bool lenient = false;
+  RobotArgs robot;
+  std::string controllers;  // --controllers FILE.yaml, "" when not given
 };
 
 struct CheckContext {
   description::LoadedRobot robot;
   std::vector<std::string> warnings;  // from every step, printed at the end
+  bool failed = false;                // a step found errors (exit status 1)
 };
 
-std::map<std::string, std::string> parse_mappings(const std::vector<std::string>& mappings) {
-  std::map<std::string, std::string> out;
-  for (const std::string& m : mappings) {
-    const std::size_t sep = m.find(":=");
-    if (sep == std::string::npos || sep == 0)
-      throw UserError("argument '" + m + "' is not a name:=value mapping");
-    out[m.substr(0, sep)] = m.substr(sep + 2);
-  }
-  return out;
-}
-
-description::PackageMap parse_packages(const std::vector<std::string>& packages) {
-  description::PackageMap out;
-  for (const std::string& p : packages) {
-    const std::size_t sep = p.find('=');
-    if (sep == std::string::npos || sep == 0 || sep + 1 == p.size())
-      throw UserError("--package '" + p + "' is not NAME=DIR");
-    // Absolute, so that includes resolve the same from every file that names the package.
-    out[p.substr(0, sep)] = std::filesystem::absolute(p.substr(sep + 1)).lexically_normal().string();
-  }
-  return out;
-}
-
 void load_step(const CheckOptions& options, CheckContext& context) {
-  description::LoadOptions load;
-  load.xacro_args = parse_mappings(options.mappings);
-  load.packages = parse_packages(options.packages);
-  load.lenient = options.lenient;
-  context.robot = description::load_robot(options.file, load);
+  context.robot = description::load_robot(options.robot.file, load_options(options.robot));
   context.warnings.insert(context.warnings.end(), context.robot.warnings.begin(),
                           context.robot.warnings.end());
+}
+
+// Loads every controller of the YAML against the robot's mechanism (geometry the rover drive and
+// the PR2 base take from the description filled in first) and prints what each claims.
+void controllers_step(const CheckOptions& options, CheckContext& context, std::ostream& out) {
+  const mechanism::MechanismModel mechanism = mechanism::build_mechanism(context.robot.model);
+  const control::Params root = control::Params::from_yaml_file(options.controllers);
+  sim::fill_description_params(root, context.robot.model);
+  for (const std::string& key : root.keys()) {
+    if (root.child(key).is_map() && !root.child(key).has("type")) sim::fill_description_params(root.child(key), context.robot.model);
+  }
+  const std::vector<control::ControllerCheck> checks = control::check_controllers(mechanism, root);
+  std::size_t loaded = 0;
+  out << "controllers (" << options.controllers << "):\n";
+  for (const control::ControllerCheck& c : checks) {
+    out << "  " << control::describe(c) << "\n";
+    if (c.ok()) ++loaded;
+  }
+  out << "  " << loaded << " of " << checks.size() << " controllers load\n";
+  if (checks.empty()) {
+    std::cerr << "mechsim check: error: " << options.controllers << ": no controllers found (a controller is a map with a 'type')\n";
+    context.failed = true;
+  }
+  if (loaded != checks.size()) context.failed = true;
 }
 
 void summary_step(const CheckContext& context, std::ostream& out) {
   out << description::summarize_robot(context.robot.model);
 }
 
-void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
+void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err, CommandResult& result) {
   CheckContext context;
   load_step(options, context);
   summary_step(context, out);
+  if (!options.controllers.empty()) controllers_step(options, context, out);
   for (const std::string& w : context.warnings) err << "warning: " << w << "\n";
-  out << "OK: " << options.file << " is a valid robot description";
+  if (context.failed) {
+    result.exit_code = 1;
+    return;
+  }
+  out << "OK: " << options.robot.file << " is a valid robot description";
   if (!context.warnings.empty()) out << " (" << context.warnings.size() << " warnings)";
+  if (!options.controllers.empty()) out << " and its controllers load";
   out << "\n";
 }
 
 }  // namespace
 
-void add_check_command(CLI::App& app, CommandResult& /*result*/) {
+void add_check_command(CLI::App& app, CommandResult& result) {
   auto options = std::make_shared<CheckOptions>();
   CLI::App* cmd = app.add_subcommand(
       "check", "Expand (if xacro), parse and validate a robot description; print a summary");
-  cmd->add_option("file", options->file, "URDF or xacro file")->required();
-  cmd->add_option("mappings", options->mappings, "xacro arguments, name:=value");
-  cmd->add_option("--package", options->packages,
-                  "NAME=DIR: where package NAME is (for $(find NAME) and package://NAME)")
-      ->allow_extra_args(false);
-  cmd->add_flag("--lenient", options->lenient,
-                "report physical-plausibility problems (mass, inertia, limits) as warnings");
-  cmd->callback([options] { run_check(*options, std::cout, std::cerr); });
+  add_robot_options(cmd, options->robot);
+  cmd->add_option("--controllers", options->controllers,
+                  "a controller YAML: load each controller against the robot and print what it claims");
+  cmd->callback([options, &result] { run_check(*options, std::cout, std::cerr, result); });
 }
 
 }  // namespace mechsim::apps

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cmd_common.hpp"
 #include "apps/commands.hpp"
 #include "control/params.hpp"
 #include "description/robot_loader.hpp"
@@ -14,10 +15,7 @@ namespace mechsim::apps {
 namespace {
 
 struct TuneArgs {
-  std::string robot;
-  std::vector<std::string> mappings;  // name:=value
-  std::vector<std::string> packages;  // NAME=DIR
-  bool lenient = false;
+  RobotArgs robot;
   std::string controllers;
   std::string ns;
   std::vector<std::string> joints;
@@ -47,20 +45,8 @@ std::string detect_namespace(const std::string& file, const std::string& given) 
 }
 
 void run(const TuneArgs& args, CommandResult& result) {
-  description::LoadOptions load;
-  load.lenient = args.lenient;
-  for (const std::string& m : args.mappings) {
-    const auto pos = m.find(":=");
-    if (pos == std::string::npos) throw UserError("expected name:=value, got '" + m + "'");
-    load.xacro_args[m.substr(0, pos)] = m.substr(pos + 2);
-  }
-  for (const std::string& p : args.packages) {
-    const auto pos = p.find('=');
-    if (pos == std::string::npos) throw UserError("--package expects NAME=DIR, got '" + p + "'");
-    load.packages[p.substr(0, pos)] = p.substr(pos + 1);
-  }
   sim::TuneSetup setup;
-  setup.robot = description::load_robot(args.robot, load).model;
+  setup.robot = description::load_robot(args.robot.file, load_options(args.robot)).model;
   setup.controllers_file = args.controllers;
   setup.controllers_namespace = detect_namespace(args.controllers, args.ns);
   if (args.step != 0.0) setup.step = args.step;
@@ -103,8 +89,7 @@ void run(const TuneArgs& args, CommandResult& result) {
 void add_tune_command(CLI::App& app, CommandResult& result) {
   auto args = std::make_shared<TuneArgs>();
   CLI::App* cmd = app.add_subcommand("tune", "Tune a joint's PID controller by step experiments in simulation");
-  cmd->add_option("robot", args->robot, "Robot description (.urdf or .xacro)")->required();
-  cmd->add_option("mappings", args->mappings, "xacro arguments name:=value");
+  add_robot_options(cmd, args->robot);
   cmd->add_option("--controllers", args->controllers, "Controller YAML")->required();
   cmd->add_option("--namespace", args->ns, "Namespace of the controllers in the YAML (default: its single top-level map)");
   cmd->add_option("--joint", args->joints, "Joint whose controller is tuned (repeatable)")->required();
@@ -114,8 +99,6 @@ void add_tune_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("--overshoot", args->overshoot, "Target maximum overshoot (%)");
   cmd->add_option("--evaluations", args->evaluations, "Maximum experiments per joint");
   cmd->add_flag("--write", args->write, "Write the gains into the controller YAML (its pid line)");
-  cmd->add_option("--package", args->packages, "NAME=DIR for $(find NAME) and package://NAME");
-  cmd->add_flag("--lenient", args->lenient, "Physical-plausibility errors become warnings");
   cmd->callback([args, &result] { run(*args, result); });
 }
 

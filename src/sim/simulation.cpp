@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "control/pr2_base_params.hpp"
 #include "control/rover_drive_params.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/propagation.hpp"
@@ -36,6 +37,27 @@ physics::BuildOptions build_options(const World& world, const SimulationOptions&
 
 }  // namespace
 
+void fill_description_params(const control::Params& controllers, const description::RobotModel& robot) {
+  control::fill_rover_drive_geometry_all(controllers, robot);
+  control::fill_pr2_base_geometry_all(controllers, robot);
+}
+
+control::ControlResult Simulation::load_controller(const std::string& name) {
+  try {
+    if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map()) {
+      const std::string type = p->get<std::string>("type", "");
+      if (type == control::kRoverDriveControllerType) control::fill_rover_drive_geometry(*p, robot_);
+      if (type == control::kPr2BaseController2Type || type == control::kPr2BaseControllerType ||
+          type == control::kPr2OdometryType) {
+        control::fill_pr2_base_geometry(*p, robot_);
+      }
+    }
+  } catch (const std::exception& e) {
+    return control::ControlResult::failure(e.what());
+  }
+  return manager_->load_controller(name);
+}
+
 Simulation::Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
                        SimulationOptions options)
     : robot_(std::move(robot)), world_(world), options_(std::move(options)) {
@@ -49,9 +71,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   physics_ = std::make_unique<physics::Physics>(physics_model_);
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
-  // Rover drives take their geometry (wheel positions, axis signs, radius) from the robot
-  // description where their YAML leaves it out, as a user would otherwise measure it by hand.
-  control::fill_rover_drive_geometry_all(controller_params, robot_);
+  fill_description_params(controller_params, robot_);
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params));
 
   const std::size_t n = mechanism_->joints.size();
@@ -182,7 +202,7 @@ void Simulation::reset() {
 
 void Simulation::load_and_start(const std::vector<std::string>& controllers) {
   for (const std::string& name : controllers) {
-    if (control::ControlResult r = manager_->load_controller(name); !r) {
+    if (control::ControlResult r = load_controller(name); !r) {
       throw std::runtime_error("could not load controller '" + name + "': " + r.error);
     }
   }

@@ -62,6 +62,10 @@ struct TickResult {
   explicit operator bool() const { return ok; }
 };
 
+// Fills, for every controller under `controllers`, the parameters its type takes from the robot
+// description where they are absent (rover drive and PR2 base/odometry geometry).
+void fill_description_params(const control::Params& controllers, const description::RobotModel& robot);
+
 class Simulation {
  public:
   using Observer = std::function<void(const Simulation&)>;
@@ -110,6 +114,11 @@ class Simulation {
 
   // Observers run after every tick, in the loop thread, in the order added.
   void add_observer(Observer observer) { observers_.push_back(std::move(observer)); }
+
+  // Loads a controller from the controller parameters, first filling what its type takes from
+  // the robot description where the parameters leave it out (the rover drive's and the PR2
+  // base's geometry), so that parameters loaded after construction (a ROS spawner) get it too.
+  control::ControlResult load_controller(const std::string& name);
 
   // Loads the named controllers and starts them with a STRICT switch applied at once (before
   // the next tick). Throws std::runtime_error naming the controller on failure.

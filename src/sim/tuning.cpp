@@ -122,9 +122,9 @@ StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, 
   std::vector<std::string> start{controller};
   for (const std::string& name : ns.keys()) {
     if (name == controller || !ns.child(name).is_map() || !ns.child(name).has("type")) continue;
-    if (sim.controllers().load_controller(name)) start.push_back(name);
+    if (sim.load_controller(name)) start.push_back(name);
   }
-  if (control::ControlResult r = sim.controllers().load_controller(controller); !r) {
+  if (control::ControlResult r = sim.load_controller(controller); !r) {
     throw std::runtime_error("could not load controller '" + controller + "': " + r.error);
   }
   // The tuned controller first: under BEST_EFFORT it wins its joint over group controllers.
