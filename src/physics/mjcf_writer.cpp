@@ -1,8 +1,10 @@
 #include "physics/mjcf_writer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "physics/mesh_loader.hpp"
@@ -98,6 +100,7 @@ class Writer {
     for (const PlannedGeom& g : plan_.world_geoms) write_geom(g, 2);
     for (std::size_t i = 0; i < plan_.bodies.size(); ++i)
       if (plan_.bodies[i].parent < 0) write_body(i, 2);
+    write_boxes();
     x_ << "  </worldbody>\n";
     if (!plan_.excludes.empty()) {
       x_ << "  <contact>\n";
@@ -154,6 +157,34 @@ class Writer {
     } else if (options_.world.ground_plane) {
       x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""
          << " group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";
+    }
+  }
+
+  // Fixed boxes as world geoms, free boxes as bodies with a free joint (after the robot's bodies,
+  // so that the robot's root joint stays the model's first free joint).
+  void write_boxes() {
+    const ContactDefaults& c = options_.contact;
+    const std::string friction = num(c.ground_friction) + " " + num(c.torsional_friction) + " " + num(c.rolling_friction);
+    std::set<std::string> names;
+    for (const WorldBox& b : options_.world.boxes) {
+      const std::string where = "world box '" + b.name + "'";
+      if (b.name.empty()) throw PhysicsError("world: a box has no name");
+      if (!names.insert(b.name).second) throw PhysicsError(where + ": the name is used twice");
+      if (!(b.size.x > 0.0 && b.size.y > 0.0 && b.size.z > 0.0) || !std::isfinite(b.size.x + b.size.y + b.size.z))
+        throw PhysicsError(where + ": size must be finite and > 0 along x, y and z (m)");
+      if (!b.fixed && !(b.mass > 0.0 && std::isfinite(b.mass))) throw PhysicsError(where + ": mass must be finite and > 0 (kg)");
+      const std::string geom = "<geom name=\"box:" + escape(b.name) + "\" type=\"box\" size=\"" +
+                               vec({b.size.x / 2, b.size.y / 2, b.size.z / 2}) +
+                               "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" + friction + "\"";
+      if (b.fixed) {
+        x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
+      } else {
+        // Solid cuboid: I_xx = m (y^2 + z^2) / 12 and so on (the compiler takes no inertia from geoms).
+        const double k = b.mass / 12.0, xx = b.size.x * b.size.x, yy = b.size.y * b.size.y, zz = b.size.z * b.size.z;
+        x_ << "    <body name=\"box:" << escape(b.name) << "\"" << pose_attrs(b.pose) << ">\n      <freejoint name=\"box:"
+           << escape(b.name) << "\"/>\n      <inertial pos=\"0 0 0\" mass=\"" << num(b.mass) << "\" diaginertia=\""
+           << vec({k * (yy + zz), k * (xx + zz), k * (xx + yy)}) << "\"/>\n      " << geom << "/>\n    </body>\n";
+      }
     }
   }
 

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "physics/mujoco_internal.hpp"
 #include "physics/transform.hpp"
@@ -198,6 +201,33 @@ void Physics::set_velocity_command(std::size_t j, double velocity) {
   const JointInfo& info = model_->joints()[j];
   if (info.actuator >= 0 && data_->modes[j] == JointMode::Velocity) data_->d->ctrl[info.actuator] = velocity;
 }
+
+void Physics::set_armature(std::size_t j, double armature) {
+  const JointInfo& info = model_->joints()[j];
+  if (!std::isfinite(armature) || armature < 0.0) {
+    throw std::invalid_argument("armature of joint '" + info.name + "' must be finite and >= 0, got " +
+                                std::to_string(armature));
+  }
+  mjModel* m = data_->m;
+  mjData* d = data_->d;
+  m->dof_armature[info.dof_adr] = armature;
+  // The constraint solver scales its softness by the inverse inertias at qpos0 (dof_invweight0 and
+  // friends); recompute them, or the joint's limits and equalities go soft by the ratio of the
+  // new inertia to the old. mj_setConst works on d at qpos0: keep the state around it.
+  const std::vector<mjtNum> qpos(d->qpos, d->qpos + m->nq), qvel(d->qvel, d->qvel + m->nv),
+      act(d->act, d->act + m->na), ctrl(d->ctrl, d->ctrl + m->nu), warm(d->qacc_warmstart, d->qacc_warmstart + m->nv);
+  const mjtNum time = d->time;
+  mj_setConst(m, d);
+  copy_n(d->qpos, qpos.data(), m->nq);
+  copy_n(d->qvel, qvel.data(), m->nv);
+  copy_n(d->act, act.data(), m->na);
+  copy_n(d->ctrl, ctrl.data(), m->nu);
+  copy_n(d->qacc_warmstart, warm.data(), m->nv);
+  d->time = time;
+  data_->stale = true;
+}
+
+double Physics::armature(std::size_t j) const { return data_->m->dof_armature[model_->joints()[j].dof_adr]; }
 
 void Physics::set_mode(std::size_t j, JointMode mode, ServoGains gains) {
   const JointInfo& info = model_->joints()[j];

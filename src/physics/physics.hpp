@@ -102,6 +102,14 @@ class Physics {
   JointMode mode(std::size_t joint) const;
   ServoGains gains(std::size_t joint) const;
 
+  // Rotor inertia reflected onto the joint (MuJoCo armature: kg m^2 for hinges, kg for slides),
+  // added to the joint's diagonal of the mass matrix; this instance only, kept over reset().
+  // For drives whose motor the description does not model (the PR2 gripper's fingers). Not for
+  // the control loop: it recomputes the model's constants at qpos0 (mj_setConst) and allocates.
+  // Throws std::invalid_argument on a negative or non-finite value.
+  void set_armature(std::size_t joint, double armature);
+  double armature(std::size_t joint) const;
+
   // Initial conditions (not for use inside a control loop): sets a joint's state directly.
   void set_joint_state(std::size_t joint, double position, double velocity = 0.0);
 

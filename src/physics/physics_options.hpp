@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "description/robot_model.hpp"
 #include "physics/contact_defaults.hpp"
@@ -26,6 +27,18 @@ enum class DifferentialMode {
   PluginLaw,
 };
 
+// A box in the world (an object to grasp, push or bump into). A fixed box is a world geom; a free
+// one is a body with a free joint, after the robot's (the robot's root stays the first free
+// joint). Both collide with the robot and the ground, with the ground's friction; contacts name
+// them "box:<name>".
+struct WorldBox {
+  std::string name;                      // unique among the world's boxes
+  description::Pose pose;                // X_W<box centre>
+  description::Vec3 size{0.1, 0.1, 0.1};  // full edge lengths along the box's x, y, z (m), > 0
+  double mass = 1.0;                     // kg, > 0; free boxes only (uniform density)
+  bool fixed = true;
+};
+
 // The world the robot is placed in.
 struct WorldSpec {
   enum class Kind { Empty, Heightmap };
@@ -33,6 +46,7 @@ struct WorldSpec {
   std::optional<Heightmap> terrain;  // required when kind == Heightmap
   double gravity = 9.81;           // m/s^2 along -z of the world
   bool ground_plane = true;        // an infinite plane at z = 0 (Empty only)
+  std::vector<WorldBox> boxes;     // objects in the world (any kind of world)
 };
 
 // Where the robot starts: X_W<root> for a floating robot; for a robot whose root link is

@@ -1,12 +1,14 @@
 #include "sim/simulation.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
 #include "control/pr2_base_params.hpp"
 #include "control/rover_drive_params.hpp"
 #include "mechanism/build_mechanism.hpp"
+#include "mechanism/pr2_gripper_transmission.hpp"
 #include "mechanism/propagation.hpp"
 #include "physics/heightmap_sample.hpp"
 
@@ -79,6 +81,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   physics_mode_.assign(n, HardwareInterface::Effort);
   servo_gains_.assign(n, physics::ServoGains{});
   commanded_.assign(n, false);
+  effort_scale_.assign(n, 1.0);
   for (std::size_t j = 0; j < n; ++j) {
     const std::string& name = mechanism_->joints[j].name;
     if (auto p = physics_model_->joint_index(name); p && physics_model_->joints()[*p].actuated) {
@@ -86,6 +89,61 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
       commanded_[j] = mechanism::physics_applies_command(mechanism_->joints[j]);
     }
     if (auto it = options_.servo_gains.find(name); it != options_.servo_gains.end()) servo_gains_[j] = it->second;
+  }
+  // PR2 grippers without a gap joint in the physics are driven through their fingers.
+  for (const auto& t : mechanism_->transmissions) {
+    const auto* gripper = dynamic_cast<const mechanism::Pr2GripperTransmission*>(t.get());
+    if (gripper == nullptr || physics_joint_[static_cast<std::size_t>(gripper->joints()[0])] >= 0) continue;
+    GapFromFingers g;
+    g.gap = gripper->joints()[0];
+    g.t0 = gripper->geometry().t0;
+    g.r = gripper->geometry().r;
+    g.theta0 = gripper->geometry().theta0;
+    for (const int f : gripper->joints()) {
+      const auto fi = static_cast<std::size_t>(f);
+      if (mechanism_->joints[fi].role != mechanism::JointRole::Passive || physics_joint_[fi] < 0) continue;
+      g.fingers.push_back(f);
+    }
+    if (g.fingers.empty()) continue;  // nothing moves: the gap stays at rest, as before
+    // The drive goes to the fingers hinged on the gripper itself (the PR2's l/r_finger_joint),
+    // carrying every finger's share; the finger tips, hinged on the fingers, follow through the
+    // mimic constraints (a torque on a tip would twist it against them when the pads meet an
+    // object). Fingers and tips move together, so the drive's power is the same.
+    std::vector<int> driven;
+    const auto parent_of = [&](int f) -> const description::Joint* {
+      return robot_.joint(mechanism_->joints[static_cast<std::size_t>(f)].name);
+    };
+    for (const int f : g.fingers) {
+      const description::Joint* jf = parent_of(f);
+      bool on_a_finger = false;
+      for (const int other : g.fingers) {
+        const description::Joint* jo = parent_of(other);
+        if (jf != nullptr && jo != nullptr && jo->child_link == jf->parent_link) on_a_finger = true;
+      }
+      if (!on_a_finger) driven.push_back(f);
+    }
+    if (driven.empty()) driven = g.fingers;
+    g.measured = driven;  // collocated with the drive
+    const double share = static_cast<double>(g.fingers.size()) / static_cast<double>(driven.size());
+    for (const int f : driven) {
+      commanded_[static_cast<std::size_t>(f)] = true;
+      effort_scale_[static_cast<std::size_t>(f)] = share;
+    }
+    // The gripper motor's reflected inertia, which dominates the real gripper's dynamics, is not
+    // in the description (Gazebo has the gap joint's own damping instead); without it the
+    // fingers weigh ~0.07 kg at the gap and the PR2's gap gains (PID d = 1000 N s/m, safety
+    // k_velocity = 5000 N s/m, applied explicitly once per tick) make them chatter. We give the
+    // gap a mass of 2 k_velocity * period (10 kg for the PR2 at 1 kHz: explicit damping ratio
+    // k dt / m = 0.5), as armature of the driven fingers at the closed linkage.
+    const mechanism::JointInfo& gap_info = mechanism_->joints[static_cast<std::size_t>(g.gap)];
+    if (gap_info.safety && gap_info.safety->k_velocity > 0.0) {
+      const double gap_mass = 2.0 * gap_info.safety->k_velocity * options_.period;  // kg
+      const double dx_dq = 2.0 * g.r * std::cos(g.theta0);                            // m/rad
+      const double armature = gap_mass * dx_dq * dx_dq / static_cast<double>(driven.size());
+      for (const int f : driven)
+        physics_->set_armature(static_cast<std::size_t>(physics_joint_[static_cast<std::size_t>(f)]), armature);
+    }
+    gap_from_fingers_.push_back(std::move(g));
   }
   paused_.store(options_.start_paused);
   read_physics();
@@ -104,7 +162,33 @@ void Simulation::read_physics() {
     js.velocity = physics_->velocity(pj);
     js.measured_effort = physics_->actuator_effort(pj);
   }
+  read_gaps_from_fingers();
   mechanism::propagate_joint_to_actuator_position(*mechanism_, state);
+}
+
+void Simulation::read_gaps_from_fingers() {
+  // Gap x = 2 t, t = t0 + r (sin(theta0 + q) - sin theta0) for the finger angle q (the
+  // transmission's linkage); dx/dq = 2 r cos(theta0 + q) turns rates and torques. q is the mean
+  // angle of the driven finger joints (collocated with the drive, so that the loop stays
+  // passive while the soft mimic constraints flex); the torque is every finger's.
+  mechanism::MechanismState& state = *mechanism_state_;
+  for (const GapFromFingers& g : gap_from_fingers_) {
+    double q = 0.0, rate = 0.0, torque = 0.0;
+    for (const int k : g.measured) {
+      const mechanism::JointState& f = state.joints[static_cast<std::size_t>(k)];
+      q += f.position;
+      rate += f.velocity;
+    }
+    for (const int k : g.fingers) torque += state.joints[static_cast<std::size_t>(k)].measured_effort;
+    const double n = static_cast<double>(g.measured.size());
+    q /= n;
+    rate /= n;
+    const double dx_dq = 2.0 * g.r * std::cos(g.theta0 + q);
+    mechanism::JointState& gap = state.joints[static_cast<std::size_t>(g.gap)];
+    gap.position = 2.0 * (g.t0 + g.r * (std::sin(g.theta0 + q) - std::sin(g.theta0)));
+    gap.velocity = dx_dq * rate;
+    gap.measured_effort = std::abs(dx_dq) > 1e-9 ? torque / dx_dq : 0.0;
+  }
 }
 
 void Simulation::write_physics() {
@@ -123,7 +207,7 @@ void Simulation::write_physics() {
       physics_mode_[j] = js.command_mode;
     }
     switch (js.command_mode) {
-      case HardwareInterface::Effort: physics_->set_effort(pj, js.commanded_effort); break;
+      case HardwareInterface::Effort: physics_->set_effort(pj, effort_scale_[j] * js.commanded_effort); break;
       case HardwareInterface::Position: physics_->set_position_command(pj, js.commanded_position); break;
       case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
     }

@@ -144,6 +144,20 @@ class Simulation {
   std::vector<mechanism::HardwareInterface> physics_mode_;
   std::vector<physics::ServoGains> servo_gains_;
   std::vector<bool> commanded_;  // the physics applies this joint's command (actuated joints)
+  std::vector<double> effort_scale_;  // applied effort = scale * commanded effort (1 but for fingers)
+
+  // A PR2 gripper whose gap joint the physics dropped (URDF: a prismatic joint to a massless
+  // frame; Gazebo closes it as a loop between the finger tips). The physics moves the passive
+  // finger joints instead: the mimic leader takes the transmission's finger commands, and the gap state is
+  // computed from the driven fingers' angle with the transmission's linkage.
+  struct GapFromFingers {
+    int gap = -1;              // mechanism joint
+    std::vector<int> fingers;  // mechanism joints of every passive finger the physics has
+    std::vector<int> measured;  // the driven ones, whose mean angle gives the gap
+    double t0 = 0.0, r = 0.0, theta0 = 0.0;  // linkage: half gap offset (m), finger length (m), rad
+  };
+  std::vector<GapFromFingers> gap_from_fingers_;
+  void read_gaps_from_fingers();
 
   std::vector<Observer> observers_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
