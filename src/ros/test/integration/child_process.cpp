@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,6 +28,8 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   if (pid_ < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid_ == 0) {
     ::setpgid(0, 0);
+    // Should the test program die without cleaning up, its children go too.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     // The test process blocks no signals, but be sure the child starts with a clean mask.
     sigset_t none;
     sigemptyset(&none);

@@ -317,3 +317,27 @@ joint_state_controller:
 
 }  // namespace
 }  // namespace mechsim::ros::test
+
+namespace mechsim::ros::test {
+namespace {
+
+TEST_F(CC8Node, SpawnerStoppedWaitForAndTimeout) {
+  rosparam_load(std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/config/controllers.yaml");
+  // --stopped loads without starting; --wait-for waits for a message on the topic first.
+  ChildProcess& sp = spawner({"--stopped", "--wait-for", "/clock", "wheel_joint_FL_velocity_controller"}, "stopped");
+  ASSERT_TRUE(wait_until([] { return list_controllers().size() == 1; }, 20.0)) << sp.log();
+  EXPECT_EQ(list_controllers()[0].state, "initialized");
+  EXPECT_EQ(sp.stop(15.0), 0) << sp.log();
+  EXPECT_TRUE(list_controllers().empty()) << "unloaded on SIGINT";
+
+  // No controller manager in that namespace: gives up after --timeout with status 1.
+  ChildProcess& lost = spawner({"--namespace", "/nobody", "--timeout", "1", "joint_state_controller"}, "lost");
+  EXPECT_EQ(lost.wait(15.0), 1) << lost.log();
+  // An unknown controller: status 1, and what it loaded before is unloaded again.
+  ChildProcess& bad = spawner({"joint_state_controller", "no_such_controller"}, "bad");
+  EXPECT_EQ(bad.wait(20.0), 1) << bad.log();
+  EXPECT_TRUE(list_controllers().empty());
+}
+
+}  // namespace
+}  // namespace mechsim::ros::test

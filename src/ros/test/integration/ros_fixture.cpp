@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -63,6 +64,11 @@ class RosEnvironment : public ::testing::Environment {
     if (s.spinner) s.spinner->stop();
     ::ros::shutdown();
     if (s.master) s.master->stop();
+    // Logs stay for a failing run (the path is printed at the start).
+    if (::testing::UnitTest::GetInstance()->Passed()) {
+      std::error_code ignored;
+      std::filesystem::remove_all(s.log_dir, ignored);
+    }
   }
 };
 
