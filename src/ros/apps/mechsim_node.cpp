@@ -6,6 +6,7 @@
 //                      upwards from the node's namespace, like spawn_model -param).
 //   robot_description  the parameter name to read when ~model is absent (default robot_description)
 //   spawn_timeout      s (wall) to wait for that parameter to appear (default 60)
+//   lenient            description errors Gazebo tolerates become warnings (default false)
 //   world              empty | mars_yard_2024 | heightmap file (default empty)
 //   x y z R P Y        spawn pose (m, rad), as spawn_model's -x -y -z -R -P -Y
 //   paused             start paused (default false), as gazebo's paused arg
@@ -18,6 +19,7 @@
 //   clock_publish_rate Hz (wall) at most of /clock (default 1000)
 // When ~model is used, the expanded URDF is also set as robot_description (for RViz).
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 
 #include <ros/ros.h>
@@ -29,6 +31,14 @@
 namespace {
 
 using mechsim::description::RobotModel;
+
+// The first signal asks ROS to shut down (the clean path); a second one ends the process at once,
+// for a node stuck contacting an unreachable master (roslaunch follows SIGINT with SIGTERM).
+volatile std::sig_atomic_t g_signals = 0;
+extern "C" void request_shutdown(int) {
+  if (g_signals++ > 0) std::_Exit(130);
+  ::ros::requestShutdown();
+}
 
 std::string plugin_namespace(const RobotModel& robot, bool* pr2) {
   std::string ns;
@@ -43,6 +53,10 @@ std::string plugin_namespace(const RobotModel& robot, bool* pr2) {
 }
 
 int run(int argc, char** argv) {
+  // SIGINT/SIGTERM request a ROS shutdown (what roscpp's own SIGINT handler does), so that every
+  // wait (for the master, for robot_description) ends and the loop thread stops cleanly.
+  std::signal(SIGINT, request_shutdown);
+  std::signal(SIGTERM, request_shutdown);
   ::ros::init(argc, argv, "mechsim", ::ros::init_options::NoSigintHandler);
   ::ros::NodeHandle pnh("~");
   ::ros::NodeHandle nh;
@@ -50,9 +64,13 @@ int run(int argc, char** argv) {
   mechsim::ros::BridgeOptions bridge;
   std::string urdf, source = "robot_description";
   std::string model_path;
+  // Description errors that Gazebo tolerates (the PR2's sensor mounts break the inertia triangle
+  // inequality) become warnings.
+  const bool lenient = pnh.param("lenient", false);
   if (pnh.getParam("model", model_path)) {
     mechsim::description::LoadOptions load;
     pnh.getParam("xacro_args", load.xacro_args);
+    load.lenient = lenient;
     mechsim::description::LoadedRobot loaded = mechsim::description::load_robot(model_path, load);
     for (const std::string& w : loaded.warnings) ROS_WARN_STREAM("mechsim: " << model_path << ": " << w);
     urdf = loaded.urdf;
@@ -76,7 +94,9 @@ int run(int argc, char** argv) {
     }
     source = found;
     std::vector<std::string> warnings;
-    bridge.robot = mechsim::description::parse_urdf_string(urdf, source, {}, &warnings);
+    mechsim::description::UrdfOptions urdf_options;
+    urdf_options.lenient = lenient;
+    bridge.robot = mechsim::description::parse_urdf_string(urdf, source, urdf_options, &warnings);
     for (const std::string& w : warnings) ROS_WARN_STREAM("mechsim: " << source << ": " << w);
   }
 
@@ -117,14 +137,7 @@ int run(int argc, char** argv) {
   spinner.start();
   node.start();
   // SIGINT/SIGTERM: a clean stop (loop thread joined before ROS shuts down).
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  while (::ros::ok()) {  // rosnode kill shuts ROS down without a signal
-    timespec wait{0, 100000000};
-    if (sigtimedwait(&signals, nullptr, &wait) > 0) break;
-  }
+  while (::ros::ok()) ::ros::WallDuration(0.1).sleep();  // until a signal or rosnode kill
   node.stop();
   spinner.stop();
   ::ros::shutdown();
@@ -134,12 +147,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Block the stop signals in every thread (ROS's and ours inherit the mask); main waits for them.
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -31,6 +31,15 @@ namespace {
 
 namespace cmm = controller_manager_msgs;
 
+// Set by SIGINT/SIGTERM: the one piece of process state a signal handler may touch. The first
+// signal starts the teardown (which still needs ROS); a second one shuts ROS down, ending any
+// wait, e.g. for an unreachable master (roslaunch follows SIGINT with SIGTERM).
+volatile std::sig_atomic_t g_signalled = 0;
+extern "C" void on_signal(int) {
+  if (g_signalled) ::ros::requestShutdown();
+  g_signalled = 1;
+}
+
 struct Args {
   bool stopped = false;
   std::string ns;
@@ -122,8 +131,15 @@ std::vector<std::string> load_yaml(::ros::NodeHandle& nh, const std::string& fil
   return names;
 }
 
-bool wait_for_service(const std::string& name, double timeout) {
-  return ::ros::service::waitForService(name, ::ros::Duration(timeout > 0.0 ? timeout : -1.0));
+// Waits for a service (timeout <= 0: forever); false on timeout, signal or ROS shutdown.
+bool wait_for_service(const std::string& name, double timeout, bool interruptible = true) {
+  const ::ros::WallTime deadline = ::ros::WallTime::now() + ::ros::WallDuration(timeout);
+  while (::ros::ok() && !(interruptible && g_signalled)) {
+    if (::ros::service::exists(name, false)) return true;
+    if (timeout > 0.0 && ::ros::WallTime::now() > deadline) return false;
+    ::ros::WallDuration(0.05).sleep();
+  }
+  return false;
 }
 
 class Spawner {
@@ -152,7 +168,7 @@ class Spawner {
   // Stops (when started) and unloads in reverse order what this spawner loaded.
   void teardown(bool started, double timeout) {
     if (loaded_.empty()) return;
-    if (!wait_for_service(service("unload_controller"), timeout)) {
+    if (!wait_for_service(service("unload_controller"), timeout, /*interruptible=*/false)) {
       ROS_WARN_STREAM("mechsim spawner: controller manager gone; controllers left as they are");
       return;
     }
@@ -178,12 +194,18 @@ class Spawner {
 
 bool wait_for_topic(const std::string& topic, double timeout) {
   ROS_INFO_STREAM("mechsim spawner: waiting for a message on " << topic);
-  auto msg = ::ros::topic::waitForMessage<topic_tools::ShapeShifter>(topic, ::ros::Duration(timeout));  // 0: forever
-  return msg != nullptr;
+  const ::ros::WallTime deadline = ::ros::WallTime::now() + ::ros::WallDuration(timeout);
+  while (::ros::ok() && !g_signalled) {  // short waits, so that a signal is seen
+    if (::ros::topic::waitForMessage<topic_tools::ShapeShifter>(topic, ::ros::Duration(0.2))) return true;
+    if (timeout > 0.0 && ::ros::WallTime::now() > deadline) return false;
+  }
+  return false;
 }
 
 int run(int argc, char** argv) {
   ::ros::init(argc, argv, "mechsim_spawner", ::ros::init_options::AnonymousName | ::ros::init_options::NoSigintHandler);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
   std::vector<std::string> rest;
   ::ros::removeROSArgs(argc, argv, rest);
   const Args args = parse(std::vector<std::string>(rest.begin() + 1, rest.end()));
@@ -231,18 +253,8 @@ int run(int argc, char** argv) {
     ROS_INFO_STREAM("mechsim spawner: started " << controllers.size() << " controllers");
   }
 
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  bool signalled = false;
-  while (::ros::ok()) {
-    timespec wait{0, 100000000};
-    if (sigtimedwait(&signals, nullptr, &wait) > 0) {
-      signalled = true;
-      break;
-    }
-  }
+  while (::ros::ok() && !g_signalled) ::ros::WallDuration(0.1).sleep();
+  const bool signalled = g_signalled != 0;
   if (signalled) spawner.teardown(started, args.shutdown_timeout);
   ::ros::shutdown();
   return 0;
@@ -251,11 +263,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {
