@@ -22,6 +22,10 @@ if [[ "${1:-}" == "--with-ros" ]]; then
              ros-trajectory-msgs ros-actionlib-msgs ros-tf2-msgs ros-rosgraph-msgs
              python3-genmsg python3-gencpp python3-empy
              libtopic-tools-dev
+             # Python message modules (<build>/ros_python) for rostopic/rosservice: genpy, and
+             # the Debian types the generated ones import.
+             python3-genpy python3-std-msgs python3-geometry-msgs python3-trajectory-msgs
+             python3-actionlib-msgs
              # mechsim_node's launch files and scripts/rviz_screenshot.sh: RViz under Xvfb.
              rviz xvfb imagemagick)
 fi
