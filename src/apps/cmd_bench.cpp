@@ -22,6 +22,7 @@ struct BenchArgs {
   std::string controllers, ns, world = "empty";
   double seconds = 5.0;
   double spawn_z = 0.02;
+  std::string integrator = "implicit";
 };
 
 void run(const BenchArgs& args) {
@@ -40,6 +41,7 @@ void run(const BenchArgs& args) {
   world.name = args.world;
   sim::SimulationOptions options;
   options.spawn.z = args.spawn_z;
+  options.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
   sim::Simulation sim(std::move(robot), sim::make_world(world), params, options);
   // Load everything asked for; start what does not conflict (BEST_EFFORT), as a user would.
   std::vector<std::string> loaded;
@@ -69,8 +71,8 @@ void run(const BenchArgs& args) {
   const double bare = time_it([&] { sim.physics().step(); });
   const double full = time_it([&] { sim.step(); });
   const double bare_rate = static_cast<double>(ticks) / bare, full_rate = static_cast<double>(ticks) / full;
-  std::printf("robot %s, %zu controllers running, %ld steps of %.4g s\n", sim.robot().name.c_str(), s.starting.size(), ticks,
-              sim.period());
+  std::printf("robot %s, %zu controllers running, %ld steps of %.4g s, %s integrator\n", sim.robot().name.c_str(),
+              s.starting.size(), ticks, sim.period(), physics::integrator_name(options.integrator));
   std::printf("bare physics step: %10.0f steps/s (%.2f us)\n", bare_rate, 1e6 / bare_rate);
   std::printf("full tick:         %10.0f steps/s (%.2f us)\n", full_rate, 1e6 / full_rate);
   std::printf("tick overhead:     %+.1f %% over the bare step\n", 100.0 * (bare_rate / full_rate - 1.0));
@@ -89,6 +91,8 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   cmd->add_option("--start", args->start, "Controllers to start (default: all in the namespace)");
   cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
   cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
+  cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: implicit (default), euler or rk4")
+      ->check(CLI::IsMember({"implicit", "euler", "rk4"}));
   cmd->callback([args] { run(*args); });
 }
 

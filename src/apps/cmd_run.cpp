@@ -19,6 +19,7 @@ struct RunArgs {
   std::string output;
   bool no_plots = false;
   double duration = 0.0;
+  std::string integrator;  // empty: the scenario's own
 };
 
 // A one-line progress bar on a terminal; a plain line every 10 % of the run otherwise.
@@ -47,11 +48,13 @@ std::function<void(const sim::RunProgress&)> progress_printer() {
 void run(const RunArgs& args, CommandResult& result) {
   sim::Scenario scenario = sim::load_scenario(args.scenario);
   if (args.duration > 0.0) scenario.duration = args.duration;
+  if (!args.integrator.empty()) scenario.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
   sim::RunOptions options;
   options.output_dir = args.output.empty() ? (std::filesystem::path("out") / scenario.name).string() : args.output;
   options.plots = !args.no_plots;
   options.progress = progress_printer();
-  std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time\n" << std::flush;
+  std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time, "
+            << physics::integrator_name(scenario.integrator) << " integrator\n" << std::flush;
   const sim::ScenarioResult r = sim::run_scenario(scenario, options);
   std::cout << "distance " << r.distance << " m, final pose (" << r.final_x << ", " << r.final_y << ") yaw "
             << r.final_yaw * 180.0 / 3.141592653589793 << " deg, real-time factor " << r.real_time_factor << "\n";
@@ -75,6 +78,8 @@ void add_run_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("-o,--output", args->output, "Report folder (default: out/<scenario name>)");
   cmd->add_flag("--no-plots", args->no_plots, "Do not draw PNG plots");
   cmd->add_option("--duration", args->duration, "Override the scenario's duration (s)");
+  cmd->add_option("--integrator", args->integrator, "Override the scenario's integrator: implicit, euler or rk4")
+      ->check(CLI::IsMember({"implicit", "euler", "rk4"}));
   cmd->callback([args, &result] { run(*args, result); });
 }
 

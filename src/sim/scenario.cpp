@@ -206,6 +206,12 @@ Scenario load_scenario(const std::string& path) {
     if (!(s.duration > 0.0) || s.duration > 1e6) fail(root.child("duration"), "must be in (0, 1e6] s");
     s.period = root.get<double>("period", 0.001);
     if (!(s.period > 0.0) || s.period > 0.1) fail(root.child("period"), "must be in (0, 0.1] s");
+    if (root.has("integrator")) {
+      const std::string integrator = root.get<std::string>("integrator");
+      const auto parsed = physics::parse_integrator(integrator);
+      if (!parsed) fail(root.child("integrator"), "expected 'implicit', 'euler' or 'rk4', got '" + integrator + "'");
+      s.integrator = *parsed;
+    }
     s.record_rate = root.get<double>("record_rate", 50.0);
     if (!(s.record_rate > 0.0)) fail(root.child("record_rate"), "must be > 0 Hz");
 

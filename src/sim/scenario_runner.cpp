@@ -123,6 +123,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   }
   SimulationOptions options;
   options.period = s.period;
+  options.integrator = s.integrator;
   options.spawn = s.spawn;
   options.differential = s.differential;
   try {

@@ -42,6 +42,8 @@ enum class DivergencePolicy { Stop, Reset };
 
 struct SimulationOptions {
   double period = 0.001;  // s: physics step = control period
+  // MuJoCo's integrator (see physics::BuildOptions for the measured trade-off). Implicit for
+  // every robot: Euler is 2-3x faster but fails the PR2 base-turn figure (robots/pr2/README.md).
   physics::Integrator integrator = physics::Integrator::Implicit;
   physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;
   // Spawn pose of the root link. On terrain, z is measured from the ground under (x, y).

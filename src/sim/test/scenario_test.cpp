@@ -69,6 +69,13 @@ checks:
   EXPECT_EQ(s.checks[0].kind, Check::Kind::Reach);
   EXPECT_NEAR(s.checks[1].yaw, M_PI / 2, 1e-12);
   EXPECT_EQ(s.checks[2].kind, Check::Kind::Direction);
+  EXPECT_EQ(s.integrator, physics::Integrator::Implicit);  // the default when absent
+}
+
+TEST_F(ScenarioFile, ReadsTheIntegrator) {
+  EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: euler\n")).integrator, physics::Integrator::Euler);
+  EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: rk4\n")).integrator, physics::Integrator::Rk4);
+  EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: implicit\n")).integrator, physics::Integrator::Implicit);
 }
 
 struct BadCase {
@@ -94,6 +101,7 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(BadCase{"missing_duration", "name: x\n", "/duration"},
                     BadCase{"negative_duration", "duration: -1\n", "/duration"},
                     BadCase{"bad_period", "duration: 1\nperiod: 0\n", "/period"},
+                    BadCase{"bad_integrator", "duration: 1\nintegrator: verlet\n", "/integrator: expected 'implicit', 'euler' or 'rk4', got 'verlet'"},
                     BadCase{"two_commands", "duration: 1\ntimeline:\n  - {at: 0, controller: c, command: 1, twist: {vx: 1}}\n",
                             "exactly one of"},
                     BadCase{"unknown_check", "duration: 1\nchecks:\n  - {fly: {x: 1}}\n", "unknown check 'fly'"},

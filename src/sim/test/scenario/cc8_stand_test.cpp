@@ -23,6 +23,7 @@ TEST(Cc8Scenario, StandsOnSixWheelsWithItsControllersHolding) {
   const fs::path shared = MECHSIM_SHARED_DIR;
   if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
   SimulationOptions options;
+  options.integrator = cc8_test_integrator();
   options.spawn.z = 0.02;
   Simulation sim(load_shared_cc8(shared), make_world({}), cc8_controller_params(shared), options);
   sim.load_and_start(cc8_controller_names());
@@ -73,6 +74,8 @@ TEST(Cc8Scenario, RockerDifferentialPitchesTheBodyByTheMeanOfTheRockers) {
       return (x > 0.35 && x < 0.75 && y > 0.25 && y < 0.60) ? 0.12 : 0.0;
     });
     SimulationOptions options;
+  options.integrator = cc8_test_integrator();
+    options.integrator = cc8_test_integrator();
     options.spawn.z = 0.15;
     options.differential = mode;
     Simulation sim(load_shared_cc8(shared), world, cc8_controller_params(shared), options);
@@ -100,6 +103,7 @@ TEST(Cc8Scenario, StaysUprightOnTheMarsYard2022ElevationModel) {
   config.name = tif.string();
   const World world = make_world(config);
   SimulationOptions options;
+  options.integrator = cc8_test_integrator();
   options.spawn.z = 0.1;
   Simulation sim(load_shared_cc8(shared), world, cc8_controller_params(shared), options);
   sim.load_and_start(cc8_controller_names());

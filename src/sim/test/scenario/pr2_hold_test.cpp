@@ -11,6 +11,7 @@
 #include "control/params.hpp"
 #include "description/urdf_parser.hpp"
 #include "sim/simulation.hpp"
+#include "sim/test/scenario/pr2_util.hpp"
 #include "sim/test/scenario/scenario_util.hpp"
 
 namespace mechsim::sim {
@@ -72,6 +73,7 @@ TEST(Pr2Scenario, HoldsItsPostureWithPositionControllers) {
   const control::Params params = control::Params::from_yaml_string(pr2_posture_yaml(names), "pr2 posture");
   SimulationOptions options;
   options.spawn.z = 0.01;
+  options.integrator = pr2_test_integrator();
   Simulation sim(std::move(pr2), make_world({}), params, options);
   sim.load_and_start(names);
   ASSERT_TRUE(sim.run_for(1.0));

@@ -1,5 +1,6 @@
 #include "sim/test/scenario/pr2_util.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
 #include "control/params.hpp"
@@ -8,6 +9,16 @@
 namespace mechsim::sim {
 
 namespace fs = std::filesystem;
+
+physics::Integrator pr2_test_integrator() {
+  const char* env = std::getenv("MECHSIM_PR2_INTEGRATOR");
+  if (env == nullptr || *env == '\0') return kPr2DefaultIntegrator;
+  const auto parsed = physics::parse_integrator(env);
+  if (!parsed) {
+    throw std::runtime_error(std::string("MECHSIM_PR2_INTEGRATOR: expected 'implicit', 'euler' or 'rk4', got '") + env + "'");
+  }
+  return *parsed;
+}
 
 bool pr2_shared_data_present() { return fs::exists(fs::path(MECHSIM_SHARED_DIR) / "robots/reference/pr2.urdf"); }
 
@@ -21,6 +32,7 @@ std::unique_ptr<Simulation> make_pr2_simulation(const std::vector<std::string>& 
       control::Params::from_yaml_file((fs::path(MECHSIM_SOURCE_DIR) / "robots/pr2/config/controllers.yaml").string());
   SimulationOptions options;
   options.spawn.z = 0.01;
+  options.integrator = pr2_test_integrator();
   const World empty = make_world({});
   auto sim = std::make_unique<Simulation>(std::move(pr2), world != nullptr ? *world : empty, root.child("pr2"), options);
   sim->load_and_start(start);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <stdexcept>
 
@@ -18,6 +19,16 @@ description::RobotModel load_shared_cc8(const std::filesystem::path& shared) {
 control::Params cc8_controller_params(const std::filesystem::path& shared) {
   return control::Params::from_yaml_file((shared / "robots/cc8_description/config/controller.yaml").string())
       .child("cc8");
+}
+
+physics::Integrator cc8_test_integrator() {
+  const char* env = std::getenv("MECHSIM_CC8_INTEGRATOR");
+  if (env == nullptr || *env == '\0') return physics::Integrator::Implicit;
+  const auto parsed = physics::parse_integrator(env);
+  if (!parsed) {
+    throw std::runtime_error(std::string("MECHSIM_CC8_INTEGRATOR: expected 'implicit', 'euler' or 'rk4', got '") + env + "'");
+  }
+  return *parsed;
 }
 
 std::vector<std::string> cc8_controller_names() {

@@ -18,6 +18,9 @@ namespace mechsim::sim {
 description::RobotModel load_shared_cc8(const std::filesystem::path& shared);
 control::Params cc8_controller_params(const std::filesystem::path& shared);  // the `cc8` namespace
 std::vector<std::string> cc8_controller_names();                            // all 11
+// Implicit, or the environment variable MECHSIM_CC8_INTEGRATOR (implicit | euler | rk4) to run the
+// CC8 stand and differential figures under another integrator; throws naming a bad value.
+physics::Integrator cc8_test_integrator();
 
 description::Pose link_pose(const Simulation& sim, const std::string& link);
 // Wheel links (name starting with "wheel_") touching the ground or terrain.
