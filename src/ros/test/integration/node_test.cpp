@@ -171,7 +171,18 @@ TEST_F(CC8Node, SpawnerStartsTheCc8ControllersWithTheirTopicsAndUnloadsThemOnSig
     if (rtf > 0.95) {
       EXPECT_NEAR(wall_rate, 50.0, 5.0);
     }
-    for (std::size_t i = 1; i < stamps.size(); ++i) EXPECT_NEAR(stamps[i] - stamps[i - 1], 0.02, 0.0011);  // one tick of jitter
+    // Stamps are whole publish periods apart (one tick of jitter). A period may be skipped when
+    // the publishing thread holds the snapshot as the tick offers it (realtime_tools' try-lock
+    // rule) or under load, but rarely: at most 5 % of the gaps.
+    std::size_t skipped = 0;
+    for (std::size_t i = 1; i < stamps.size(); ++i) {
+      const double gap = stamps[i] - stamps[i - 1];
+      const double periods = std::round(gap / 0.02);
+      EXPECT_GE(periods, 1.0) << "gap " << gap << " s";
+      EXPECT_NEAR(gap, 0.02 * periods, 0.0011) << "gap " << gap << " s";
+      if (periods > 1.0) ++skipped;
+    }
+    EXPECT_LE(skipped, stamps.size() / 20) << skipped << " of " << stamps.size() - 1 << " gaps skipped a period";
   }
 
   // A velocity command on the wheel's command topic turns the wheel; its state topic reports it.
