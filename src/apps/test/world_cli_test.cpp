@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -28,8 +29,10 @@ std::string slurp(const fs::path& path) {
   return text.str();
 }
 
+// One folder per test process: CTest runs the tests of this program in parallel processes, which
+// must not share output files.
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / "mechsim_world_cli_test";
+  const fs::path dir = fs::temp_directory_path() / ("mechsim_world_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }
