@@ -12,6 +12,15 @@
 //   trajectories      <robot ns>/<controller>/command (trajectory_msgs/JointTrajectory),
 //                     <robot ns>/<controller>/state (control_msgs/JointTrajectoryControllerState,
 //                     at the state rate), <robot ns>/<controller>/follow_joint_trajectory (action)
+// PR2 controller types (robot_mechanism_controllers/*, pr2_mechanism_controllers/*) speak the
+// PR2's messages instead (pr2_actions.hpp):
+//   state topics      pr2_controllers_msgs/JointControllerState, JointTrajectoryControllerState
+//   JointTrajectoryActionController  also <controller>/joint_trajectory_action
+//                     (pr2_controllers_msgs/JointTrajectoryAction) beside follow_joint_trajectory
+//   Pr2GripperController  <controller>/command (pr2_controllers_msgs/Pr2GripperCommand),
+//                     <controller>/gripper_action (pr2_controllers_msgs/Pr2GripperCommandAction)
+//   Pr2Odometry       <controller>/odom at odom_publish_rate (default 30 Hz) and odom ->
+//                     base_footprint on /tf unless publish_tf is false (the PR2's parameters)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
 // relative names resolve in the controller's namespace. Remapping the full name works too.
 #include <geometry_msgs/Twist.h>
@@ -22,8 +31,12 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include <control_msgs/JointControllerState.h>
+#include <pr2_controllers_msgs/JointControllerState.h>
+#include <pr2_controllers_msgs/JointTrajectoryControllerState.h>
+#include <pr2_controllers_msgs/Pr2GripperCommand.h>
 
 #include "ros/sim_node.hpp"
+#include "ros/pr2_actions.hpp"
 #include "ros/trajectory_action.hpp"
 
 namespace mechsim::ros {
@@ -31,6 +44,7 @@ namespace mechsim::ros {
 struct SimNode::Binding {
   PortRef port;
   bool alive = true;  // under bindings_mutex_: false once unbinding started
+  bool pr2 = false;   // a PR2 controller type: pr2_controllers_msgs state messages
   ::ros::Subscriber subscriber;
   ::ros::Publisher publisher;
   ::ros::Publisher tf_publisher;  // odometry only
@@ -42,6 +56,8 @@ struct SimNode::Binding {
   OdometryData odom;
   control::JointTrajectoryControllerState trajectory_state;
   std::unique_ptr<TrajectoryActionServer> action;
+  std::unique_ptr<Pr2TrajectoryActionServer> pr2_action;  // JointTrajectoryActionController only
+  std::unique_ptr<GripperActionServer> gripper_action;
 };
 
 namespace {
@@ -62,6 +78,41 @@ std::string topic_param(const control::Params& params, const std::string& contro
     ROS_WARN_STREAM("mechsim: " << e.what());
   }
   return port;
+}
+
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The PR2's controller packages (pr2_controller_manager's types).
+bool is_pr2_type(const std::string& type) {
+  return starts_with(type, "robot_mechanism_controllers/") || starts_with(type, "pr2_mechanism_controllers/");
+}
+
+constexpr const char* kPr2TrajectoryActionType = "robot_mechanism_controllers/JointTrajectoryActionController";
+constexpr const char* kPr2OdometryType = "pr2_mechanism_controllers/Pr2Odometry";
+
+template <class Msg>
+void fill_state(Msg& msg, const JointControllerStateData& d) {
+  msg.header.stamp = ::ros::Time(d.stamp);
+  msg.set_point = d.set_point;
+  msg.process_value = d.process_value;
+  msg.process_value_dot = d.process_value_dot;
+  msg.error = d.error;
+  msg.time_step = d.time_step;
+  msg.command = d.command;
+  msg.p = d.p;
+  msg.i = d.i;
+  msg.d = d.d;
+  msg.i_clamp = d.i_clamp;
+}
+
+pr2_controllers_msgs::JointTrajectoryControllerState to_pr2(const control_msgs::JointTrajectoryControllerState& m) {
+  pr2_controllers_msgs::JointTrajectoryControllerState out;
+  out.header = m.header;
+  out.joint_names = m.joint_names;
+  out.desired = m.desired;
+  out.actual = m.actual;
+  out.error = m.error;
+  return out;
 }
 
 }  // namespace
@@ -93,6 +144,7 @@ void SimNode::bind(const std::string& controller) {
   for (const PortRef& port : bridge_->ports(controller)) {
     auto b = std::make_shared<Binding>();
     b->port = port;
+    b->pr2 = is_pr2_type(port.controller_type);
     std::weak_ptr<Binding> weak = b;
     const std::string topic = topic_param(params, controller, port.name);
     switch (port.type) {
@@ -132,7 +184,8 @@ void SimNode::bind(const std::string& controller) {
             });
         break;
       case PortType::JointControllerState: {
-        b->publisher = controller_nh.advertise<control_msgs::JointControllerState>(topic, 1);
+        b->publisher = b->pr2 ? controller_nh.advertise<pr2_controllers_msgs::JointControllerState>(topic, 1)
+                              : controller_nh.advertise<control_msgs::JointControllerState>(topic, 1);
         const double rate = rate_param(params, controller, "state_publish_rate", options_.state_publish_rate);
         b->period = rate > 0.0 ? 1.0 / rate : 0.0;
         break;
@@ -143,11 +196,15 @@ void SimNode::bind(const std::string& controller) {
         break;
       case PortType::Odometry: {
         b->publisher = controller_nh.advertise<nav_msgs::Odometry>(topic, 1);
-        const double rate = rate_param(params, controller, "publish_rate", options_.odom_publish_rate);
+        // pr2_mechanism_controllers/Pr2Odometry names its rate and TF switch differently from
+        // diff_drive_controller (and publishes at 30 Hz by default).
+        const bool pr2_odometry = port.controller_type == kPr2OdometryType;
+        const double rate = pr2_odometry ? rate_param(params, controller, "odom_publish_rate", 30.0)
+                                         : rate_param(params, controller, "publish_rate", options_.odom_publish_rate);
         b->period = rate > 0.0 ? 1.0 / rate : 0.0;
         bool odom_tf = true;
         try {
-          if (auto c = params.find(controller)) odom_tf = c->get<bool>("enable_odom_tf", true);
+          if (auto c = params.find(controller)) odom_tf = c->get<bool>(pr2_odometry ? "publish_tf" : "enable_odom_tf", true);
         } catch (const std::exception& e) {
           ROS_WARN_STREAM("mechsim: " << e.what());
         }
@@ -167,13 +224,32 @@ void SimNode::bind(const std::string& controller) {
             });
         break;
       case PortType::TrajectoryState: {
-        b->publisher = controller_nh.advertise<control_msgs::JointTrajectoryControllerState>(topic, 1);
+        b->publisher = b->pr2 ? controller_nh.advertise<pr2_controllers_msgs::JointTrajectoryControllerState>(topic, 1)
+                              : controller_nh.advertise<control_msgs::JointTrajectoryControllerState>(topic, 1);
         const double rate = rate_param(params, controller, "state_publish_rate", options_.state_publish_rate);
         b->period = rate > 0.0 ? 1.0 / rate : 0.0;
         break;
       }
       case PortType::TrajectoryGoal:
         b->action = std::make_unique<TrajectoryActionServer>(controller_nh, topic, port);
+        if (port.controller_type == kPr2TrajectoryActionType) {
+          b->pr2_action = std::make_unique<Pr2TrajectoryActionServer>(
+              controller_nh, topic_param(params, controller, "joint_trajectory_action"), port);
+        }
+        break;
+      case PortType::GripperCommand:
+        b->subscriber = controller_nh.subscribe<pr2_controllers_msgs::Pr2GripperCommand>(
+            topic, 1, [this, weak](const pr2_controllers_msgs::Pr2GripperCommand::ConstPtr& msg) {
+              std::lock_guard<std::mutex> lock(bindings_mutex_);
+              auto self = weak.lock();
+              std::string error;
+              if (self && self->alive && !write_gripper_command(self->port, msg->position, msg->max_effort, &error)) {
+                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": command rejected: " << error);
+              }
+            });
+        break;
+      case PortType::GripperGoal:
+        b->gripper_action = std::make_unique<GripperActionServer>(controller_nh, topic, port);
         break;
       case PortType::Other:
         continue;
@@ -205,6 +281,14 @@ void SimNode::unbind(const std::string& controller) {
       b->action->shutdown();
       b->action.reset();
     }
+    if (b->pr2_action) {
+      b->pr2_action->shutdown();
+      b->pr2_action.reset();
+    }
+    if (b->gripper_action) {
+      b->gripper_action->shutdown();
+      b->gripper_action.reset();
+    }
     b->subscriber.shutdown();
     b->publisher.shutdown();
     b->tf_publisher.shutdown();
@@ -220,18 +304,14 @@ void SimNode::publish_controller_states(double time) {
         if (time + 1e-9 < b.next_due) break;
         if (!read_joint_controller_state(b.port, b.jcs, &b.sequence)) break;
         b.next_due = time + b.period;
+        if (b.pr2) {
+          pr2_controllers_msgs::JointControllerState msg;
+          fill_state(msg, b.jcs);
+          b.publisher.publish(msg);
+          break;
+        }
         control_msgs::JointControllerState msg;
-        msg.header.stamp = ::ros::Time(b.jcs.stamp);
-        msg.set_point = b.jcs.set_point;
-        msg.process_value = b.jcs.process_value;
-        msg.process_value_dot = b.jcs.process_value_dot;
-        msg.error = b.jcs.error;
-        msg.time_step = b.jcs.time_step;
-        msg.command = b.jcs.command;
-        msg.p = b.jcs.p;
-        msg.i = b.jcs.i;
-        msg.d = b.jcs.d;
-        msg.i_clamp = b.jcs.i_clamp;
+        fill_state(msg, b.jcs);
         msg.antiwindup = b.jcs.antiwindup;
         b.publisher.publish(msg);
         break;
@@ -286,7 +366,11 @@ void SimNode::publish_controller_states(double time) {
         if (time + 1e-9 < b.next_due) break;
         if (!read_trajectory_state(b.port, b.trajectory_state, &b.sequence)) break;
         b.next_due = time + b.period;
-        b.publisher.publish(to_msg(b.trajectory_state));
+        if (b.pr2) {
+          b.publisher.publish(to_pr2(to_msg(b.trajectory_state)));
+        } else {
+          b.publisher.publish(to_msg(b.trajectory_state));
+        }
         break;
       }
       default:

@@ -23,10 +23,15 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
     tf_->publish_static(bridge_->time());
   }
+  // The statistics observer runs before on_tick, so that a tick's statistics include it.
+  if (options_.pr2) bridge_->enable_mechanism_statistics();
   bridge_->add_observer([this](double time) { on_tick(time); });
   advertise_sim_services();
   advertise_controller_manager();
-  if (options_.pr2) advertise_pr2_controller_manager();
+  if (options_.pr2) {
+    advertise_pr2_controller_manager();
+    advertise_pr2_outputs();
+  }
 }
 
 SimNode::~SimNode() { stop(); }
@@ -76,6 +81,7 @@ void SimNode::on_tick(double time) {
     last_clock_ = now;
   }
   publish_controller_states(time);
+  if (options_.pr2) publish_pr2_outputs(time);
   if (tf_ && time + 1e-9 >= next_tf_) {
     publish_tf(time);
     next_tf_ = time + (options_.tf_rate > 0.0 ? 1.0 / options_.tf_rate : 0.0);

@@ -5,7 +5,9 @@
 //   - /clock, and gazebo's /gazebo/{pause_physics, unpause_physics, reset_simulation, reset_world};
 //   - the controller manager services under <robot namespace>/controller_manager/ (cm_services.cpp);
 //   - each loaded controller's topics (controller_bindings.cpp);
-//   - the built-in robot state publisher (tf_publisher.cpp).
+//   - the built-in robot state publisher (tf_publisher.cpp);
+//   - for a PR2, pr2_controller_manager's own outputs: joint_states, mechanism_statistics and
+//     the latched /calibrated (pr2_outputs.cpp).
 //
 // Threads: the loop thread ticks and runs the observers (clock, controller state topics, TF);
 // ROS callbacks (services, command subscribers) run on the node's spinner threads. The binding
@@ -59,6 +61,8 @@ class SimNode {
   void advertise_sim_services();
   void advertise_controller_manager();
   void advertise_pr2_controller_manager();
+  void advertise_pr2_outputs();           // pr2_outputs.cpp
+  void publish_pr2_outputs(double time);  // loop thread
   // Re-reads <ns>/<controller> from the parameter server into the manager's Params tree.
   void refresh_params(const std::string& controller);
   // Controller lifecycle with bindings (controller_bindings.cpp).
@@ -81,6 +85,14 @@ class SimNode {
   double next_tf_ = 0.0;                 // s, sim time of the next /tf message
   double last_tf_ = -1.0;                // s, sim time of the last one
   std::vector<double> joint_positions_;  // reused by the loop thread
+
+  // pr2_controller_manager's outputs (loop thread; only with options_.pr2).
+  ::ros::Publisher pr2_joint_states_pub_, pr2_statistics_pub_, calibrated_pub_;
+  double joint_state_period_ = 0.01;  // s (sim time); 0: every tick
+  double statistics_period_ = 1.0;    // s (sim time); 0: every tick
+  double next_joint_states_ = 0.0, next_statistics_ = 0.0;  // s, sim time when due
+  JointStatesData pr2_joint_states_;
+  MechanismStatisticsData pr2_statistics_;
 
   std::mutex bindings_mutex_;
   std::vector<std::shared_ptr<Binding>> bindings_;

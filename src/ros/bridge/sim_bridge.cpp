@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "control/rover_drive_params.hpp"
+#include "ros/bridge/mechanism_statistics.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world.hpp"
 
@@ -42,6 +43,8 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::TrajectoryCommand: return PortType::TrajectoryCommand;
     case control::PortKind::TrajectoryGoal: return PortType::TrajectoryGoal;
     case control::PortKind::JointTrajectoryState: return PortType::TrajectoryState;
+    case control::PortKind::GripperCommand: return PortType::GripperCommand;
+    case control::PortKind::GripperGoal: return PortType::GripperGoal;
     default: return PortType::Other;
   }
 }
@@ -54,6 +57,7 @@ struct SimBridge::Impl {
   control::Params params;
   std::unique_ptr<sim::Simulation> simulation;
   std::vector<int> physics_joint;  // per description joint; -1 when the physics has none
+  std::shared_ptr<MechanismStatistics> statistics;  // PR2 controller manager outputs; null: off
 };
 
 SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
@@ -99,6 +103,23 @@ void SimBridge::joint_positions(std::vector<double>& out) const {
 }
 
 description::Pose SimBridge::base_pose() const { return impl_->simulation->physics().base_pose(); }
+
+void SimBridge::enable_mechanism_statistics() {
+  if (impl_->statistics) return;
+  impl_->statistics = std::make_shared<MechanismStatistics>(*impl_->simulation);
+  impl_->simulation->add_observer(
+      [stats = impl_->statistics](const sim::Simulation& s) { stats->update(s); });
+}
+
+void SimBridge::mechanism_joint_states(JointStatesData& out) const {
+  if (!impl_->statistics) throw std::logic_error("mechanism_joint_states: enable_mechanism_statistics() first");
+  impl_->statistics->joint_states(*impl_->simulation, out);
+}
+
+void SimBridge::take_mechanism_statistics(MechanismStatisticsData& out) {
+  if (!impl_->statistics) throw std::logic_error("take_mechanism_statistics: enable_mechanism_statistics() first");
+  impl_->statistics->take(*impl_->simulation, out);
+}
 
 double SimBridge::time() const { return impl_->simulation->time(); }
 double SimBridge::period() const { return impl_->simulation->period(); }
@@ -174,9 +195,11 @@ std::vector<PortRef> SimBridge::ports(const std::string& controller) const {
   std::vector<PortRef> out;
   control::Controller* c = impl_->simulation->controllers().controller(controller);
   if (!c) return out;
+  const auto info = impl_->simulation->controllers().controller_info(controller);
   for (control::Port* p : c->ports()) {
     PortRef ref;
     ref.controller = controller;
+    ref.controller_type = info ? info->type : std::string();
     ref.name = p->name();
     ref.type = port_type(*p);
     if (auto* array = dynamic_cast<control::ArrayCommandPort*>(p)) ref.size = array->size();

@@ -46,12 +46,15 @@ enum class PortType : std::uint8_t {
   TrajectoryCommand,  // trajectory_msgs/JointTrajectory ("command")
   TrajectoryGoal,     // control_msgs/FollowJointTrajectoryAction ("follow_joint_trajectory")
   TrajectoryState,    // control_msgs/JointTrajectoryControllerState ("state")
+  GripperCommand,     // pr2_controllers_msgs/Pr2GripperCommand ("command" of the PR2 gripper)
+  GripperGoal,        // pr2_controllers_msgs/Pr2GripperCommandAction ("gripper_action")
   Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
 };
 
 // A handle on one port of one loaded controller (see the lifetime rule above).
 struct PortRef {
   std::string controller;
+  std::string controller_type;  // e.g. robot_mechanism_controllers/JointTrajectoryActionController
   std::string name;  // the port's name: "command", "state", "joint_states", "cmd_vel", "odom", ...
   PortType type = PortType::Other;
   std::size_t size = 0;  // ArrayCommand: values expected
@@ -100,6 +103,52 @@ struct OdometryData {
   std::vector<double> pose_covariance, twist_covariance;  // 36 each, row-major
 };
 
+// pr2_controllers_msgs/Pr2GripperCommandResult and Feedback.
+struct GripperStateData {
+  double position = 0.0;  // m, the gap between the finger tips
+  double effort = 0.0;    // N, the effort commanded on the gap joint
+  bool stalled = false;
+  bool reached_goal = false;
+};
+
+// pr2_mechanism_msgs/JointStatistics, over the window since the previous take (see
+// SimBridge::take_mechanism_statistics).
+struct JointStatisticsData {
+  std::string name;
+  double position = 0.0, velocity = 0.0;   // rad or m, rad/s or m/s, now
+  double measured_effort = 0.0;            // N m or N, now
+  double commanded_effort = 0.0;           // N m or N, now (after the safety limits)
+  bool violated_limits = false;            // window: outside [lower, upper], or effort at its limit
+  double odometer = 0.0;                   // rad or m travelled since the simulation started
+  double min_position = 0.0, max_position = 0.0;  // window
+  double max_abs_velocity = 0.0, max_abs_effort = 0.0;  // window (measured effort)
+};
+
+// pr2_mechanism_msgs/ActuatorStatistics: what a simulated actuator knows.
+struct ActuatorStatisticsData {
+  std::string name;
+  int device_id = 0;              // index in the mechanism
+  double position = 0.0;          // rad (motor side)
+  double velocity = 0.0;          // rad/s
+  double commanded_effort = 0.0;  // N m
+  double measured_effort = 0.0;   // N m
+};
+
+// pr2_mechanism_msgs/ControllerStatistics.
+struct ControllerStatisticsData {
+  std::string name;
+  bool running = false;
+  double max_time = 0.0, mean_time = 0.0;  // s of wall time per update, since the load
+  std::uint64_t overruns = 0;              // updates longer than the period
+};
+
+struct MechanismStatisticsData {
+  double stamp = 0.0;  // s
+  std::vector<ActuatorStatisticsData> actuators;
+  std::vector<JointStatisticsData> joints;
+  std::vector<ControllerStatisticsData> controllers;
+};
+
 class SimBridge {
  public:
   using Observer = std::function<void(double time)>;  // sim time (s) after a tick
@@ -120,6 +169,15 @@ class SimBridge {
   // physics does not have (fixed). Base pose X_WB of the root link.
   void joint_positions(std::vector<double>& out) const;
   description::Pose base_pose() const;
+  // The PR2 controller manager's own outputs (pr2_controller_manager: joint_states,
+  // mechanism_statistics). enable_mechanism_statistics() makes every following tick update the
+  // joint statistics window (call it before the loop thread starts). Joints: every non-fixed
+  // description joint, the mechanism's state where the mechanism has the joint (the PR2 gripper
+  // gap included), else the physics'. Both reads are for the loop thread (an observer).
+  void enable_mechanism_statistics();
+  void mechanism_joint_states(JointStatesData& out) const;
+  // Fills `out` and starts a new window (min/max, violated_limits, max_abs_*).
+  void take_mechanism_statistics(MechanismStatisticsData& out);
 
   // ---- any thread
   double time() const;  // s
@@ -176,5 +234,21 @@ bool cancel_goal(const PortRef& port, std::uint64_t id);
 std::optional<control::GoalStatus> goal_status(const PortRef& port, std::uint64_t id);
 std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::uint64_t id);
 bool read_goal_feedback(const PortRef& port, control::FollowJointTrajectoryFeedback& out, std::uint64_t* sequence);
+
+// The PR2 gripper (control/pr2_gripper_controller.hpp explains the goal life: Succeeded when
+// reached, Aborted with stalled = true when it stalls first, Preempted by a cancel, a newer
+// goal or a plain command).
+bool write_gripper_command(const PortRef& port, double position, double max_effort, std::string* error);
+struct GripperTicket {
+  std::uint64_t id = 0;
+  bool accepted = false;
+  std::string error;  // why it was rejected
+};
+bool submit_gripper_goal(const PortRef& port, double position, double max_effort, GripperTicket& ticket);
+bool cancel_gripper_goal(const PortRef& port, std::uint64_t id);
+std::optional<control::GoalStatus> gripper_goal_status(const PortRef& port, std::uint64_t id);
+std::optional<GripperStateData> gripper_goal_result(const PortRef& port, std::uint64_t id);
+// The latest feedback (about goal `*goal_id`, 0: none yet) when newer than `*sequence`.
+bool read_gripper_feedback(const PortRef& port, GripperStateData& out, std::uint64_t* goal_id, std::uint64_t* sequence);
 
 }  // namespace mechsim::ros
