@@ -68,12 +68,12 @@ Stance stand(Simulation& sim, double seconds) {
   return s;
 }
 
-description::RobotModel load_own_pr2() {
+description::RobotModel load_own_pr2(const std::string& variant = "pr2") {
   description::LoadOptions load;
   load.packages["mechsim_pr2"] = (fs::path(MECHSIM_SOURCE_DIR) / "robots/pr2").string();
   load.lenient = false;
-  return description::load_robot((fs::path(MECHSIM_SOURCE_DIR) / "robots/pr2/urdf/pr2.urdf.xacro").string(), load)
-      .model;
+  const fs::path file = fs::path(MECHSIM_SOURCE_DIR) / "robots/pr2/urdf" / (variant + ".urdf.xacro");
+  return description::load_robot(file.string(), load).model;
 }
 
 TEST(Pr2OwnDescription, StandsTwoSecondsUnderTheDefaultControllers) {
@@ -99,6 +99,25 @@ TEST(Pr2OwnDescription, StandsTwoSecondsUnderTheDefaultControllers) {
   const auto torso = sim->physics().model().joint_index("torso_lift_joint");
   ASSERT_TRUE(torso);
   EXPECT_LT(std::abs(sim->physics().position(*torso)), 0.02);
+}
+
+// Every variant builds into the physics and rests level on its casters with no controller
+// running (the one-armed PR2 SE carries its arm on one side).
+TEST(Pr2OwnDescription, EveryVariantRestsLevelWithoutControllers) {
+  for (const char* variant : {"pr2", "pr2_no_arms", "pr2_no_kinect", "pr2_one_arm"}) {
+    SCOPED_TRACE(variant);
+    SimulationOptions options;
+    options.spawn.z = 0.01;
+    options.integrator = pr2_test_integrator();
+    Simulation sim(load_own_pr2(variant), make_world({}), control::Params{}, options);
+    const Stance s = stand(sim, 1.0);
+    std::cout << "[ figures  ] " << variant << " without controllers, 1 s: base_footprint z " << s.min_z << " .. "
+              << s.max_z << " m, max tilt " << s.max_tilt << " rad\n";
+    EXPECT_GT(s.min_z, -0.02);
+    EXPECT_LT(s.max_z, 0.02);
+    EXPECT_LT(s.max_tilt, 0.02);
+    EXPECT_LT(s.max_xy, 0.05);
+  }
 }
 
 TEST(Pr2OwnDescription, StandsAsHighAsTheRealDescription) {
