@@ -47,7 +47,9 @@ void SimNode::advertise_pr2_outputs() {
   const ::ros::NodeHandle cm("/pr2_controller_manager");
   joint_state_period_ = period_of(cm, "joint_state_publish_rate", 100.0);
   statistics_period_ = period_of(cm, "mechanism_statistics_publish_rate", 1.0);
-  pr2_joint_states_pub_ = robot_nh_.advertise<sensor_msgs::JointState>("joint_states", 1);
+  // A queue: the simulation often runs faster than real time (at 100 Hz of sim time, several
+  // hundred messages per wall second).
+  pr2_joint_states_pub_ = robot_nh_.advertise<sensor_msgs::JointState>("joint_states", 10);
   pr2_statistics_pub_ = robot_nh_.advertise<pr2_mechanism_msgs::MechanismStatistics>("mechanism_statistics", 1);
   calibrated_pub_ = root_nh_.advertise<std_msgs::Bool>("/calibrated", 1, /*latch=*/true);
   std_msgs::Bool calibrated;

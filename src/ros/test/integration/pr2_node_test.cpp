@@ -1,0 +1,354 @@
+// The real PR2 (the reference pr2_description expansion, lenient) in mechsim_node with the PR2's
+// interfaces: gripper_action and joint_trajectory_action (pr2_controllers_msgs), the base
+// command and base_odometry, and pr2_controller_manager's joint_states, mechanism_statistics
+// and /calibrated. The controllers come from robots/pr2/config/controllers.yaml (namespace
+// /pr2). The node runs as fast as it can (about 3x real time): every check waits on sim time
+// carried by the messages, with wall-clock bounds only as timeouts.
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+#include <actionlib/client/simple_action_client.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <pr2_controllers_msgs/JointControllerState.h>
+#include <pr2_controllers_msgs/JointTrajectoryAction.h>
+#include <pr2_controllers_msgs/JointTrajectoryControllerState.h>
+#include <pr2_controllers_msgs/Pr2GripperCommandAction.h>
+#include <pr2_mechanism_msgs/ListControllers.h>
+#include <pr2_mechanism_msgs/MechanismStatistics.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/Bool.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "ros_fixture.hpp"
+
+namespace mechsim::ros::test {
+namespace {
+
+namespace pcm = pr2_controllers_msgs;
+namespace pmm = pr2_mechanism_msgs;
+
+const std::string kPr2Urdf = std::string(MECHSIM_SHARED_DIR) + "/robots/reference/pr2.urdf";
+
+const std::vector<std::string> kRightArm = {"r_shoulder_pan_joint", "r_shoulder_lift_joint", "r_upper_arm_roll_joint",
+                                            "r_elbow_flex_joint",   "r_forearm_roll_joint",  "r_wrist_flex_joint",
+                                            "r_wrist_roll_joint"};
+
+class Pr2Node : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kPr2Urdf)) {
+      GTEST_SKIP() << "the shared data folder has no PR2 (" << kPr2Urdf << "); skipping the PR2 node tests";
+    }
+    ASSERT_TRUE(::ros::master::check()) << "no ROS master";
+    name_ = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    ChildProcess load({"/usr/bin/python3", "/usr/bin/rosparam", "load",
+                       std::string(MECHSIM_SOURCE_DIR) + "/robots/pr2/config/controllers.yaml"},
+                      log_dir() + "/rosparam_" + name_ + ".log");
+    ASSERT_EQ(load.wait(30.0), 0) << load.log();
+    // The controllers' namespace is /pr2 (the YAML's); the PR2 gazebo plugin in the URDF makes
+    // the node a pr2_controller_manager.
+    node_ = std::make_unique<ChildProcess>(
+        std::vector<std::string>{MECHSIM_NODE_EXE, "__name:=mechsim", "_model:=" + kPr2Urdf, "_lenient:=true",
+                                 "_robot_namespace:=/pr2"},
+        log_dir() + "/node_" + name_ + ".log");
+    pmm::ListControllers list;
+    ASSERT_TRUE(call("/pr2_controller_manager/list_controllers", list, 30.0))
+        << "the node did not come up; its log:\n" << node_->log();
+  }
+
+  void TearDown() override {
+    if (spawner_) spawner_->stop();
+    if (node_) {
+      const int status = node_->stop(10.0);
+      EXPECT_EQ(status, 0) << "mechsim_node did not stop cleanly on SIGINT; its log:\n" << node_->log();
+    }
+  }
+
+  // Loads and starts `controllers` with mechsim_spawner (namespace /pr2); true once all run.
+  bool spawn(const std::vector<std::string>& controllers) {
+    std::vector<std::string> argv{MECHSIM_SPAWNER_EXE, "__ns:=/pr2", "__name:=spawner"};
+    argv.insert(argv.end(), controllers.begin(), controllers.end());
+    spawner_ = std::make_unique<ChildProcess>(argv, log_dir() + "/spawner_" + name_ + ".log");
+    const bool running = wait_until(
+        [&] {
+          pmm::ListControllers list;
+          if (!call("/pr2_controller_manager/list_controllers", list, 1.0)) return false;
+          return static_cast<std::size_t>(std::count(list.response.state.begin(), list.response.state.end(),
+                                                     "running")) == controllers.size();
+        },
+        20.0);
+    if (!running) ADD_FAILURE() << "controllers not running; spawner log:\n" << spawner_->log();
+    return running;
+  }
+
+  std::string name_;
+  std::unique_ptr<ChildProcess> node_;
+  std::unique_ptr<ChildProcess> spawner_;
+  ::ros::NodeHandle nh_;
+};
+
+TEST_F(Pr2Node, GripperActionOpensAndJointTrajectoryActionMovesTheArm) {
+  ASSERT_TRUE(spawn({"r_gripper_controller", "r_arm_controller"}));
+
+  // The gripper state speaks pr2_controllers_msgs.
+  std::mutex m;
+  double gap = NAN;
+  ::ros::Subscriber gripper_state = nh_.subscribe<pcm::JointControllerState>(
+      "/pr2/r_gripper_controller/state", 10, [&](const pcm::JointControllerState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        gap = msg->process_value;
+      });
+
+  actionlib::SimpleActionClient<pcm::Pr2GripperCommandAction> gripper("/pr2/r_gripper_controller/gripper_action",
+                                                                      true);
+  ASSERT_TRUE(gripper.waitForServer(::ros::Duration(10.0)));
+  pcm::Pr2GripperCommandGoal open;
+  open.command.position = 0.08;
+  open.command.max_effort = -1.0;
+  int feedback_count = 0;
+  gripper.sendGoal(open, {}, {}, [&](const pcm::Pr2GripperCommandFeedbackConstPtr&) { ++feedback_count; });
+  ASSERT_TRUE(gripper.waitForResult(::ros::Duration(15.0))) << "no gripper result";
+  EXPECT_EQ(gripper.getState(), actionlib::SimpleClientGoalState::SUCCEEDED) << gripper.getState().getText();
+  ASSERT_TRUE(gripper.getResult());
+  EXPECT_TRUE(gripper.getResult()->reached_goal);
+  EXPECT_FALSE(gripper.getResult()->stalled);
+  EXPECT_NEAR(gripper.getResult()->position, 0.08, 0.01);  // goal_threshold
+  EXPECT_GT(feedback_count, 0);
+  EXPECT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return std::abs(gap - 0.08) < 0.01;
+      },
+      5.0))
+      << "gripper state process_value " << gap;
+
+  // pr2_gripper_action's stall: too little effort to move the fingers is a stall short of the
+  // goal, ABORTED with stalled = true (the gripper keeps the command).
+  pcm::Pr2GripperCommandGoal weak;
+  weak.command.position = 0.0;
+  weak.command.max_effort = 0.1;  // N
+  gripper.sendGoal(weak);
+  ASSERT_TRUE(gripper.waitForResult(::ros::Duration(15.0))) << "no gripper result";
+  EXPECT_EQ(gripper.getState(), actionlib::SimpleClientGoalState::ABORTED) << gripper.getState().getText();
+  ASSERT_TRUE(gripper.getResult());
+  EXPECT_TRUE(gripper.getResult()->stalled);
+  EXPECT_FALSE(gripper.getResult()->reached_goal);
+  EXPECT_GT(gripper.getResult()->position, 0.03);
+
+  // The plain command topic (no action): the set point follows.
+  double set_point = NAN;
+  ::ros::Subscriber set_points = nh_.subscribe<pcm::JointControllerState>(
+      "/pr2/r_gripper_controller/state", 10, [&](const pcm::JointControllerState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        set_point = msg->set_point;
+      });
+  ::ros::Publisher command = nh_.advertise<pcm::Pr2GripperCommand>("/pr2/r_gripper_controller/command", 1, true);
+  pcm::Pr2GripperCommand c;
+  c.position = 0.05;
+  c.max_effort = -1.0;
+  command.publish(c);
+  EXPECT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return std::abs(set_point - 0.05) < 1e-9 && std::abs(gap - 0.05) < 0.01;
+      },
+      10.0))
+      << "set point " << set_point << ", gap " << gap;
+
+  // The arm: joint_trajectory_action (a bare trajectory; the controller's constraints apply).
+  std::vector<double> actual;
+  ::ros::Subscriber arm_state = nh_.subscribe<pcm::JointTrajectoryControllerState>(
+      "/pr2/r_arm_controller/state", 10, [&](const pcm::JointTrajectoryControllerState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        actual = msg->actual.positions;
+      });
+  actionlib::SimpleActionClient<pcm::JointTrajectoryAction> arm("/pr2/r_arm_controller/joint_trajectory_action", true);
+  ASSERT_TRUE(arm.waitForServer(::ros::Duration(10.0)));
+  const std::vector<double> target = {-0.1, 0.0, -0.1, -0.3, 0.0, -0.3, 0.0};
+  pcm::JointTrajectoryGoal goal;
+  goal.trajectory.joint_names = kRightArm;
+  trajectory_msgs::JointTrajectoryPoint point;
+  point.positions = target;
+  point.velocities.assign(target.size(), 0.0);
+  point.time_from_start = ::ros::Duration(1.5);
+  goal.trajectory.points.push_back(point);
+  arm.sendGoal(goal);
+  ASSERT_TRUE(arm.waitForResult(::ros::Duration(20.0))) << "no arm result";
+  EXPECT_EQ(arm.getState(), actionlib::SimpleClientGoalState::SUCCEEDED) << arm.getState().getText();
+  {
+    std::lock_guard<std::mutex> l(m);
+    ASSERT_EQ(actual.size(), target.size());
+    for (std::size_t j = 0; j < target.size(); ++j) EXPECT_NEAR(actual[j], target[j], 0.05) << kRightArm[j];
+  }
+
+  // A goal naming a joint the controller does not have is rejected.
+  goal.trajectory.joint_names[0] = "no_such_joint";
+  arm.sendGoal(goal);
+  ASSERT_TRUE(arm.waitForResult(::ros::Duration(10.0)));
+  EXPECT_EQ(arm.getState(), actionlib::SimpleClientGoalState::REJECTED);
+}
+
+TEST_F(Pr2Node, BaseCommandTwistDrivesBaseOdometry) {
+  ASSERT_TRUE(spawn({"base_controller", "base_odometry"}));
+  std::mutex m;
+  nav_msgs::Odometry last;
+  std::vector<double> stamps;
+  ::ros::Subscriber odom =
+      nh_.subscribe<nav_msgs::Odometry>("/pr2/base_odometry/odom", 100, [&](const nav_msgs::Odometry::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        last = *msg;
+        stamps.push_back(msg->header.stamp.toSec());
+      });
+  bool odom_tf = false;
+  ::ros::Subscriber tf = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
+    for (const auto& t : msg->transforms) {
+      if (t.header.frame_id == "odom" && t.child_frame_id == "base_footprint") {
+        std::lock_guard<std::mutex> l(m);
+        odom_tf = true;
+      }
+    }
+  });
+  ::ros::Publisher cmd = nh_.advertise<geometry_msgs::Twist>("/pr2/base_controller/command", 1);
+  ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0; }, 10.0));
+  geometry_msgs::Twist twist;
+  twist.linear.x = 0.2;
+  // Keep commanding (the base controller stops on a stale command) until x has grown.
+  double x = 0.0;
+  const bool moved = wait_until(
+      [&] {
+        cmd.publish(twist);
+        std::lock_guard<std::mutex> l(m);
+        x = last.pose.pose.position.x;
+        return x > 0.15;
+      },
+      20.0);
+  EXPECT_TRUE(moved) << "base_odometry x = " << x;
+  std::lock_guard<std::mutex> l(m);
+  EXPECT_EQ(last.header.frame_id, "odom");
+  EXPECT_EQ(last.child_frame_id, "base_footprint");
+  EXPECT_NEAR(last.twist.twist.linear.x, 0.2, 0.05);
+  EXPECT_LT(std::abs(last.pose.pose.position.y), 0.03);
+  EXPECT_TRUE(odom_tf) << "no odom -> base_footprint on /tf";
+  // Pr2Odometry's default odom_publish_rate: 30 Hz of sim time.
+  ASSERT_GE(stamps.size(), 10u);
+  const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
+  EXPECT_NEAR(rate, 30.0, 1.5);
+  std::printf("base_odometry/odom: %.1f Hz (sim time), x = %.3f m\n", rate, last.pose.pose.position.x);
+}
+
+TEST_F(Pr2Node, ControllerManagerPublishesJointStatesMechanismStatisticsAndCalibrated) {
+  ASSERT_TRUE(spawn({"r_gripper_controller"}));
+  std::mutex m;
+  std::vector<double> stamps;
+  std::vector<std::string> names;
+  bool sizes_match = true;
+  ::ros::Subscriber js = nh_.subscribe<sensor_msgs::JointState>(
+      "/pr2/joint_states", 1000, [&](const sensor_msgs::JointState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        stamps.push_back(msg->header.stamp.toSec());
+        names = msg->name;
+        sizes_match = sizes_match && msg->position.size() == msg->name.size() &&
+                      msg->velocity.size() == msg->name.size() && msg->effort.size() == msg->name.size();
+      });
+  std::vector<pmm::MechanismStatistics> statistics;
+  ::ros::Subscriber ms = nh_.subscribe<pmm::MechanismStatistics>(
+      "/pr2/mechanism_statistics", 10, [&](const pmm::MechanismStatistics::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        statistics.push_back(*msg);
+      });
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return statistics.size() >= 2 && stamps.size() >= 200;
+      },
+      20.0))
+      << statistics.size() << " mechanism_statistics, " << stamps.size() << " joint_states";
+
+  {
+  std::lock_guard<std::mutex> l(m);
+  // joint_states: every non-fixed joint, at 100 Hz of sim time (stamps whole periods apart).
+  EXPECT_TRUE(sizes_match);
+  EXPECT_THAT(names, ::testing::IsSupersetOf({"r_shoulder_pan_joint", "torso_lift_joint", "r_gripper_joint",
+                                               "fl_caster_rotation_joint", "head_tilt_joint", "l_wrist_roll_joint"}));
+  const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
+  EXPECT_NEAR(rate, 100.0, 5.0);
+  std::size_t whole = 0;
+  for (std::size_t k = 1; k < stamps.size(); ++k) {
+    if (std::abs(stamps[k] - stamps[k - 1] - 0.01) < 1e-6) ++whole;
+  }
+  EXPECT_GE(static_cast<double>(whole), 0.95 * static_cast<double>(stamps.size() - 1));
+  std::printf("joint_states: %zu messages at %.2f Hz (sim time), %zu joints\n", stamps.size(), rate, names.size());
+
+  // mechanism_statistics: the same joints, the actuators, the controller; 1 Hz of sim time.
+  const pmm::MechanismStatistics& s = statistics.back();
+  std::vector<std::string> joint_names;
+  for (const auto& j : s.joint_statistics) joint_names.push_back(j.name);
+  EXPECT_EQ(joint_names, names);
+  EXPECT_NEAR((s.header.stamp - statistics[statistics.size() - 2].header.stamp).toSec(), 1.0, 1e-6);
+  for (const auto& j : s.joint_statistics) {
+    EXPECT_LE(j.min_position, j.position + 1e-12) << j.name;
+    EXPECT_GE(j.max_position, j.position - 1e-12) << j.name;
+    EXPECT_TRUE(j.is_calibrated) << j.name;
+  }
+  std::vector<std::string> actuators;
+  for (const auto& a : s.actuator_statistics) actuators.push_back(a.name);
+  EXPECT_THAT(actuators, ::testing::IsSupersetOf({"r_shoulder_pan_motor", "r_gripper_motor", "torso_lift_motor"}));
+  ASSERT_EQ(s.controller_statistics.size(), 1u);
+  EXPECT_EQ(s.controller_statistics[0].name, "r_gripper_controller");
+  EXPECT_TRUE(s.controller_statistics[0].running);
+  EXPECT_GT(s.controller_statistics[0].mean_time.toSec(), 0.0);
+  EXPECT_GE(s.controller_statistics[0].max_time.toSec(), s.controller_statistics[0].mean_time.toSec());
+  std::printf("mechanism_statistics: %zu messages, %zu actuators, %zu joints, %zu controllers\n", statistics.size(),
+              s.actuator_statistics.size(), s.joint_statistics.size(), s.controller_statistics.size());
+  }
+
+  // /calibrated: latched, so a late subscriber still gets it.
+  std::atomic<int> calibrated{-1};
+  ::ros::Subscriber cal = nh_.subscribe<std_msgs::Bool>(
+      "/calibrated", 1, [&](const std_msgs::Bool::ConstPtr& msg) { calibrated = msg->data ? 1 : 0; });
+  EXPECT_TRUE(wait_until([&] { return calibrated.load() >= 0; }, 10.0)) << "no latched /calibrated";
+  EXPECT_EQ(calibrated.load(), 1);
+}
+
+// pr2_controller_manager's joint_state_publish_rate parameter (read at start).
+class Pr2NodeAt250Hz : public Pr2Node {
+ protected:
+  void SetUp() override {
+    ::ros::param::set("/pr2_controller_manager/joint_state_publish_rate", 250.0);
+    Pr2Node::SetUp();
+  }
+  void TearDown() override {
+    Pr2Node::TearDown();
+    ::ros::param::del("/pr2_controller_manager/joint_state_publish_rate");
+  }
+};
+
+TEST_F(Pr2NodeAt250Hz, JointStatesFollowJointStatePublishRate) {
+  std::mutex m;
+  std::vector<double> stamps;
+  ::ros::Subscriber js = nh_.subscribe<sensor_msgs::JointState>(
+      "/pr2/joint_states", 1000, [&](const sensor_msgs::JointState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        stamps.push_back(msg->header.stamp.toSec());
+      });
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return stamps.size() >= 300;
+      },
+      20.0));
+  std::lock_guard<std::mutex> l(m);
+  const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
+  EXPECT_NEAR(rate, 250.0, 12.5);
+  std::printf("joint_states at joint_state_publish_rate 250: %.2f Hz (sim time)\n", rate);
+}
+
+}  // namespace
+}  // namespace mechsim::ros::test
