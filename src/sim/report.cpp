@@ -71,8 +71,19 @@ void write_terrain(const physics::Heightmap& map, const fs::path& file, double& 
 
 }  // namespace
 
-Recorder::Recorder(const Simulation& sim, const std::string& dir) : sim_(sim) {
+Recorder::Recorder(const Simulation& sim, const std::string& dir, const std::vector<std::string>& trajectory_controllers)
+    : sim_(sim) {
   auto& manager = const_cast<Simulation&>(sim).controllers();
+  for (const std::string& name : trajectory_controllers) {
+    control::Controller* c = manager.controller(name);
+    if (c == nullptr) continue;
+    for (control::Port* p : c->ports()) {
+      if (p->kind() != control::PortKind::JointTrajectoryState) continue;
+      const auto* state = dynamic_cast<const control::StatePort<control::JointTrajectoryControllerState>*>(p);
+      trajectory_states_.push_back(state);
+      for (const std::string& joint : state->read().joint_names) trajectory_columns_.push_back(name + "/" + joint);
+    }
+  }
   for (const control::ControllerInfo& info : manager.list_controllers()) {
     control::Controller* c = manager.controller(info.name);
     if (c == nullptr) continue;
@@ -101,6 +112,12 @@ Recorder::Recorder(const Simulation& sim, const std::string& dir) : sim_(sim) {
   joints_.open(fs::path(dir) / "joints.csv");
   controllers_.open(fs::path(dir) / "controllers.csv");
   base_.open(fs::path(dir) / "base.csv");
+  if (!trajectory_states_.empty()) {
+    trajectory_.open(fs::path(dir) / "trajectory.csv");
+    trajectory_ << std::setprecision(9) << "time";
+    for (const std::string& c : trajectory_columns_) trajectory_ << ',' << c << "/desired," << c << "/actual";
+    trajectory_ << '\n';
+  }
   for (std::ofstream* f : {&joints_, &controllers_, &base_}) *f << std::setprecision(9);
   joints_ << "time";
   for (const mechanism::JointInfo& j : sim.mechanism().joints) {
@@ -137,6 +154,17 @@ void Recorder::sample(const control::StatePort<control::OdometrySnapshot>* odome
   }
   if (!files) return;
   controllers_ << '\n';
+  if (trajectory_.is_open()) {
+    trajectory_ << t;
+    for (const auto* state : trajectory_states_) {
+      const control::JointTrajectoryControllerState s = state->read();
+      for (std::size_t j = 0; j < s.joint_names.size(); ++j) {
+        trajectory_ << ',' << (j < s.desired.positions.size() ? s.desired.positions[j] : 0.0) << ','
+                    << (j < s.actual.positions.size() ? s.actual.positions[j] : 0.0);
+      }
+    }
+    trajectory_ << '\n';
+  }
   joints_ << t;
   for (const mechanism::JointState& j : sim_.mechanism_state().joints) {
     joints_ << ',' << j.position << ',' << j.velocity << ',' << j.measured_effort << ',' << j.commanded_effort;
@@ -172,12 +200,15 @@ void Recorder::close() {
   joints_.close();
   controllers_.close();
   base_.close();
+  trajectory_.close();
 }
 
-void write_report(const Scenario& s, const Simulation& sim, ScenarioResult& result, const RunOptions& options) {
+void write_report(const Scenario& s, const Simulation& sim, const Recorder& recorder, ScenarioResult& result,
+                  const RunOptions& options) {
   const fs::path dir = options.output_dir;
   fs::create_directories(dir);
   result.files.insert(result.files.end(), {"joints.csv", "controllers.csv", "base.csv"});
+  if (!recorder.trajectory_columns().empty()) result.files.push_back("trajectory.csv");
 
   std::vector<std::array<double, 2>> waypoints;
   for (const TimelineEvent& e : s.timeline) {
@@ -265,6 +296,36 @@ void write_report(const Scenario& s, const Simulation& sim, ScenarioResult& resu
         }
       }
     }
+
+    // Trajectory controllers: desired vs actual position per joint, goal start times marked.
+    const std::vector<std::string>& columns = recorder.trajectory_columns();
+    if (!columns.empty()) {
+      const std::string csv = quoted((dir / "trajectory.csv").string());
+      const std::size_t m = columns.size();
+      const int cols = m > 4 ? 3 : static_cast<int>(std::min<std::size_t>(m, 2));
+      const int rows = static_cast<int>((m + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+      std::ostringstream tj;
+      tj << "set terminal pngcairo size " << 560 * cols << "," << 280 * rows + 60 << " font 'DejaVu Sans,9'\nset output "
+         << quoted((dir / "trajectory.png").string()) << "\nset datafile separator ','\nset key top right opaque\nset grid\n"
+         << "set xlabel 'time (s)'\nset ylabel 'position (rad, m)'\n";
+      for (const TrajectoryGoalOutcome& g : result.trajectory_goals) {
+        tj << "set arrow from " << g.sent_at << ", graph 0 to " << g.sent_at << ", graph 1 nohead dt 3 lc rgb '#808080'\n";
+      }
+      tj << "set multiplot layout " << rows << "," << cols << " title "
+         << quoted(s.name + ": trajectory controllers, desired vs actual (dotted: goals sent)") << " noenhanced\n";
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t col = 2 + 2 * k;
+        tj << "set title " << quoted(columns[k]) << " noenhanced\nplot " << csv << " using 1:" << col
+           << " with lines lw 2 lc rgb '#0050ff' title 'desired', " << csv << " using 1:" << col + 1
+           << " with lines lw 1.5 dt 2 lc rgb '#d00000' title 'actual'\n";
+      }
+      tj << "unset multiplot\n";
+      if (const std::string err = run_gnuplot(dir, "trajectory", tj.str()); !err.empty()) {
+        result.warnings.push_back(err);
+      } else {
+        result.files.push_back("trajectory.png");
+      }
+    }
   }
 
   nlohmann::ordered_json j;
@@ -281,10 +342,47 @@ void write_report(const Scenario& s, const Simulation& sim, ScenarioResult& resu
   j["distance_m"] = result.distance;
   j["final_pose"] = {{"x", result.final_x}, {"y", result.final_y}, {"z", result.final_z}, {"yaw_rad", result.final_yaw}};
   j["max_tilt_rad"] = result.max_tilt;
-  if (result.has_odometry) j["odometry_error_m"] = result.odometry_error;
+  j["yaw_change_rad"] = result.yaw_change;
+  if (result.has_odometry) {
+    j["odometry_error_m"] = result.odometry_error;
+    j["odometry_yaw_error_rad"] = result.odometry_yaw_error;
+  }
   j["tracking"] = nlohmann::ordered_json::array();
   for (const TrackingError& t : result.tracking) {
     j["tracking"].push_back({{"controller", t.controller}, {"rms_error", t.rms}, {"max_error", t.max}, {"samples", t.samples}});
+  }
+  j["trajectory_goals"] = nlohmann::ordered_json::array();
+  for (const TrajectoryGoalOutcome& g : result.trajectory_goals) {
+    nlohmann::ordered_json goal = {{"controller", g.controller}, {"goal", g.index}, {"sent_at_s", g.sent_at},
+                                   {"accepted", g.accepted}, {"status", g.status}, {"finished", g.finished}};
+    if (g.finished) {
+      goal["finished_at_s"] = g.finished_at;
+      goal["result"] = control::result_code_name(g.result.error_code);
+      goal["error_string"] = g.result.error_string;
+    }
+    goal["samples"] = g.samples;
+    double worst = 0.0;
+    nlohmann::ordered_json joints = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < g.joints.size(); ++k) {
+      joints.push_back({{"joint", g.joints[k]}, {"rms_error", g.rms[k]}, {"max_error", g.max[k]}});
+      worst = std::max(worst, g.rms[k]);
+    }
+    goal["worst_rms_error"] = worst;
+    goal["joints"] = joints;
+    j["trajectory_goals"].push_back(goal);
+  }
+  j["gripper_goals"] = nlohmann::ordered_json::array();
+  for (const GripperGoalOutcome& g : result.gripper_goals) {
+    nlohmann::ordered_json goal = {{"controller", g.controller}, {"goal", g.index}, {"sent_at_s", g.sent_at},
+                                   {"position_m", g.command.position}, {"max_effort_n", g.command.max_effort},
+                                   {"accepted", g.accepted}, {"status", g.status}, {"finished", g.finished}};
+    if (!g.accepted) goal["error"] = g.error;
+    if (g.finished && g.accepted) {
+      goal["finished_after_s"] = g.finished_after;
+      goal["result"] = {{"position_m", g.result.position}, {"effort_n", g.result.effort},
+                        {"reached_goal", g.result.reached_goal}, {"stalled", g.result.stalled}};
+    }
+    j["gripper_goals"].push_back(goal);
   }
   j["checks"] = nlohmann::ordered_json::array();
   for (const CheckOutcome& c : result.checks) j["checks"].push_back({{"check", c.name}, {"passed", c.passed}, {"detail", c.detail}});

@@ -8,6 +8,7 @@
 
 #include "control/ports.hpp"
 #include "control/rover_drive_ports.hpp"
+#include "control/trajectory_goal.hpp"
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
 #include "sim/simulation.hpp"
@@ -15,10 +16,12 @@
 namespace mechsim::sim {
 
 // Samples joint states, controller states and the base pose into CSV files (when `dir` is not
-// empty) and accumulates each controller's tracking error (always).
+// empty) and accumulates each controller's tracking error (always). The trajectory controllers
+// named in `trajectory_controllers` also get their desired and actual positions per joint
+// recorded into trajectory.csv.
 class Recorder {
  public:
-  Recorder(const Simulation& sim, const std::string& dir);
+  Recorder(const Simulation& sim, const std::string& dir, const std::vector<std::string>& trajectory_controllers = {});
   void sample(const control::StatePort<control::OdometrySnapshot>* odometry);
   std::vector<TrackingError> tracking() const;
   void close();
@@ -31,15 +34,21 @@ class Recorder {
     double sum_sq = 0.0, max_abs = 0.0;
     std::size_t samples = 0;
   };
+  // Joint names ("controller/joint") of trajectory.csv, in column order (desired, actual each).
+  const std::vector<std::string>& trajectory_columns() const { return trajectory_columns_; }
 
  private:
   const Simulation& sim_;
   std::vector<Channel> channels_;
-  std::ofstream joints_, controllers_, base_;
+  std::vector<const control::StatePort<control::JointTrajectoryControllerState>*> trajectory_states_;
+  std::vector<std::string> trajectory_columns_;
+  std::ofstream joints_, controllers_, base_, trajectory_;
 };
 
-// summary.json and, when options.plots, path.png, tracking.png and errors.png. Adds the files
-// written to result.files; a plotting failure becomes a warning.
-void write_report(const Scenario& scenario, const Simulation& sim, ScenarioResult& result, const RunOptions& options);
+// summary.json and, when options.plots, path.png, tracking.png, errors.png and (when the
+// recorder has trajectory columns) trajectory.png. Adds the files written to result.files; a
+// plotting failure becomes a warning.
+void write_report(const Scenario& scenario, const Simulation& sim, const Recorder& recorder, ScenarioResult& result,
+                  const RunOptions& options);
 
 }  // namespace mechsim::sim

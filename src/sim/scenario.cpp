@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <numbers>
+#include <string_view>
 
 #include "control/params.hpp"
 
@@ -54,8 +56,98 @@ control::Twist read_twist(const Params& p) {
   return t;
 }
 
+// Rejects keys outside `allowed` (a misspelt bound must not be ignored).
+void only_keys(const Params& p, std::initializer_list<const char*> allowed) {
+  if (!p.is_map()) fail(p, "expected a map");
+  for (const std::string& k : p.keys()) {
+    bool ok = false;
+    std::string list;
+    for (const char* a : allowed) {
+      ok = ok || k == a;
+      list += (list.empty() ? "" : ", ") + std::string(a);
+    }
+    if (!ok) fail(p.child(k), "unknown key '" + k + "' (expected one of: " + list + ")");
+  }
+}
+
+double finite(const Params& p, std::string_view key, double fallback) {
+  if (!p.has(key)) return fallback;
+  const double v = p.get<double>(key);
+  if (!std::isfinite(v)) fail(p.child(key), "must be finite");
+  return v;
+}
+
+std::vector<double> values_of(const Params& point, const char* key, std::size_t expected) {
+  const Params v = point.child(key);
+  const auto values = v.as<std::vector<double>>();
+  if (expected != 0 && values.size() != expected) {
+    fail(v, "has " + std::to_string(values.size()) + " values, expected " + std::to_string(expected) + " (one per joint)");
+  }
+  for (double x : values) {
+    if (!std::isfinite(x)) fail(v, "values must be finite");
+  }
+  return values;
+}
+
+std::vector<control::JointTolerance> read_tolerances(const Params& p) {
+  std::vector<control::JointTolerance> out;
+  if (!p.is_map()) fail(p, "expected a map of joint name (or 'all') -> {position, velocity, acceleration}");
+  for (const std::string& joint : p.keys()) {
+    const Params t = p.child(joint);
+    only_keys(t, {"position", "velocity", "acceleration"});
+    out.push_back({joint, finite(t, "position", 0.0), finite(t, "velocity", 0.0), finite(t, "acceleration", 0.0)});
+  }
+  return out;
+}
+
+control::FollowJointTrajectoryGoal read_trajectory(const Params& t) {
+  only_keys(t, {"joints", "points", "goal_time_tolerance", "goal_tolerance", "path_tolerance"});
+  control::FollowJointTrajectoryGoal goal;
+  if (t.has("joints")) {
+    goal.trajectory.joint_names = t.get<std::vector<std::string>>("joints");
+    if (goal.trajectory.joint_names.empty()) fail(t.child("joints"), "must name at least one joint (or be left out)");
+  }
+  // Without `joints`, the first point's positions fix the count; the run checks it against
+  // the controller.
+  std::size_t n = goal.trajectory.joint_names.size();
+  const Params points = t.child("points");
+  if (!points.is_list() || points.size() == 0) fail(points, "expected a non-empty list of points");
+  double last_time = -1.0;
+  for (const Params& pt : points.items()) {
+    only_keys(pt, {"time", "positions", "velocities", "accelerations"});
+    control::TrajectoryPoint point;
+    point.time_from_start = pt.get<double>("time");
+    if (!std::isfinite(point.time_from_start) || point.time_from_start < 0.0) fail(pt.child("time"), "must be >= 0 s");
+    if (point.time_from_start <= last_time) fail(pt.child("time"), "point times must increase");
+    last_time = point.time_from_start;
+    point.positions = values_of(pt, "positions", n);
+    if (n == 0) n = point.positions.size();
+    if (n == 0) fail(pt.child("positions"), "needs one value per joint");
+    if (pt.has("velocities")) point.velocities = values_of(pt, "velocities", n);
+    if (pt.has("accelerations")) {
+      if (!pt.has("velocities")) fail(pt.child("accelerations"), "accelerations need velocities too");
+      point.accelerations = values_of(pt, "accelerations", n);
+    }
+    goal.trajectory.points.push_back(std::move(point));
+  }
+  goal.goal_time_tolerance = finite(t, "goal_time_tolerance", 0.0);
+  if (t.has("goal_tolerance")) goal.goal_tolerance = read_tolerances(t.child("goal_tolerance"));
+  if (t.has("path_tolerance")) goal.path_tolerance = read_tolerances(t.child("path_tolerance"));
+  return goal;
+}
+
+control::GripperCommand read_gripper(const Params& g) {
+  only_keys(g, {"position", "max_effort"});
+  control::GripperCommand c;
+  c.position = g.get<double>("position");
+  if (!std::isfinite(c.position) || c.position < 0.0) fail(g.child("position"), "must be a gap >= 0 m");
+  c.max_effort = finite(g, "max_effort", -1.0);
+  return c;
+}
+
 TimelineEvent read_event(const Params& e) {
   TimelineEvent ev;
+  ev.location = e.location().empty() ? e.path() : e.location();
   ev.at = e.get<double>("at");
   if (!(ev.at >= 0.0)) fail(e.child("at"), "must be >= 0 s");
   ev.controller = e.get<std::string>("controller");
@@ -97,14 +189,26 @@ TimelineEvent read_event(const Params& e) {
     ev.route.max_yaw_rate = r.get<double>("max_yaw_rate", ev.route.max_yaw_rate);
     if (!(ev.route.speed > 0.0)) fail(r, "speed must be > 0 m/s");
   }
-  if (kinds != 1) fail(e, "an event has exactly one of command, twist, mode, route");
+  if (e.has("trajectory")) {
+    ++kinds;
+    ev.kind = TimelineEvent::Kind::Trajectory;
+    ev.trajectory = read_trajectory(e.child("trajectory"));
+  }
+  if (e.has("gripper")) {
+    ++kinds;
+    ev.kind = TimelineEvent::Kind::Gripper;
+    ev.gripper = read_gripper(e.child("gripper"));
+  }
+  if (kinds != 1) fail(e, "an event has exactly one of command, twist, mode, route, trajectory, gripper");
   return ev;
 }
 
 Check read_check(const Params& c) {
   Check check;
   const std::vector<std::string> keys = c.keys();
-  if (keys.size() != 1) fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance)");
+  if (keys.size() != 1) {
+    fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint)");
+  }
   const std::string& kind = keys.front();
   const Params p = c.child(kind);
   check.text = kind;
@@ -133,15 +237,117 @@ Check read_check(const Params& c) {
     check.max_tilt = p.get<double>("max_tilt_deg") * kDeg;
   } else if (kind == "odometry") {
     check.kind = Check::Kind::Odometry;
-    check.max_error_fraction = p.get<double>("max_error_fraction");
+    only_keys(p, {"max_error_fraction", "max_yaw_error_fraction"});
+    if (p.has("max_error_fraction")) check.max_error_fraction = p.get<double>("max_error_fraction");
+    if (p.has("max_yaw_error_fraction")) check.max_yaw_error_fraction = p.get<double>("max_yaw_error_fraction");
+    if (!check.max_error_fraction && !check.max_yaw_error_fraction) fail(p, "needs max_error_fraction and/or max_yaw_error_fraction");
   } else if (kind == "distance") {
     check.kind = Check::Kind::Distance;
     check.min_distance = p.get<double>("min", 0.0);
     check.max_distance = p.get<double>("max", 1e300);
+  } else if (kind == "trajectory" || kind == "gripper") {
+    const bool trajectory = kind == "trajectory";
+    check.kind = trajectory ? Check::Kind::Trajectory : Check::Kind::Gripper;
+    if (trajectory) {
+      only_keys(p, {"controller", "goal", "max_rms_error", "max_error", "result"});
+    } else {
+      only_keys(p, {"controller", "goal", "reached", "stalled", "by", "position", "within"});
+    }
+    check.controller = p.get<std::string>("controller");
+    if (p.has("goal")) {
+      const int goal = p.get<int>("goal");
+      if (goal < 1) fail(p.child("goal"), "is the 1-based index of the controller's goal in the timeline");
+      check.goal = static_cast<std::size_t>(goal);
+    }
+    auto positive = [&](const char* key) {
+      const double v = p.get<double>(key);
+      if (!(v >= 0.0) || !std::isfinite(v)) fail(p.child(key), "must be >= 0");
+      return v;
+    };
+    if (trajectory) {
+      if (p.has("max_rms_error")) check.max_rms_error = positive("max_rms_error");
+      if (p.has("max_error")) check.max_abs_error = positive("max_error");
+      if (p.has("result")) {
+        const std::string r = p.get<std::string>("result");
+        using Code = control::TrajectoryResultCode;
+        for (Code code : {Code::Successful, Code::InvalidGoal, Code::InvalidJoints, Code::OldHeaderTimestamp,
+                          Code::PathToleranceViolated, Code::GoalToleranceViolated}) {
+          if (r == control::result_code_name(code)) check.result = code;
+        }
+        if (!check.result) {
+          fail(p.child("result"), "unknown result code '" + r +
+                                      "' (SUCCESSFUL, INVALID_GOAL, INVALID_JOINTS, OLD_HEADER_TIMESTAMP, "
+                                      "PATH_TOLERANCE_VIOLATED, GOAL_TOLERANCE_VIOLATED)");
+        }
+      }
+      if (!check.max_rms_error && !check.max_abs_error && !check.result) fail(p, "needs max_rms_error, max_error and/or result");
+    } else {
+      if (p.has("reached")) check.reached = p.get<bool>("reached");
+      if (p.has("stalled")) check.stalled = p.get<bool>("stalled");
+      if (p.has("by")) check.finished_by = positive("by");
+      if (p.has("position")) {
+        check.position = p.get<double>("position");
+        check.within = positive("within");
+      } else if (p.has("within")) {
+        fail(p.child("within"), "goes with position");
+      }
+      if (!check.reached && !check.stalled && !check.finished_by && !check.position) {
+        fail(p, "needs reached, stalled, by and/or position");
+      }
+    }
+  } else if (kind == "joint") {
+    check.kind = Check::Kind::Joint;
+    only_keys(p, {"name", "at", "position", "within"});
+    check.joint = p.get<std::string>("name");
+    if (p.has("at")) {
+      check.at = p.get<double>("at");
+      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("at"), "must be >= 0 s");
+    }
+    check.position = finite(p, "position", 0.0);
+    if (!p.has("position")) fail(p, "needs position (and within)");
+    check.within = p.get<double>("within");
+    if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0");
   } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance)");
+    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint)");
   }
   return check;
+}
+
+std::vector<physics::WorldBox> read_boxes(const Params& list) {
+  if (!list.is_list()) fail(list, "expected a list of boxes");
+  std::vector<physics::WorldBox> boxes;
+  for (const Params& b : list.items()) {
+    only_keys(b, {"name", "size", "x", "y", "z", "roll", "pitch", "yaw", "quat", "fixed", "mass"});
+    physics::WorldBox box;
+    box.name = b.get<std::string>("name");
+    for (const physics::WorldBox& other : boxes) {
+      if (other.name == box.name) fail(b.child("name"), "box '" + box.name + "' is named twice");
+    }
+    const auto size = values_of(b, "size", 3);
+    for (double v : size) {
+      if (!(v > 0.0)) fail(b.child("size"), "edge lengths must be > 0 m");
+    }
+    box.size = {size[0], size[1], size[2]};
+    box.pose.position = {finite(b, "x", 0.0), finite(b, "y", 0.0), finite(b, "z", 0.0)};
+    if (b.has("quat")) {
+      if (b.has("roll") || b.has("pitch") || b.has("yaw")) fail(b.child("quat"), "give quat or roll/pitch/yaw, not both");
+      const auto q = values_of(b, "quat", 4);
+      const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+      if (!(n > 1e-9)) fail(b.child("quat"), "must not be zero");
+      box.pose.orientation = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+    } else {
+      // ZYX: q = qz(yaw) qy(pitch) qx(roll).
+      const double r = finite(b, "roll", 0.0) / 2, p = finite(b, "pitch", 0.0) / 2, y = finite(b, "yaw", 0.0) / 2;
+      const double cr = std::cos(r), sr = std::sin(r), cp = std::cos(p), sp = std::sin(p), cy = std::cos(y), sy = std::sin(y);
+      box.pose.orientation = {cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+                              cr * cp * sy - sr * sp * cy};
+    }
+    box.fixed = b.get<bool>("fixed", true);
+    box.mass = finite(b, "mass", box.mass);
+    if (!(box.mass > 0.0)) fail(b.child("mass"), "must be > 0 kg");
+    boxes.push_back(box);
+  }
+  return boxes;
 }
 
 }  // namespace
@@ -187,6 +393,7 @@ Scenario load_scenario(const std::string& path) {
       if (world->has("size_y")) s.world.heightmap.size_y = world->get<double>("size_y");
       if (world->has("z_min")) s.world.heightmap.z_min = world->get<double>("z_min");
       if (world->has("z_max")) s.world.heightmap.z_max = world->get<double>("z_max");
+      if (auto boxes = world->find("boxes")) s.boxes = read_boxes(*boxes);
     }
     if (auto spawn = root.find("spawn")) {
       s.spawn.x = spawn->get<double>("x", 0.0);
@@ -195,6 +402,10 @@ Scenario load_scenario(const std::string& path) {
       s.spawn.roll = spawn->get<double>("roll", 0.0);
       s.spawn.pitch = spawn->get<double>("pitch", 0.0);
       s.spawn.yaw = spawn->get<double>("yaw", 0.0);
+      if (auto joints = spawn->find("joints")) {
+        if (!joints->is_map()) fail(*joints, "expected a map of joint name -> position (rad or m)");
+        for (const std::string& j : joints->keys()) s.initial_joints[j] = finite(*joints, j, 0.0);
+      }
     }
     const Params controllers = root.child("controllers");
     s.controllers_file = resolve_path(base, controllers.get<std::string>("file"));

@@ -8,8 +8,16 @@
 //     args: {wheel_mu: 0.8}                            # xacro name:=value
 //     packages: {mechsim_cc8: ../robots/cc8}           # optional; --package NAME=DIR
 //     lenient: false
-//   world: {name: empty}              # empty | mars_yard_2024 (seed) | heightmap file (size_x ...)
-//   spawn: {x: 0, y: 0, z: 0.02, yaw: 0}   # m, rad (roll, pitch, yaw)
+//   world:
+//     name: empty                     # empty | mars_yard_2024 (seed) | heightmap file (size_x ...)
+//     boxes:                          # optional objects (physics::WorldBox), any world
+//       - {name: block, size: [0.03, 0.04, 0.03], x: 0.8, y: -0.2, z: 0.7,   # m (full edges; centre)
+//          roll: 0, pitch: 0, yaw: 0, fixed: true, mass: 1.0}                 # rad; kg (free boxes)
+//          # or an orientation quaternion instead of roll/pitch/yaw: quat: [w, x, y, z]
+//   spawn:
+//     x: 0, y: 0, z: 0.02, yaw: 0     # m, rad (roll, pitch, yaw) of the root link
+//     joints: {r_gripper_l_finger_joint: 0.3}   # optional initial joint positions (rad, m), as
+//                                               # Gazebo's spawn_model -J; physics joints only
 //   controllers:
 //     file: ../robots/cc8/config/controllers.yaml
 //     namespace: cc8
@@ -23,13 +31,47 @@
 //     - {at: 0.0, controller: rover_drive_controller, twist: {vx: 0.5, vy: 0, wz: 0}}
 //     - {at: 2.0, controller: steering_FL_position_controller, command: 0.5}
 //     - {at: 0.0, controller: rover_drive_controller, route: {waypoints: [[5, 0], [10, 3]], speed: 0.5}}
+//     # A FollowJointTrajectory goal to a trajectory controller (joint_trajectory_controller/
+//     # JointTrajectoryController, robot_mechanism_controllers/JointTrajectoryActionController).
+//     # joints: default the controller's joints in order. Per point: time (s from the goal's
+//     # start, increasing), positions (rad, m; one per joint), optional velocities and
+//     # accelerations (cubic / quintic segments). Tolerances as control_msgs/JointTolerance
+//     # (> 0 a bound, 0 the controller's default, < 0 none), by joint name or `all`.
+//     - at: 0.5
+//       controller: r_arm_controller
+//       trajectory:
+//         joints: [r_shoulder_pan_joint, ...]
+//         points:
+//           - {time: 1.0, positions: [...], velocities: [...]}
+//         goal_time_tolerance: 0.6                       # s; 0: the controller's default
+//         goal_tolerance: {all: {position: 0.02, velocity: 0.5}}
+//         path_tolerance: {r_elbow_flex_joint: {position: 0.1}}
+//     # A control_msgs/GripperCommand goal to pr2_mechanism_controllers/Pr2GripperController:
+//     # gap (m) between the finger tips, max_effort (N; < 0 or absent: no limit).
+//     - {at: 0.0, controller: r_gripper_controller, gripper: {position: 0.08, max_effort: 50}}
 //   checks:
 //     - {reach: {x: 10, y: 0, within: 0.5, by: 40}}
 //     - {final_pose: {x: 5, y: 0, within: 0.1, lateral_within: 0.05}}
 //     - {final_heading: {yaw_deg: 90, within_deg: 5}}
 //     - {direction: {deg: 45, within_deg: 5}}   # of the straight line from spawn to the end
 //     - {upright: {max_tilt_deg: 30}}
-//     - {odometry: {max_error_fraction: 0.03}}
+//     - {odometry: {max_error_fraction: 0.03}}   # |odom - truth| / distance driven
+//     - {odometry: {max_yaw_error_fraction: 0.03}}   # |odom yaw - true yaw| / |true yaw change|
+//     # Trajectory goals: `goal` is the 1-based index among that controller's trajectory events
+//     # (default: the last). RMS and max of desired - actual per joint, sampled from the
+//     # controller's state (50 Hz by default) while the goal is ACTIVE; result is the
+//     # FollowJointTrajectory result code (SUCCESSFUL, INVALID_GOAL, INVALID_JOINTS,
+//     # OLD_HEADER_TIMESTAMP, PATH_TOLERANCE_VIOLATED, GOAL_TOLERANCE_VIOLATED).
+//     - {trajectory: {controller: r_arm_controller, goal: 2, max_rms_error: 0.01, max_error: 0.05, result: SUCCESSFUL}}
+//     # Gripper goals (same `goal` rule): reached / stalled as the action's result says, finished
+//     # within `by` s of being sent, and the gap (m) where it finished within `within` m.
+//     - {gripper: {controller: r_gripper_controller, goal: 1, reached: true, by: 1.0}}
+//     - {gripper: {controller: r_gripper_controller, stalled: true, position: 0.04, within: 0.006}}
+//     # A mechanism joint's position (rad, m) at time `at` (s; default: the end of the run).
+//     - {joint: {name: r_gripper_joint, at: 1.2, position: 0.08, within: 0.002}}
+//
+// Unknown keys inside timeline events and checks are errors (a misspelt bound must not pass
+// silently). Every error names the file, the line and the parameter path.
 
 #include <array>
 #include <cstdint>
@@ -40,6 +82,8 @@
 #include <vector>
 
 #include "control/ports.hpp"
+#include "control/pr2_gripper_ports.hpp"
+#include "control/trajectory_msgs.hpp"
 #include "physics/physics_options.hpp"
 #include "sim/world.hpp"
 
@@ -60,23 +104,40 @@ struct RouteCommand {
 struct TimelineEvent {
   double at = 0.0;  // s
   std::string controller;
-  enum class Kind { Scalar, Array, Twist, Route, Mode } kind = Kind::Scalar;
+  enum class Kind { Scalar, Array, Twist, Route, Mode, Trajectory, Gripper } kind = Kind::Scalar;
   double scalar = 0.0;
   std::vector<double> array;
   control::Twist twist;
   RouteCommand route;
   std::string mode;  // ackermann | crab | point_turn | auto
+  // Trajectory: joint names empty = the controller's joints (filled when the run binds it).
+  // Tolerances named `all` apply to every joint of the controller.
+  control::FollowJointTrajectoryGoal trajectory;
+  control::GripperCommand gripper;  // Gripper
+  std::string location;  // file:line of the event, for errors found when the run binds it
 };
 
 struct Check {
-  enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance } kind = Kind::Reach;
+  enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance, Trajectory, Gripper, Joint } kind = Kind::Reach;
   std::string text;  // as written, for the report
   double x = 0.0, y = 0.0, within = 0.0, by = 0.0;  // Reach / FinalPose (m, s)
   std::optional<double> lateral_within;            // FinalPose: |y error| (m)
   double yaw = 0.0, within_angle = 0.0;            // FinalHeading, Direction (rad)
   double max_tilt = 0.0;                           // Upright (rad)
-  double max_error_fraction = 0.0;                 // Odometry
+  std::optional<double> max_error_fraction;        // Odometry: position error / distance
+  std::optional<double> max_yaw_error_fraction;    // Odometry: yaw error / |yaw change|
   double min_distance = 0.0, max_distance = 0.0;   // Distance (m)
+  // Trajectory and Gripper: which goal (1-based among the controller's events of that kind;
+  // 0 = the last).
+  std::string controller;
+  std::size_t goal = 0;
+  std::optional<double> max_rms_error, max_abs_error;   // Trajectory, per joint (rad, m)
+  std::optional<control::TrajectoryResultCode> result;  // Trajectory
+  std::optional<bool> reached, stalled;                 // Gripper
+  std::optional<double> finished_by;                    // Gripper: s after the goal was sent
+  std::optional<double> position;                       // Gripper: final gap (m), +- `within`; Joint
+  std::string joint;                                    // Joint: mechanism joint name
+  std::optional<double> at;                             // Joint: s (absent: the end)
 };
 
 struct Scenario {
@@ -88,6 +149,8 @@ struct Scenario {
   bool lenient = false;
   WorldConfig world;
   physics::SpawnPose spawn;
+  std::map<std::string, double> initial_joints;  // spawn.joints: physics joint -> rad or m
+  std::vector<physics::WorldBox> boxes;          // world.boxes, added to the world's own
   physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;
   std::string controllers_file;  // absolute
   std::string controllers_namespace;

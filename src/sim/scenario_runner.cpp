@@ -14,6 +14,7 @@
 #include "sim/report.hpp"
 #include "sim/pose_math.hpp"
 #include "sim/route_follower.hpp"
+#include "sim/scenario_goals.hpp"
 #include "sim/simulation.hpp"
 
 namespace mechsim::sim {
@@ -45,7 +46,7 @@ struct HeldTwist {
 };
 
 void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::TwistCommandPort*& route_port,
-           std::vector<HeldTwist>& held) {
+           std::vector<HeldTwist>& held, ScenarioGoals& goals, double t) {
   const TimelineEvent& e = *b.event;
   std::string error;
   bool ok = true;
@@ -81,6 +82,10 @@ void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::Tw
       route_port = find_port<control::TwistCommandPort>(b.controller, control::PortKind::TwistCommand);
       break;
     }
+    case TimelineEvent::Kind::Trajectory:
+    case TimelineEvent::Kind::Gripper:
+      goals.submit(e, t);  // a rejection is the goal's outcome, judged by the checks
+      break;
   }
   if (!ok) throw ScenarioError("t=" + std::to_string(e.at) + " s: controller '" + e.controller + "' rejected the command: " + error);
 }
@@ -92,6 +97,8 @@ control::PortKind port_kind_for(TimelineEvent::Kind kind) {
     case TimelineEvent::Kind::Twist:
     case TimelineEvent::Kind::Route: return control::PortKind::TwistCommand;
     case TimelineEvent::Kind::Mode: return control::PortKind::DriveModeCommand;
+    case TimelineEvent::Kind::Trajectory: return control::PortKind::TrajectoryGoal;
+    case TimelineEvent::Kind::Gripper: return control::PortKind::GripperGoal;
   }
   return control::PortKind::ScalarCommand;
 }
@@ -111,6 +118,12 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   try {
     WorldConfig config = s.world;
     world = make_world(config);
+    for (const physics::WorldBox& b : s.boxes) {
+      for (const physics::WorldBox& other : world.spec.boxes) {
+        if (other.name == b.name) throw ScenarioError("box '" + b.name + "' is already in world '" + world.name + "'");
+      }
+      world.spec.boxes.push_back(b);
+    }
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": world: " + e.what());
   }
@@ -129,6 +142,13 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   try {
     auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options);
     sim->load_and_start(s.start);
+    // Initial joint positions (Gazebo's spawn_model -J): set before the first tick, so the
+    // controllers starting in it hold them.
+    for (const auto& [joint, position] : s.initial_joints) {
+      const auto j = sim->physics().model().joint_index(joint);
+      if (!j) throw ScenarioError("spawn/joints/" + joint + ": the robot's physics has no joint '" + joint + "'");
+      sim->physics().set_joint_state(*j, position);
+    }
     return sim;
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": " + e.what());
@@ -141,6 +161,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   std::unique_ptr<Simulation> sim = build_simulation(s);
   ScenarioResult result;
 
+  ScenarioGoals goals(s, sim->controllers());  // binds (and checks) the trajectory and gripper events
   std::vector<BoundEvent> events;
   for (const TimelineEvent& e : s.timeline) {
     control::Controller* c = sim->controllers().controller(e.controller);
@@ -154,7 +175,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     events.push_back({&e, c});
   }
 
-  Recorder recorder(*sim, options.output_dir);
+  Recorder recorder(*sim, options.output_dir, goals.trajectory_controllers());
   const control::StatePort<control::OdometrySnapshot>* odometry = nullptr;
   for (const control::ControllerInfo& info : sim->controllers().list_controllers()) {
     if (auto* p = find_port<control::StatePort<control::OdometrySnapshot>>(sim->controllers().controller(info.name),
@@ -174,7 +195,23 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   const std::uint64_t progress_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(0.5 / s.period)));
 
   std::vector<double> reach_best(s.checks.size(), 1e300);
+  // Joint checks: the mechanism joint, and its position once sampled.
+  std::vector<int> check_joint(s.checks.size(), -1);
+  std::vector<std::optional<double>> joint_sample(s.checks.size());
+  for (std::size_t k = 0; k < s.checks.size(); ++k) {
+    const Check& c = s.checks[k];
+    if (c.kind != Check::Kind::Joint) continue;
+    check_joint[k] = sim->mechanism().joint_index(c.joint);
+    if (check_joint[k] < 0) throw ScenarioError(s.file + ": checks: joint check: the robot's mechanism has no joint '" + c.joint + "'");
+    if (c.at && *c.at > s.duration + 1e-9) {
+      throw ScenarioError(s.file + ": checks: joint check on '" + c.joint + "' at t=" + std::to_string(*c.at) + " s, after the run's end");
+    }
+  }
+  auto joint_position = [&](std::size_t k) {
+    return sim->mechanism_state().joints[static_cast<std::size_t>(check_joint[k])].position;
+  };
   double last_x = sim->physics().base_pose().position.x, last_y = sim->physics().base_pose().position.y;
+  double last_yaw = yaw_of(sim->physics().base_pose().orientation);
   const auto wall_start = std::chrono::steady_clock::now();
   auto rtf_now = [&] {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -184,7 +221,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
     const double t = sim->time();
     while (next_event < events.size() && events[next_event].event->at <= t + 1e-9) {
-      apply(events[next_event], route, route_port, held);
+      apply(events[next_event], route, route_port, held, goals, t);
       ++next_event;
     }
     const description::Pose X_WB = sim->physics().base_pose();
@@ -207,12 +244,17 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     result.distance += std::hypot(after.position.x - last_x, after.position.y - last_y);
     last_x = after.position.x;
     last_y = after.position.y;
+    const double yaw_after = yaw_of(after.orientation);
+    result.yaw_change += wrap_angle(yaw_after - last_yaw);
+    last_yaw = yaw_after;
+    goals.poll(sim->time());
     result.max_tilt = std::max(result.max_tilt, tilt_of(after.orientation));
     for (std::size_t k = 0; k < s.checks.size(); ++k) {
       const Check& c = s.checks[k];
       if (c.kind == Check::Kind::Reach && sim->time() <= c.by + 1e-9) {
         reach_best[k] = std::min(reach_best[k], std::hypot(after.position.x - c.x, after.position.y - c.y));
       }
+      if (c.kind == Check::Kind::Joint && c.at && !joint_sample[k] && sim->time() >= *c.at - 1e-9) joint_sample[k] = joint_position(k);
     }
     if (options.progress && (tick + 1) % progress_every == 0) options.progress({sim->time(), s.duration, rtf_now()});
   }
@@ -232,14 +274,17 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     const double c = std::cos(s.spawn.yaw), sn = std::sin(s.spawn.yaw);
     const double ox = s.spawn.x + c * odom.x - sn * odom.y, oy = s.spawn.y + sn * odom.x + c * odom.y;
     result.odometry_error = std::hypot(ox - result.final_x, oy - result.final_y);
+    result.odometry_yaw_error = std::abs(wrap_angle(odom.yaw - result.yaw_change));
   }
+  result.trajectory_goals = goals.trajectory_goals();
+  result.gripper_goals = goals.gripper_goals();
   result.tracking = recorder.tracking();
   if (options.progress) options.progress({sim->time(), s.duration, result.real_time_factor});
 
   for (std::size_t k = 0; k < s.checks.size(); ++k) {
     const Check& c = s.checks[k];
     CheckOutcome out;
-    char buf[256];
+    char buf[512];
     switch (c.kind) {
       case Check::Kind::Reach:
         out.passed = reach_best[k] <= c.within;
@@ -274,12 +319,41 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         std::snprintf(buf, sizeof buf, "max tilt %.2f deg (limit %.2f deg)", result.max_tilt * 180 / M_PI, c.max_tilt * 180 / M_PI);
         break;
       case Check::Kind::Odometry: {
-        const double fraction = result.distance > 1e-6 ? result.odometry_error / result.distance : 0.0;
-        out.passed = odometry != nullptr && fraction <= c.max_error_fraction;
-        std::snprintf(buf, sizeof buf, "odometry error %.3f m over %.3f m = %.2f %% (limit %.2f %%)%s", result.odometry_error,
-                      result.distance, 100 * fraction, 100 * c.max_error_fraction, odometry ? "" : " [no odometry]");
+        out.passed = odometry != nullptr;
+        std::string text;
+        if (c.max_error_fraction) {
+          const double fraction = result.distance > 1e-6 ? result.odometry_error / result.distance : 0.0;
+          out.passed = out.passed && fraction <= *c.max_error_fraction;
+          std::snprintf(buf, sizeof buf, "odometry error %.3f m over %.3f m = %.2f %% (limit %.2f %%)", result.odometry_error,
+                        result.distance, 100 * fraction, 100 * *c.max_error_fraction);
+          text += buf;
+        }
+        if (c.max_yaw_error_fraction) {
+          const double turned = std::abs(result.yaw_change);
+          const double fraction = turned > 1e-6 ? result.odometry_yaw_error / turned : 0.0;
+          out.passed = out.passed && turned > 1e-6 && fraction <= *c.max_yaw_error_fraction;
+          std::snprintf(buf, sizeof buf, "%sodometry yaw error %.3f deg over %.2f deg turned = %.2f %% (limit %.2f %%)",
+                        text.empty() ? "" : "; ", result.odometry_yaw_error * 180 / M_PI, result.yaw_change * 180 / M_PI,
+                        100 * fraction, 100 * *c.max_yaw_error_fraction);
+          text += buf;
+        }
+        if (odometry == nullptr) text += " [no odometry]";
+        std::snprintf(buf, sizeof buf, "%s", text.c_str());
         break;
       }
+      case Check::Kind::Joint: {
+        // The mechanism state is read from the physics at the start of a tick: one period old at most.
+        const double q = joint_sample[k] ? *joint_sample[k] : joint_position(k);
+        out.passed = result.completed && std::abs(q - *c.position) <= c.within;
+        std::snprintf(buf, sizeof buf, "joint %s at t=%.3f s: %.5f, wanted %.5f +- %.5f (off by %.5f)", c.joint.c_str(),
+                      c.at ? *c.at : result.sim_time, q, *c.position, c.within, std::abs(q - *c.position));
+        break;
+      }
+      case Check::Kind::Trajectory:
+      case Check::Kind::Gripper:
+        out = goals.judge(c);
+        result.checks.push_back(out);
+        continue;
       case Check::Kind::Distance:
         out.passed = result.distance >= c.min_distance && result.distance <= c.max_distance;
         std::snprintf(buf, sizeof buf, "distance %.3f m in [%.3f, %.3g] m", result.distance, c.min_distance, c.max_distance);
@@ -293,7 +367,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
                                                   [](const CheckOutcome& c) { return c.passed; });
   if (!options.output_dir.empty()) {
     recorder.close();
-    write_report(s, *sim, result, options);
+    write_report(s, *sim, recorder, result, options);
   }
   return result;
 }

@@ -6,13 +6,19 @@
 //   joints.csv       time, then per mechanism joint: position, velocity, measured effort, commanded effort
 //   controllers.csv  time, then per controller with a joint state port: set point, process value, error, command
 //   base.csv         time, ground-truth base pose (x, y, z, roll, pitch, yaw) and odometry (x, y, yaw) if any
-//   summary.json     distance, final pose, tracking error per controller, real-time factor, checks
-//   path.png, tracking.png, errors.png   (gnuplot)
+//   trajectory.csv   time, then per joint of each controller given a trajectory goal in the
+//                    timeline: desired and actual position (rad, m) from its state
+//   summary.json     distance, final pose, tracking error per controller, trajectory goals (RMS
+//                    and max error per joint while active, result code), gripper goals (status,
+//                    time to finish, reached/stalled, gap, effort), real-time factor, checks
+//   path.png, tracking.png, errors.png, trajectory.png (desired vs actual per joint) (gnuplot)
 
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "control/pr2_gripper_ports.hpp"
+#include "control/trajectory_msgs.hpp"
 #include "sim/scenario.hpp"
 
 namespace mechsim::sim {
@@ -42,6 +48,36 @@ struct TrackingError {
   std::size_t samples = 0;
 };
 
+// What became of one trajectory goal of the timeline.
+struct TrajectoryGoalOutcome {
+  std::string controller;
+  std::size_t index = 0;   // 1-based among the controller's trajectory events
+  double sent_at = 0.0;    // s
+  bool accepted = false;   // false: rejected when submitted (result says why)
+  std::string status;      // at the end: not_sent, or control::goal_status_name (pending, active, succeeded, ...)
+  bool finished = false;
+  double finished_at = 0.0;  // s, when it finished (finished only)
+  control::TrajectoryResult result;  // finished only
+  // Desired - actual per joint of the controller, sampled from its state while ACTIVE.
+  std::vector<std::string> joints;
+  std::vector<double> rms, max;  // rad or m
+  std::size_t samples = 0;
+};
+
+// What became of one gripper goal of the timeline.
+struct GripperGoalOutcome {
+  std::string controller;
+  std::size_t index = 0;  // 1-based among the controller's gripper events
+  double sent_at = 0.0;   // s
+  control::GripperCommand command;
+  bool accepted = false;
+  std::string error;      // why it was rejected
+  std::string status;     // as TrajectoryGoalOutcome::status
+  bool finished = false;
+  double finished_after = 0.0;  // s after it was sent (finished only)
+  control::GripperResult result;  // finished only: gap (m), effort (N), stalled, reached_goal
+};
+
 struct ScenarioResult {
   bool completed = false;  // ran its whole duration (no divergence)
   bool passed = false;     // completed and every check passed
@@ -54,7 +90,11 @@ struct ScenarioResult {
   double max_tilt = 0.0;   // rad
   bool has_odometry = false;
   double odometry_error = 0.0;  // m, final |odom - truth| in the plane
+  double yaw_change = 0.0;      // rad, net true rotation of the base over the run (unwrapped)
+  double odometry_yaw_error = 0.0;  // rad, |odom yaw - true rotation| at the end
   std::vector<TrackingError> tracking;
+  std::vector<TrajectoryGoalOutcome> trajectory_goals;  // in timeline order
+  std::vector<GripperGoalOutcome> gripper_goals;
   std::vector<CheckOutcome> checks;
   std::vector<std::string> files;  // written, relative to output_dir
   std::vector<std::string> warnings;
