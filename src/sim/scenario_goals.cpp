@@ -17,8 +17,9 @@ P* port_of(control::Controller* c, control::PortKind kind) {
 }
 
 [[noreturn]] void event_error(const TimelineEvent& e, const std::string& what) {
-  throw ScenarioError(e.location + ": timeline event at t=" + std::to_string(e.at) + " s, controller '" + e.controller +
-                      "': " + what);
+  char at[32];
+  std::snprintf(at, sizeof at, "%g", e.at);
+  throw ScenarioError(e.location + ": timeline event at t=" + at + " s, controller '" + e.controller + "': " + what);
 }
 
 // `all` entries first, expanded to every joint, so that entries naming a joint refine them

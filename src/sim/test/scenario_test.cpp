@@ -78,6 +78,79 @@ TEST_F(ScenarioFile, ReadsTheIntegrator) {
   EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: implicit\n")).integrator, physics::Integrator::Implicit);
 }
 
+TEST_F(ScenarioFile, ReadsTrajectoryAndGripperEventsBoxesInitialJointsAndTheirChecks) {
+  const Scenario s = load_scenario(write(R"(duration: 5
+world:
+  name: empty
+  boxes:
+    - {name: a, size: [0.1, 0.2, 0.3], x: 1, y: 2, z: 0.5, yaw: 1.5707963267948966, fixed: false, mass: 2}
+    - {name: b, size: [1, 1, 1], quat: [2, 0, 0, 0]}
+spawn: {z: 0.01, joints: {j1: 0.25, j2: -0.5}}
+timeline:
+  - at: 0.5
+    controller: arm
+    trajectory:
+      joints: [j1, j2]
+      points:
+        - {time: 1.0, positions: [0.1, 0.2], velocities: [0, 0]}
+        - {time: 2.0, positions: [0.3, 0.4], velocities: [0, 0], accelerations: [0, 0]}
+      goal_time_tolerance: 0.6
+      goal_tolerance: {all: {position: 0.02, velocity: 0.5}}
+      path_tolerance: {j2: {position: 0.1}}
+  - {at: 0.0, controller: grip, gripper: {position: 0.08, max_effort: 50}}
+  - {at: 0.1, controller: grip, gripper: {position: 0.0}}
+checks:
+  - {trajectory: {controller: arm, goal: 1, max_rms_error: 0.01, max_error: 0.05, result: GOAL_TOLERANCE_VIOLATED}}
+  - {gripper: {controller: grip, reached: true, by: 1.0}}
+  - {gripper: {controller: grip, goal: 2, stalled: true, position: 0.04, within: 0.006}}
+  - {joint: {name: j1, at: 2.5, position: 0.3, within: 0.01}}
+  - {odometry: {max_yaw_error_fraction: 0.03}}
+)"));
+  ASSERT_EQ(s.boxes.size(), 2u);
+  EXPECT_EQ(s.boxes[0].name, "a");
+  EXPECT_DOUBLE_EQ(s.boxes[0].size.y, 0.2);
+  EXPECT_DOUBLE_EQ(s.boxes[0].pose.position.z, 0.5);
+  EXPECT_NEAR(s.boxes[0].pose.orientation.w, std::sqrt(0.5), 1e-12);  // 90 deg about z
+  EXPECT_NEAR(s.boxes[0].pose.orientation.z, std::sqrt(0.5), 1e-12);
+  EXPECT_FALSE(s.boxes[0].fixed);
+  EXPECT_DOUBLE_EQ(s.boxes[0].mass, 2.0);
+  EXPECT_TRUE(s.boxes[1].fixed);
+  EXPECT_DOUBLE_EQ(s.boxes[1].pose.orientation.w, 1.0);  // normalised
+  EXPECT_DOUBLE_EQ(s.initial_joints.at("j2"), -0.5);
+  ASSERT_EQ(s.timeline.size(), 3u);
+  EXPECT_EQ(s.timeline[0].kind, TimelineEvent::Kind::Gripper);  // sorted by time
+  EXPECT_DOUBLE_EQ(s.timeline[0].gripper.max_effort, 50.0);
+  EXPECT_DOUBLE_EQ(s.timeline[1].gripper.max_effort, -1.0);  // no limit when absent
+  const TimelineEvent& t = s.timeline[2];
+  EXPECT_EQ(t.kind, TimelineEvent::Kind::Trajectory);
+  EXPECT_NE(t.location.find("s.yaml:"), std::string::npos) << t.location;
+  ASSERT_EQ(t.trajectory.trajectory.points.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.trajectory.trajectory.points[1].time_from_start, 2.0);
+  EXPECT_DOUBLE_EQ(t.trajectory.trajectory.points[1].positions[1], 0.4);
+  EXPECT_EQ(t.trajectory.trajectory.points[0].accelerations.size(), 0u);
+  EXPECT_EQ(t.trajectory.trajectory.points[1].accelerations.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.trajectory.goal_time_tolerance, 0.6);
+  ASSERT_EQ(t.trajectory.goal_tolerance.size(), 1u);
+  EXPECT_EQ(t.trajectory.goal_tolerance[0].name, "all");
+  EXPECT_DOUBLE_EQ(t.trajectory.goal_tolerance[0].velocity, 0.5);
+  ASSERT_EQ(t.trajectory.path_tolerance.size(), 1u);
+  EXPECT_EQ(t.trajectory.path_tolerance[0].name, "j2");
+  ASSERT_EQ(s.checks.size(), 5u);
+  EXPECT_EQ(s.checks[0].kind, Check::Kind::Trajectory);
+  EXPECT_EQ(s.checks[0].goal, 1u);
+  EXPECT_EQ(s.checks[0].result, control::TrajectoryResultCode::GoalToleranceViolated);
+  EXPECT_DOUBLE_EQ(*s.checks[0].max_abs_error, 0.05);
+  EXPECT_EQ(s.checks[1].kind, Check::Kind::Gripper);
+  EXPECT_EQ(s.checks[1].goal, 0u);  // the last
+  EXPECT_TRUE(*s.checks[1].reached);
+  EXPECT_FALSE(s.checks[1].stalled.has_value());
+  EXPECT_DOUBLE_EQ(*s.checks[2].position, 0.04);
+  EXPECT_EQ(s.checks[3].kind, Check::Kind::Joint);
+  EXPECT_DOUBLE_EQ(*s.checks[3].at, 2.5);
+  EXPECT_FALSE(s.checks[4].max_error_fraction.has_value());
+  EXPECT_DOUBLE_EQ(*s.checks[4].max_yaw_error_fraction, 0.03);
+}
+
 struct BadCase {
   const char* name;
   const char* body;
@@ -108,7 +181,50 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCase{"bad_waypoint", "duration: 1\ntimeline:\n  - {at: 0, controller: c, route: {waypoints: [[1, 2, 3]]}}\n",
                             "[x, y]"},
                     BadCase{"negative_time", "duration: 1\ntimeline:\n  - {at: -1, controller: c, command: 1}\n", "/timeline"},
-                    BadCase{"malformed", "duration: [1\n", "s.yaml"}),
+                    BadCase{"malformed", "duration: [1\n", "s.yaml"},
+                    BadCase{"trajectory_typo", "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {points: [{time: 1, positions: [0]}], goal_time: 1}}\n",
+                            "s.yaml:5: /timeline[0]/trajectory/goal_time: unknown key 'goal_time' (expected one of: joints, points, goal_time_tolerance"},
+                    BadCase{"no_points", "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {points: []}}\n",
+                            "trajectory/points: expected a non-empty list of points"},
+                    BadCase{"times_not_increasing",
+                            "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {points: [{time: 1, positions: [0]}, {time: 1, positions: [1]}]}}\n",
+                            "points[1]/time: point times must increase"},
+                    BadCase{"point_sizes", "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {joints: [a, b], points: [{time: 1, positions: [0]}]}}\n",
+                            "points[0]/positions: has 1 values, expected 2 (one per joint)"},
+                    BadCase{"velocity_sizes",
+                            "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {points: [{time: 1, positions: [0, 1], velocities: [0]}]}}\n",
+                            "velocities: has 1 values, expected 2"},
+                    BadCase{"accelerations_alone",
+                            "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {points: [{time: 1, positions: [0], accelerations: [0]}]}}\n",
+                            "accelerations need velocities too"},
+                    BadCase{"tolerance_typo",
+                            "duration: 1\ntimeline:\n  - {at: 0, controller: c, trajectory: {points: [{time: 1, positions: [0]}], goal_tolerance: {all: {pos: 1}}}}\n",
+                            "goal_tolerance/all/pos: unknown key 'pos'"},
+                    BadCase{"gripper_negative", "duration: 1\ntimeline:\n  - {at: 0, controller: c, gripper: {position: -0.01}}\n",
+                            "gripper/position: must be a gap >= 0 m"},
+                    BadCase{"gripper_typo", "duration: 1\ntimeline:\n  - {at: 0, controller: c, gripper: {position: 0.01, effort: 3}}\n",
+                            "gripper/effort: unknown key 'effort'"},
+                    BadCase{"trajectory_and_command", "duration: 1\ntimeline:\n  - {at: 0, controller: c, command: 1, gripper: {position: 0.01}}\n",
+                            "exactly one of command, twist, mode, route, trajectory, gripper"},
+                    BadCase{"bad_result", "duration: 1\nchecks:\n  - {trajectory: {controller: c, result: DONE}}\n",
+                            "/checks[0]/trajectory/result: unknown result code 'DONE'"},
+                    BadCase{"empty_trajectory_check", "duration: 1\nchecks:\n  - {trajectory: {controller: c}}\n",
+                            "needs max_rms_error, max_error and/or result"},
+                    BadCase{"check_typo", "duration: 1\nchecks:\n  - {trajectory: {controller: c, max_rms: 0.1}}\n",
+                            "unknown key 'max_rms'"},
+                    BadCase{"goal_zero", "duration: 1\nchecks:\n  - {gripper: {controller: c, goal: 0, reached: true}}\n",
+                            "goal: is the 1-based index"},
+                    BadCase{"within_alone", "duration: 1\nchecks:\n  - {gripper: {controller: c, reached: true, within: 0.1}}\n",
+                            "within: goes with position"},
+                    BadCase{"joint_check_no_within", "duration: 1\nchecks:\n  - {joint: {name: j, position: 1}}\n", "within"},
+                    BadCase{"odometry_empty", "duration: 1\nchecks:\n  - {odometry: {}}\n", "needs max_error_fraction and/or max_yaw_error_fraction"},
+                    BadCase{"box_size", "duration: 1\nworld: {boxes: [{name: a, size: [1, 0, 1]}]}\n", "/world/boxes[0]/size: edge lengths must be > 0 m"},
+                    BadCase{"box_twice", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1]}, {name: a, size: [1, 1, 1]}]}\n",
+                            "box 'a' is named twice"},
+                    BadCase{"box_quat_and_yaw", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], yaw: 1, quat: [1, 0, 0, 0]}]}\n",
+                            "give quat or roll/pitch/yaw, not both"},
+                    BadCase{"box_typo", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], heigth: 2}]}\n", "unknown key 'heigth'"},
+                    BadCase{"spawn_joints_list", "duration: 1\nspawn: {joints: [1, 2]}\n", "/spawn/joints: expected a map"}),
     [](const testing::TestParamInfo<BadCase>& param) { return std::string(param.param.name); });
 
 TEST(ScenarioFileMissing, NamesTheFile) {
