@@ -23,6 +23,8 @@
 //                     base_footprint on /tf unless publish_tf is false (the PR2's parameters)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
 // relative names resolve in the controller's namespace. Remapping the full name works too.
+#include <cmath>
+
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
@@ -78,6 +80,13 @@ std::string topic_param(const control::Params& params, const std::string& contro
     ROS_WARN_STREAM("mechsim: " << e.what());
   }
   return port;
+}
+
+// The first whole multiple of `period` after `time` (s): a rate whose period is not a whole
+// number of ticks (Pr2Odometry's 30 Hz) keeps its average instead of rounding every period up.
+double next_due_after(double time, double period) {
+  if (period <= 0.0) return time;
+  return (std::floor(time / period + 1e-6) + 1.0) * period;
 }
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
@@ -303,7 +312,7 @@ void SimNode::publish_controller_states(double time) {
       case PortType::JointControllerState: {
         if (time + 1e-9 < b.next_due) break;
         if (!read_joint_controller_state(b.port, b.jcs, &b.sequence)) break;
-        b.next_due = time + b.period;
+        b.next_due = next_due_after(time, b.period);
         if (b.pr2) {
           pr2_controllers_msgs::JointControllerState msg;
           fill_state(msg, b.jcs);
@@ -330,7 +339,7 @@ void SimNode::publish_controller_states(double time) {
       case PortType::Odometry: {
         if (time + 1e-9 < b.next_due) break;
         if (!read_odometry(b.port, b.odom, &b.sequence)) break;
-        b.next_due = time + b.period;
+        b.next_due = next_due_after(time, b.period);
         nav_msgs::Odometry msg;
         msg.header.stamp = ::ros::Time(b.odom.stamp);
         msg.header.frame_id = b.odom.frame_id;
@@ -365,7 +374,7 @@ void SimNode::publish_controller_states(double time) {
       case PortType::TrajectoryState: {
         if (time + 1e-9 < b.next_due) break;
         if (!read_trajectory_state(b.port, b.trajectory_state, &b.sequence)) break;
-        b.next_due = time + b.period;
+        b.next_due = next_due_after(time, b.period);
         if (b.pr2) {
           b.publisher.publish(to_pr2(to_msg(b.trajectory_state)));
         } else {

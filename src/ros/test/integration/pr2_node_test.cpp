@@ -239,7 +239,7 @@ TEST_F(Pr2Node, BaseCommandTwistDrivesBaseOdometry) {
   // Pr2Odometry's default odom_publish_rate: 30 Hz of sim time.
   ASSERT_GE(stamps.size(), 10u);
   const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
-  EXPECT_NEAR(rate, 30.0, 1.5);
+  EXPECT_NEAR(rate, 30.0, 0.5);
   std::printf("base_odometry/odom: %.1f Hz (sim time), x = %.3f m\n", rate, last.pose.pose.position.x);
 }
 
