@@ -48,6 +48,11 @@ bool RoverDriveController::init(RobotHardware& hardware, const Params& params, s
   wheel_setpoints_.assign(nw, 0.0);
   measured_speeds_.assign(nw, 0.0);
   efforts_.assign(ns + nw, 0.0);
+  rolling_weights_.assign(nw, 1.0);
+  lateral_weights_.assign(nw, 1.0);
+  work_rolling_.assign(nw, 1.0);
+  work_lateral_.assign(nw, 1.0);
+  sensing_.assign(nw, 0);
 
   JointGroupControllerState prototype;
   prototype.joint_names = names;
@@ -83,6 +88,10 @@ void RoverDriveController::starting(double time) {
   last_command_time_ = time;
   timed_out_ = false;
   applied_ = {};
+  heading_hold_ = false;
+  heading_integral_ = 0.0;
+  yaw_correction_ = 0.0;
+  crab_sensing_ = false;
   for (auto& pid : pids_) pid->reset();
 }
 
@@ -118,7 +127,15 @@ UpdateStatus RoverDriveController::update(double time, double period) {
   for (std::size_t s = 0; s < ns; ++s) {
     measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * steering_[s].position());
   }
-  inverse_kinematics(k, choice_.twist, target_headings_, measured_headings_, target_headings_, rolling_speeds_);
+  const bool crab = choice_.mode == DriveMode::Crab;
+  const bool moving = std::hypot(choice_.twist.vx, choice_.twist.vy) > 1e-6;
+  select_sensing_wheels(crab && moving);
+  update_heading_hold(target, moving, period);
+  // The heading hold's yaw rate rides on the crab twist: the front and rear wheels steer a
+  // little apart and the wheel speeds follow, as for any twist of A.
+  PlanarTwist realised = choice_.twist;
+  realised.wz += yaw_correction_;
+  inverse_kinematics(k, realised, target_headings_, measured_headings_, target_headings_, rolling_speeds_);
 
   // 5-6. Steering rate limit; wheels wait for the steering.
   const double max_step = config_.max_steering_rate * period;
@@ -156,7 +173,13 @@ UpdateStatus RoverDriveController::update(double time, double period) {
     steering_[s].set_command(efforts_[s]);
   }
   for (std::size_t i = 0; i < nw; ++i) {
-    efforts_[ns + i] = pids_[ns + i]->compute_command(wheel_setpoints_[i] - wheels_[i].velocity(), period);
+    if (sensing_[i] != 0) {
+      // Unpowered: the wheel rolls with the ground and its speed measures it.
+      pids_[ns + i]->reset();
+      efforts_[ns + i] = 0.0;
+    } else {
+      efforts_[ns + i] = pids_[ns + i]->compute_command(wheel_setpoints_[i] - wheels_[i].velocity(), period);
+    }
     wheels_[i].set_command(efforts_[ns + i]);
   }
 
@@ -166,16 +189,71 @@ UpdateStatus RoverDriveController::update(double time, double period) {
   return UpdateStatus::Ok();
 }
 
+void RoverDriveController::select_sensing_wheels(bool crabbing) noexcept {
+  const RoverKinematics& k = config_.kinematics;
+  crab_sensing_ = false;
+  for (std::size_t i = 0; i < sensing_.size(); ++i) {
+    bool sensing = false;
+    if (crabbing) {
+      switch (config_.crab_sensing_mode) {
+        case RoverDriveConfig::CrabSensing::None: break;
+        case RoverDriveConfig::CrabSensing::Listed: sensing = config_.crab_sensing[i] != 0; break;
+        case RoverDriveConfig::CrabSensing::TrailingSide:
+          sensing = k.wheels[i].steering >= 0 && k.wheels[i].y * choice_.twist.vy < 0.0;
+          break;
+      }
+    }
+    sensing_[i] = sensing ? 1 : 0;
+    crab_sensing_ = crab_sensing_ || sensing;
+  }
+}
+
+void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool moving, double period) noexcept {
+  const bool enabled = config_.crab_heading_p > 0.0 || config_.crab_heading_i > 0.0;
+  // Off unless crabbing without a commanded rotation; a new crab command holds the heading it
+  // starts with.
+  const bool wz_commanded = std::abs(target.wz) > 1e-9;
+  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !odom_valid_) {
+    heading_hold_ = false;
+    heading_integral_ = 0.0;
+    yaw_correction_ = 0.0;
+    return;
+  }
+  if (!heading_hold_) {
+    heading_hold_ = true;
+    held_yaw_ = pose_.yaw;
+    heading_integral_ = 0.0;
+  }
+  const double error = shortest_angular_distance(pose_.yaw, held_yaw_);
+  if (!std::isfinite(error) || !moving) {
+    yaw_correction_ = 0.0;  // a stopped rover has no wheel speeds to correct with
+    return;
+  }
+  const double limit = config_.crab_heading_max_rate;
+  if (config_.crab_heading_i > 0.0) {
+    // Anti-windup: the integral alone never asks for more than the bound.
+    heading_integral_ = clamp_abs(heading_integral_ + error * period, limit / config_.crab_heading_i);
+  }
+  yaw_correction_ = clamp_abs(config_.crab_heading_p * error + config_.crab_heading_i * heading_integral_, limit);
+}
+
 void RoverDriveController::update_odometry(double /*time*/, double period) noexcept {
   const RoverKinematics& k = config_.kinematics;
-  if (reset_odometry_.exchange(false, std::memory_order_acq_rel)) pose_ = {};
+  if (reset_odometry_.exchange(false, std::memory_order_acq_rel)) {
+    pose_ = {};
+    heading_hold_ = false;  // the held yaw was in the old frame: hold the new one
+  }
+  const bool crab = choice_.mode == DriveMode::Crab && !steering_.empty();
   for (std::size_t i = 0; i < wheels_.size(); ++i) {
     measured_speeds_[i] = k.wheels[i].axis_sign * wheels_[i].velocity() * k.wheel_radius;
+    const bool fixed = k.wheels[i].steering < 0;
+    // In crab the fixed wheels slide sideways by design; their no-side-slip rows would be wrong.
+    lateral_weights_[i] = crab && fixed ? 0.0 : crab_sensing_ ? config_.crab_lateral_weight : 1.0;
+    rolling_weights_[i] = crab_sensing_ && sensing_[i] == 0 ? config_.crab_driven_rolling_weight : 1.0;
   }
   PlanarTwist twist;
-  // In crab the fixed wheels slide sideways by design; their no-side-slip rows would be wrong.
-  const double fixed_lateral_weight = choice_.mode == DriveMode::Crab && !steering_.empty() ? 0.0 : 1.0;
-  if (estimate_twist(k, measured_headings_, measured_speeds_, twist, &odom_residual_, fixed_lateral_weight)) {
+  if (estimate_twist_robust(k, measured_headings_, measured_speeds_, rolling_weights_, lateral_weights_,
+                            config_.odometry_robust, work_rolling_, work_lateral_, twist, &odom_residual_)) {
     odom_twist_ = twist;
     odom_valid_ = true;
     pose_ = integrate_pose(pose_, odom_twist_, period);
@@ -230,6 +308,14 @@ void RoverDriveController::publish(double time, double period) noexcept {
     st.alignment_scale = alignment_scale_;
     st.max_steering_error = max_steering_error_;
     st.wheel_speed_scale = wheel_speed_scale_;
+    st.crab_sensing = crab_sensing_;
+    st.sensing_wheels = 0;
+    for (std::size_t i = 0; i < sensing_.size() && i < 32; ++i) {
+      if (sensing_[i] != 0) st.sensing_wheels |= std::uint32_t{1} << i;
+    }
+    st.heading_hold = heading_hold_;
+    st.held_yaw = held_yaw_;
+    st.yaw_correction = yaw_correction_;
   });
 }
 

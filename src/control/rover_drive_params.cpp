@@ -220,6 +220,49 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
     throw ControllerConfigError("parameter " + path_of(params, "steering_stop_error") + " must exceed " +
                                 path_of(params, "steering_tolerance"));
   }
+  c.crab_sensing.assign(c.wheel_joints.size(), 0);
+  if (params.has("crab_sensing_wheels")) {
+    const std::string path = path_of(params, "crab_sensing_wheels");
+    const Params node = params.child("crab_sensing_wheels");
+    if (node.is_scalar()) {
+      const auto text = node.as<std::string>();
+      if (text == "trailing_side") {
+        c.crab_sensing_mode = RoverDriveConfig::CrabSensing::TrailingSide;
+      } else if (text != "none") {
+        throw ControllerConfigError("parameter " + path + " must be a list of wheel joints, 'trailing_side' or 'none' (got '" +
+                                    text + "')");
+      }
+    } else {
+      const auto sensing = params.get<std::vector<std::string>>("crab_sensing_wheels");
+      for (std::size_t j = 0; j < sensing.size(); ++j) {
+        auto it = std::find(c.wheel_joints.begin(), c.wheel_joints.end(), sensing[j]);
+        if (it == c.wheel_joints.end()) {
+          throw ControllerConfigError("parameter " + path + "[" + std::to_string(j) + "]: '" + sensing[j] +
+                                      "' is not one of " + path_of(params, "wheel_joints"));
+        }
+        c.crab_sensing[static_cast<std::size_t>(it - c.wheel_joints.begin())] = 1;
+      }
+      if (std::count(c.crab_sensing.begin(), c.crab_sensing.end(), 1) ==
+          static_cast<std::ptrdiff_t>(c.wheel_joints.size())) {
+        throw ControllerConfigError("parameter " + path + " lists every wheel: at least one must drive");
+      }
+      if (!sensing.empty()) c.crab_sensing_mode = RoverDriveConfig::CrabSensing::Listed;
+    }
+  }
+  c.crab_driven_rolling_weight = non_negative(params, "crab_driven_rolling_weight", 0.01);
+  c.crab_lateral_weight = non_negative(params, "crab_lateral_weight", 0.1);
+  c.crab_heading_p = non_negative(params, "crab_heading_p", 0.0);
+  c.crab_heading_i = non_negative(params, "crab_heading_i", 0.0);
+  c.crab_heading_max_rate = positive(params, "crab_heading_max_rate", 0.2);
+  if (!std::isfinite(c.crab_heading_max_rate)) {
+    throw ControllerConfigError("parameter " + path_of(params, "crab_heading_max_rate") + " is not finite");
+  }
+  c.odometry_robust.scale = non_negative(params, "odometry_robust_scale", 0.05);
+  c.odometry_robust.iterations = params.get<int>("odometry_robust_iterations", 3);
+  if (c.odometry_robust.iterations < 0 || c.odometry_robust.iterations > 20) {
+    throw ControllerConfigError("parameter " + path_of(params, "odometry_robust_iterations") + " must be in [0, 20] (got " +
+                                std::to_string(c.odometry_robust.iterations) + ")");
+  }
   c.odom_frame_id = params.get<std::string>("odom_frame_id", "odom");
   c.base_frame_id = params.get<std::string>("base_frame_id", "base_link");
   c.pose_covariance_diagonal = covariance(params, "pose_covariance_diagonal");

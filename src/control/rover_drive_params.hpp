@@ -5,12 +5,14 @@
 // ParamsError, each naming the parameter path.
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "control/hardware.hpp"
 #include "control/params.hpp"
 #include "control/rover_drive_kinematics.hpp"
+#include "control/rover_drive_odometry.hpp"
 #include "description/robot_model.hpp"
 
 namespace mechsim::control {
@@ -31,6 +33,24 @@ struct RoverDriveConfig {
   double cmd_vel_timeout = 0.5;           // s; <= 0 disables the timeout
   double steering_tolerance = 0.05;       // rad: wheels at full speed within it
   double steering_stop_error = 0.35;      // rad: wheels stopped beyond it (linear in between)
+  // Crab: wheels left unpowered while crabbing, so that they roll with the ground and measure
+  // it. crab_sensing_wheels is a list of wheel joints (crab_sensing, per wheel) or
+  // "trailing_side": the steered wheels on the side the rover crabs away from (y * vy < 0),
+  // the lighter side, chosen each tick.
+  enum class CrabSensing : std::uint8_t { None, Listed, TrailingSide };
+  CrabSensing crab_sensing_mode = CrabSensing::None;
+  std::vector<std::uint8_t> crab_sensing;  // Listed: 1 for a sensing wheel (wheel_count)
+  // Odometry weights in crab while sensing wheels measure: the powered wheels' rolling rows
+  // (they report their set points) and the steered wheels' no-side-slip rows (they creep
+  // sideways under the fixed wheels' drag). The sensing wheels' rolling rows weigh 1.
+  double crab_driven_rolling_weight = 0.01;
+  double crab_lateral_weight = 0.1;
+  // Crab heading hold: yaw rate correction (rad/s) = p * e + i * integral(e), e the odometry
+  // yaw error (rad) from the yaw held at the start of the crab command, bounded by max_rate.
+  double crab_heading_p = 0.0;         // 1/s; 0 with i = 0: off
+  double crab_heading_i = 0.0;         // 1/s^2
+  double crab_heading_max_rate = 0.2;  // rad/s
+  RobustOdometryOptions odometry_robust;  // odometry_robust_scale (m/s), odometry_robust_iterations
   std::string odom_frame_id = "odom";
   std::string base_frame_id = "base_link";
   std::array<double, 6> pose_covariance_diagonal{};   // x, y, z, roll, pitch, yaw

@@ -51,7 +51,8 @@ struct OdometrySnapshot {
   std::array<double, 36> pose_covariance{};
   std::array<double, 36> twist_covariance{};
   // m/s: root mean square of the wheels' disagreement with the estimated twist (slip,
-  // misaligned steering); 0 for a rigid, non-slipping drive.
+  // misaligned steering), weighted as the odometry weighed the wheels' rows; 0 for a rigid,
+  // non-slipping drive.
   double residual = 0.0;
   bool valid = false;  // false until the wheels have given a twist
 };
@@ -70,6 +71,14 @@ struct RoverDriveStatus {
   double alignment_scale = 1.0;
   double max_steering_error = 0.0;  // rad: the largest |target heading - measured heading|
   double wheel_speed_scale = 1.0;   // 0..1: the factor max_wheel_speed imposed
+  // Crab: the sensing wheels are unpowered and measure the ground (crab_sensing_wheels).
+  bool crab_sensing = false;
+  std::uint32_t sensing_wheels = 0;  // bit i: wheel i (wheel_joints order, first 32) is sensing
+  // Crab heading hold: engaged, the odometry yaw it holds (rad, odom frame) and the yaw rate
+  // correction it adds to the wheel speeds (rad/s).
+  bool heading_hold = false;
+  double held_yaw = 0.0;
+  double yaw_correction = 0.0;
 };
 
 template <>
