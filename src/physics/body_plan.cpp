@@ -78,6 +78,17 @@ class Planner {
     return it == robot_.gazebo_links.end() ? no_gazebo_ : it->second;
   }
 
+  // The link frame is its parent joint's frame, so the joint axis is given in it.
+  bool is_narrow_wheel(const Link& link, const description::Collision& c) const {
+    if (c.geometry.type != description::GeometryType::Cylinder || !(c.geometry.length <= c.geometry.radius)) return false;
+    const description::Joint* j = link.parent_joint.empty() ? nullptr : robot_.joint(link.parent_joint);
+    if (j == nullptr || (j->type != description::JointType::Continuous && j->type != description::JointType::Revolute))
+      return false;
+    const Vec3 cylinder_axis = rotate(c.origin.orientation, Vec3{0.0, 0.0, 1.0});
+    const double along = cylinder_axis.x * j->axis.x + cylinder_axis.y * j->axis.y + cylinder_axis.z * j->axis.z;
+    return std::abs(along) > 0.999;  // within ~2.6 degrees
+  }
+
   void add_geoms(const Link& link, int body, const Pose& X_BL) {
     const auto& g = gz(link.name);
     double mu = options_.contact.sliding_friction;
@@ -102,6 +113,7 @@ class Planner {
       geom.geometry = link.collisions[i].geometry;
       geom.self_collide = g.self_collide.value_or(false);
       geom.friction = mu;
+      geom.narrow_wheel = is_narrow_wheel(link, link.collisions[i]);
       out.push_back(std::move(geom));
     }
     if (!options_.visuals) return;

@@ -28,6 +28,15 @@ struct ContactDefaults {
   // proportion to mu^2, so Gazebo-style "no slip" coefficients (the PR2 wheels' mu = 100) make
   // contacts sink centimetres; the elliptic cone keeps the normal stiff at any mu.
   bool elliptic_cone = true;
+  // Narrow wheels (PlannedGeom::narrow_wheel) touch the ground at one point: they are given to
+  // MuJoCo as an ellipsoid with the cylinder's radius in the wheel plane and its half length
+  // across, which rolls on exactly the same circle. MuJoCo's cylinder-on-plane contact has two
+  // stiff points at the rim's edges, each with the full friction; with the PR2's mu = 100
+  // (its Gazebo tags) their scrub torque, about 100 N x 2 cm per wheel, held the casters
+  // against their 6.5 N m motors and the base could not turn in place. A tyre's narrow,
+  // compliant patch has no such torque, so neither has the point contact. Wide wheels (the
+  // CC8's) stay cylinders.
+  bool point_contact_wheels = true;
   // Joint limits use the same soft-constraint model; stiffer than contacts so a limit stop
   // behaves like Gazebo ODE's hard stop (time constant >= 2 timesteps at 1 kHz).
   std::array<double, 2> limit_solref{0.005, 1.0};

@@ -228,7 +228,10 @@ class Writer {
         shape << " type=\"box\" size=\"" << num(geo.size.x / 2) << " " << num(geo.size.y / 2) << " " << num(geo.size.z / 2) << "\"";
         break;
       case GeometryType::Cylinder:
-        shape << " type=\"cylinder\" size=\"" << num(geo.radius) << " " << num(geo.length / 2) << "\"";
+        if (g.narrow_wheel && !g.visual && options_.contact.point_contact_wheels)
+          shape << " type=\"ellipsoid\" size=\"" << num(geo.radius) << " " << num(geo.radius) << " " << num(geo.length / 2) << "\"";
+        else
+          shape << " type=\"cylinder\" size=\"" << num(geo.radius) << " " << num(geo.length / 2) << "\"";
         break;
       case GeometryType::Sphere: shape << " type=\"sphere\" size=\"" << num(geo.radius) << "\""; break;
       case GeometryType::Mesh: {

@@ -229,6 +229,23 @@ void Physics::set_armature(std::size_t j, double armature) {
 
 double Physics::armature(std::size_t j) const { return data_->m->dof_armature[model_->joints()[j].dof_adr]; }
 
+double Physics::effective_inertia(std::size_t j) const {
+  const mjModel* m = data_->m;
+  mjData* d = data_->d;
+  mj_kinematics(m, d);
+  mj_comPos(m, d);
+  mj_crb(m, d);      // the mass matrix qM (armature included)
+  mj_factorM(m, d);  // its LDL' factors, for mj_solveM
+  std::vector<mjtNum> unit(static_cast<std::size_t>(m->nv), 0.0), column(static_cast<std::size_t>(m->nv), 0.0);
+  const int dof = model_->joints()[j].dof_adr;
+  unit[static_cast<std::size_t>(dof)] = 1.0;
+  mj_solveM(m, d, column.data(), unit.data(), 1);
+  data_->stale = true;
+  return 1.0 / column[static_cast<std::size_t>(dof)];
+}
+
+double Physics::joint_damping(std::size_t j) const { return data_->m->dof_damping[model_->joints()[j].dof_adr]; }
+
 void Physics::set_mode(std::size_t j, JointMode mode, ServoGains gains) {
   const JointInfo& info = model_->joints()[j];
   if (info.actuator < 0) return;

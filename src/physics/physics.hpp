@@ -110,6 +110,13 @@ class Physics {
   void set_armature(std::size_t joint, double armature);
   double armature(std::size_t joint) const;
 
+  // The inertia the joint's own effort sees in the current configuration, every other joint
+  // (and a floating base) free: 1 / (M^-1)_jj (kg m^2 or kg, armature included). Joint damping
+  // (N m s/rad or N s/m) as MuJoCo integrates it, implicitly. Both for set-up decisions, not
+  // for the control loop (they allocate and recompute the mass matrix).
+  double effective_inertia(std::size_t joint) const;
+  double joint_damping(std::size_t joint) const;
+
   // Initial conditions (not for use inside a control loop): sets a joint's state directly.
   void set_joint_state(std::size_t joint, double position, double velocity = 0.0);
 

@@ -13,9 +13,9 @@
 namespace mechsim::physics {
 
 enum class Integrator {
-  Euler,     // MuJoCo semi-implicit Euler (joint damping implicit)
+  Euler,     // MuJoCo semi-implicit Euler, joint damping implicit (default; Gazebo ODE's kind)
   Rk4,       // 4th-order Runge-Kutta: best energy behaviour for smooth, contact-free systems
-  Implicit,  // implicit in velocity: damping and servo velocity gains implicit (default)
+  Implicit,  // implicit in velocity: damping, servo velocity gains and Coriolis terms implicit
 };
 
 // The name used in scenario files and on the command line: "euler", "rk4", "implicit".
@@ -72,12 +72,11 @@ struct SpawnPose {
 
 struct BuildOptions {
   double timestep = 0.001;  // s (1 kHz)
-  // Implicit stays the default, measured against Euler (PR2 and CC8 acceptance tests, 1 ms):
-  // Euler costs 1/3 of the PR2's step (80 vs 256 us) and 1/2 of the CC8's (19 vs 40 us) and keeps
-  // the arm, hold, gripper and CC8 figures, but the PR2's 90 deg base turn ends at 83.5 deg
-  // (tolerance +-3) with the true yaw 5 % behind odometry (casters slip more). See
+  // Euler is the default, measured against Implicit on every acceptance test (PR2 and CC8, 1 ms):
+  // the same figures at 1/3 of the PR2's step (70 vs 250 us) and 1/2 of the CC8's. (Implicit's
+  // extra cost is MuJoCo 2.2's full velocity derivative of the Coriolis forces.) See
   // robots/pr2/README.md. Choose per run with SimulationOptions / scenario `integrator:`.
-  Integrator integrator = Integrator::Implicit;
+  Integrator integrator = Integrator::Euler;
   DifferentialMode differential = DifferentialMode::MimicConstraint;
   ContactDefaults contact;
   WorldSpec world;

@@ -145,11 +145,37 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     }
     gap_from_fingers_.push_back(std::move(g));
   }
+  add_reflected_inertia_for_safety_limits();
   paused_.store(options_.start_paused);
   read_physics();
 }
 
 Simulation::~Simulation() = default;
+
+void Simulation::add_reflected_inertia_for_safety_limits() {
+  // The safety controller's velocity law tau = -k_velocity (v - v_bound) is applied once per
+  // tick from the measured velocity, i.e. explicitly: the discrete loop v' = v - k dt (v - v_b)
+  // / (I + c dt) (c: the joint damping, which MuJoCo integrates implicitly) overshoots the bound
+  // when k dt > I + c dt and oscillates with period 2 when k dt > 2 (I + c dt). The PR2's
+  // torso (k_velocity 2e6 N s/m for ~100 kg: k dt / I = 20) chattered at its +-10 kN effort
+  // limit and shook the whole robot on its casters. The real joints do not, because their
+  // motors' rotor inertia, reflected through reductions like the torso's 47641, is large; the
+  // description does not carry it. So, like the gripper gap above, each such joint gets the
+  // armature that makes k dt / (I + armature + c dt) = 0.5 (a one-step decay to the bound's
+  // half way, no overshoot), where I is the inertia the joint sees with everything else free.
+  // Joints whose own inertia already satisfies this (the PR2's arm joints, mostly) are unchanged.
+  for (std::size_t j = 0; j < mechanism_->joints.size(); ++j) {
+    const mechanism::JointInfo& info = mechanism_->joints[j];
+    const int p = physics_joint_[j];
+    if (p < 0 || !info.safety || info.safety->k_velocity <= 0.0) continue;
+    const auto pj = static_cast<std::size_t>(p);
+    const double k_dt = info.safety->k_velocity * options_.period;
+    const double have = physics_->effective_inertia(pj) + physics_->joint_damping(pj) * options_.period;
+    if (2.0 * k_dt <= have) continue;
+    physics_->set_armature(pj, physics_->armature(pj) + 2.0 * k_dt - have);
+    reflected_inertia_.push_back({info.name, physics_->armature(pj)});
+  }
+}
 
 void Simulation::read_physics() {
   mechanism::MechanismState& state = *mechanism_state_;

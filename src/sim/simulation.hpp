@@ -42,9 +42,8 @@ enum class DivergencePolicy { Stop, Reset };
 
 struct SimulationOptions {
   double period = 0.001;  // s: physics step = control period
-  // MuJoCo's integrator (see physics::BuildOptions for the measured trade-off). Implicit for
-  // every robot: Euler is 2-3x faster but fails the PR2 base-turn figure (robots/pr2/README.md).
-  physics::Integrator integrator = physics::Integrator::Implicit;
+  // MuJoCo's integrator (see physics::BuildOptions for the measured trade-off).
+  physics::Integrator integrator = physics::BuildOptions{}.integrator;
   physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;
   // Spawn pose of the root link. On terrain, z is measured from the ground under (x, y).
   physics::SpawnPose spawn;
@@ -114,6 +113,15 @@ class Simulation {
   control::ControllerManager& controllers() { return *manager_; }
   const control::ControllerManager& controllers() const { return *manager_; }
 
+  // Rotor inertia the simulation added to joints whose safety controller would be unstable at
+  // this period (see add_reflected_inertia_for_safety_limits): joint name and the joint's
+  // armature now (kg m^2 or kg). Empty for most robots; the PR2's torso is the usual one.
+  struct AddedInertia {
+    std::string joint;
+    double armature = 0.0;
+  };
+  const std::vector<AddedInertia>& reflected_inertia() const { return reflected_inertia_; }
+
   // Observers run after every tick, in the loop thread, in the order added.
   void add_observer(Observer observer) { observers_.push_back(std::move(observer)); }
 
@@ -160,6 +168,9 @@ class Simulation {
   };
   std::vector<GapFromFingers> gap_from_fingers_;
   void read_gaps_from_fingers();
+
+  std::vector<AddedInertia> reflected_inertia_;
+  void add_reflected_inertia_for_safety_limits();
 
   std::vector<Observer> observers_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;

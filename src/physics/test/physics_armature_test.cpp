@@ -64,5 +64,27 @@ TEST(PhysicsArmature, RejectsNegativeAndNonFiniteValuesNamingTheJoint) {
   EXPECT_DOUBLE_EQ(p.armature(0), 0.0);
 }
 
+// effective_inertia: the pendulum's I_pivot plus armature; a double pendulum's first joint sees
+// less than its mass-matrix diagonal, because the second joint is free: 1 / (M^-1)_11.
+TEST(PhysicsEffectiveInertia, IsThePivotInertiaPlusArmatureAndAccountsForFreeJoints) {
+  const double L = 0.5, m = 2.0, Icm = 1e-3;
+  Physics p(test::build(test::pendulum_urdf(L, m, Icm, R"(<dynamics damping="0.3"/>)")));
+  EXPECT_NEAR(p.effective_inertia(0), Icm + m * L * L, 1e-9);
+  EXPECT_DOUBLE_EQ(p.joint_damping(0), 0.3);
+  p.set_armature(0, 0.25);
+  EXPECT_NEAR(p.effective_inertia(0), Icm + m * L * L + 0.25, 1e-9);
+
+  // Straight down, rods of 1 m and 1 kg: M = [[I1 + I2 + m l^2 + 2 m l c, I2 + m l c], [I2 + m l c, I2]]
+  // with I = m l^2 / 3 about each pivot (plus the tiny iyy of the model) and c = 0.5 m.
+  Physics d(test::build(test::double_pendulum_urdf()));
+  const double i_rod = 1.0 / 12.0 + 0.25, m11 = 2.0 * i_rod + 1.0 + 1.0, m12 = i_rod + 0.5, m22 = i_rod;
+  const double expected = m11 - m12 * m12 / m22;  // 1 / (M^-1)_11, the Schur complement
+  EXPECT_NEAR(d.effective_inertia(0), expected, 1e-6);
+  EXPECT_LT(d.effective_inertia(0), m11);
+  // The query leaves the state alone: the pendulum still starts at rest where it was.
+  EXPECT_DOUBLE_EQ(d.position(0), 0.0);
+  EXPECT_TRUE(d.step().ok());
+}
+
 }  // namespace
 }  // namespace mechsim::physics

@@ -4,7 +4,7 @@
 // degrees, and odometry agrees with the true motion within 3 %. The commands are open loop in
 // time (cmd_vel re-sent every 50 ms, under the controller's 0.2 s timeout); the controller's
 // acceleration limits ramp up and down symmetrically, so distance = speed * command time.
-// Simulated time: 6.3 s + 5.6 s. The forward test is disabled (see there).
+// Simulated time: 6.3 s + 5.6 s.
 
 #include <gtest/gtest.h>
 
@@ -56,10 +56,7 @@ Motion drive(Simulation& sim, const control::Twist& twist, double seconds, doubl
           o1.x - o0.x, o1.y - o0.y, wrap(o1.yaw - o0.yaw)};
 }
 
-// DISABLED: fails today. The base drives 0.935 m (6.5 % short, 4 deg of yaw, 4 cm sideways)
-// while odometry reports 0.994 m: the wheels slip on the ground in the physics (caster wheel
-// contacts), which the wheel gains cannot fix. Run with --gtest_also_run_disabled_tests.
-TEST(Pr2Base, DISABLED_OneMetreForwardAt30cmPerSecondWithin3Percent) {
+TEST(Pr2Base, OneMetreForwardAt30cmPerSecondWithin3Percent) {
   if (!pr2_shared_data_present()) GTEST_SKIP() << "shared data absent: " << MECHSIM_SHARED_DIR;
   auto sim = make_pr2_simulation(kDefaultSet);
   ASSERT_TRUE(sim->run_for(1.0));

@@ -14,7 +14,7 @@
 namespace mechsim::sim {
 
 // The integrator the PR2 tests run under unless MECHSIM_PR2_INTEGRATOR says otherwise.
-inline constexpr physics::Integrator kPr2DefaultIntegrator = physics::Integrator::Implicit;
+inline const physics::Integrator kPr2DefaultIntegrator = physics::BuildOptions{}.integrator;
 // kPr2DefaultIntegrator, or the environment variable MECHSIM_PR2_INTEGRATOR (implicit | euler |
 // rk4) to run the PR2 acceptance figures under another integrator; throws naming a bad value.
 physics::Integrator pr2_test_integrator();

@@ -23,7 +23,7 @@ control::Params cc8_controller_params(const std::filesystem::path& shared) {
 
 physics::Integrator cc8_test_integrator() {
   const char* env = std::getenv("MECHSIM_CC8_INTEGRATOR");
-  if (env == nullptr || *env == '\0') return physics::Integrator::Implicit;
+  if (env == nullptr || *env == '\0') return physics::BuildOptions{}.integrator;
   const auto parsed = physics::parse_integrator(env);
   if (!parsed) {
     throw std::runtime_error(std::string("MECHSIM_CC8_INTEGRATOR: expected 'implicit', 'euler' or 'rk4', got '") + env + "'");
