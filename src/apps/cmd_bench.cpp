@@ -22,7 +22,7 @@ struct BenchArgs {
   std::string controllers, ns, world = "empty";
   double seconds = 5.0;
   double spawn_z = 0.02;
-  std::string integrator = "implicit";
+  std::string integrator = physics::integrator_name(physics::BuildOptions{}.integrator);
 };
 
 void run(const BenchArgs& args) {
@@ -91,7 +91,7 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   cmd->add_option("--start", args->start, "Controllers to start (default: all in the namespace)");
   cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
   cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
-  cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: implicit (default), euler or rk4")
+  cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: euler (default), implicit or rk4")
       ->check(CLI::IsMember({"implicit", "euler", "rk4"}));
   cmd->callback([args] { run(*args); });
 }
