@@ -96,7 +96,9 @@
 //   "odom"          StatePort<OdometrySnapshot>: pose in odom_frame_id, twist in base_frame_id
 //   "state"         StatePort<JointGroupControllerState>: per joint, steering joints first then
 //                   wheels: set point (rad / rad/s), process value, error, effort command, gains
-//   "drive_status"  StatePort<RoverDriveStatus>: mode, applied twist, timeout, alignment
+//                   (a sensing wheel shows its kinematic set point and an effort of 0)
+//   "drive_status"  StatePort<RoverDriveStatus>: mode, applied twist, timeout, alignment, crab
+//                   sensing wheels, heading hold
 //   "gains/<joint>" PidGainsPort per joint
 //
 // starting() holds the measured steering headings, zeroes the command and resets the PIDs; the

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "control/rover_drive_controller.hpp"
+#include "control/rover_drive_odometry.hpp"
 #include "mechanism/simple_transmission.hpp"
 
 namespace mechsim::control {
@@ -113,6 +114,25 @@ void BM_RoverOdometryEstimate(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_RoverOdometryEstimate)->Unit(benchmark::kNanosecond);
+
+// The controller's odometry: weighted least squares and three Cauchy reweighting passes.
+void BM_RoverOdometryRobustEstimate(benchmark::State& bench) {
+  const RoverKinematics k = cc8_kinematics();
+  std::array<double, 4> headings{};
+  std::array<double, 6> speeds{};
+  inverse_kinematics(k, {0.4, 0.0, 0.3}, headings, headings, headings, speeds);
+  speeds[0] *= 1.5;  // a slipping wheel, so that the reweighting has work to do
+  std::array<double, 6> work_h{}, work_n{};
+  PlanarTwist twist;
+  double residual = 0.0;
+  for (auto _ : bench) {
+    speeds[1] += 1e-9;
+    benchmark::DoNotOptimize(
+        estimate_twist_robust(k, headings, speeds, {}, {}, RobustOdometryOptions{}, work_h, work_n, twist, &residual));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_RoverOdometryRobustEstimate)->Unit(benchmark::kNanosecond);
 
 }  // namespace
 }  // namespace mechsim::control
