@@ -210,10 +210,10 @@ void RoverDriveController::select_sensing_wheels(bool crabbing) noexcept {
 
 void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool moving, double period) noexcept {
   const bool enabled = config_.crab_heading_p > 0.0 || config_.crab_heading_i > 0.0;
-  // Off unless crabbing without a commanded rotation; a new crab command holds the heading it
-  // starts with.
+  // Off unless crabbing (moving) without a commanded rotation; each crab motion holds the
+  // heading it starts with.
   const bool wz_commanded = std::abs(target.wz) > 1e-9;
-  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !odom_valid_) {
+  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !odom_valid_ || !moving) {
     heading_hold_ = false;
     heading_integral_ = 0.0;
     yaw_correction_ = 0.0;
@@ -225,8 +225,8 @@ void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool m
     heading_integral_ = 0.0;
   }
   const double error = shortest_angular_distance(pose_.yaw, held_yaw_);
-  if (!std::isfinite(error) || !moving) {
-    yaw_correction_ = 0.0;  // a stopped rover has no wheel speeds to correct with
+  if (!std::isfinite(error)) {
+    yaw_correction_ = 0.0;
     return;
   }
   const double limit = config_.crab_heading_max_rate;

@@ -40,7 +40,8 @@
 //     command adds a yaw rate correction to the crab twist before the inverse kinematics: the
 //     front and rear wheels steer a little apart (and the wheel speeds follow), which turns
 //     the body against the yaw. Off outside crab and while a non-zero wz is commanded;
-//     re-armed (holding the then current yaw) at each new crab command and odometry reset.
+//     re-armed (holding the then current yaw) whenever a crab motion starts and at an
+//     odometry reset.
 //     It can only hold what the odometry sees: with no sensing wheels, the yaw that slip
 //     causes is invisible to it.
 //   Measured on mechsim's CC8 crabbing 5 m at 45 deg (robots/cc8/scenarios/crab_45.yaml):

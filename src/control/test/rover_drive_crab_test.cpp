@@ -207,6 +207,8 @@ TEST(RoverDriveCrab, HeadingHoldOnlyInCrabWithoutACommandedRotation) {
   EXPECT_TRUE(st.heading_hold);
   EXPECT_NEAR(st.held_yaw, yaw, 0.05);
   EXPECT_NEAR(rover.odom().yaw, st.held_yaw, 0.01);
+  rover.run(1.0, 0.0, 0.0, 0.0);  // stopped: nothing to hold with
+  EXPECT_FALSE(rover.status().heading_hold);
 }
 
 TEST(RoverDriveCrab, CrabUpdateAllocatesNothing) {
