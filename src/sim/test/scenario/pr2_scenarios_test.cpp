@@ -11,6 +11,8 @@
 #include <iostream>
 #include <string>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "sim/scenario.hpp"
@@ -67,7 +69,8 @@ INSTANTIATE_TEST_SUITE_P(Shipped, Pr2ShippedScenario, testing::Values("gripper_o
 // trajectory.csv the desired and actual positions of the 7 joints.
 TEST(Pr2ShippedScenarioArm, MeetsItsChecksAndReportsTheGoals) {
   if (!shared_next_to_checkout()) GTEST_SKIP() << "shared data absent next to the checkout: " << MECHSIM_SOURCE_DIR << "/../shared";
-  const fs::path out = fs::temp_directory_path() / ("mechsim_pr2_scenarios_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  // One folder per process: CTest runs tests in parallel, and other build folders may run this one.
+  const fs::path out = fs::temp_directory_path() / ("mechsim_pr2_scenarios_" + std::to_string(::getpid()));
   fs::remove_all(out);
   const ScenarioResult r = run_shipped("arm_trajectory", out.string());
   ASSERT_TRUE(r.completed) << r.error;
