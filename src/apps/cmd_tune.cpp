@@ -21,16 +21,19 @@ struct TuneArgs {
   std::vector<std::string> joints;
   double step = 0.0;
   double settle = 0.3, rise = 0.2, overshoot = 5.0;
+  double observe = 1.0;
   int evaluations = 80;
   bool write = false;
 };
 
-std::string metrics_line(const sim::StepMetrics& m, bool velocity) {
+// `unit` is the joint's position unit ("rad" or "m").
+std::string metrics_line(const sim::StepMetrics& m, bool velocity, const std::string& unit) {
   if (m.diverged) return "diverged";
   char buf[256];
   auto t = [](double v) { return v < 0 ? std::string("never") : std::to_string(v).substr(0, 5) + " s"; };
+  const std::string step_unit = velocity ? unit + "/s" : unit;
   std::snprintf(buf, sizeof buf, "step %.3g %s: 95%% at %s, settles (2%%) at %s, overshoot %.1f %%, final error %.3g, peak effort %.3g",
-                m.step, velocity ? "rad/s" : "rad", t(m.rise95).c_str(), t(m.settling_time).c_str(), m.overshoot,
+                m.step, step_unit.c_str(), t(m.rise95).c_str(), t(m.settling_time).c_str(), m.overshoot,
                 m.steady_state_error, m.peak_effort);
   return buf;
 }
@@ -53,16 +56,25 @@ void run(const TuneArgs& args, CommandResult& result) {
   setup.targets.settling_time = args.settle;
   setup.targets.rise95 = args.rise;
   setup.targets.overshoot = args.overshoot;
+  setup.observe = args.observe;
   setup.max_evaluations = args.evaluations;
   bool all_met = true;
   for (const std::string& joint : args.joints) {
     setup.joint = joint;
     const sim::TuneResult r = sim::tune_joint(setup);
-    std::cout << r.controller << " (" << r.type << ", joint " << joint << ")\n"
-              << "  before: p " << r.before.p << " i " << r.before.i << " d " << r.before.d << "\n          "
-              << metrics_line(r.before_metrics, r.velocity) << "\n"
+    const description::Joint* model_joint = setup.robot.joint(joint);
+    const std::string unit =
+        model_joint != nullptr && model_joint->type == description::JointType::Prismatic ? "m" : "rad";
+    std::cout << r.controller << " (" << r.type << ", joint " << joint << ")\n";
+    if (r.plan.reversed) {
+      std::cout << "  note: a step of " << -r.plan.step << " " << unit << " from " << r.start << " would leave the "
+                << (r.plan.soft ? "soft limits" : "limits") << " [" << r.plan.lower << ", " << r.plan.upper
+                << "]; stepping " << r.plan.step << " " << unit << " instead\n";
+    }
+    std::cout << "  before: p " << r.before.p << " i " << r.before.i << " d " << r.before.d << "\n          "
+              << metrics_line(r.before_metrics, r.velocity, unit) << "\n"
               << "  after:  p " << r.after.p << " i " << r.after.i << " d " << r.after.d << "\n          "
-              << metrics_line(r.after_metrics, r.velocity) << "\n"
+              << metrics_line(r.after_metrics, r.velocity, unit) << "\n"
               << "  " << r.evaluations << " experiments; targets (";
     if (r.velocity) {
       std::cout << "95 % within " << args.rise << " s";
@@ -97,6 +109,7 @@ void add_tune_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("--settle", args->settle, "Target settling time (2 %) of position controllers (s)");
   cmd->add_option("--rise", args->rise, "Target time to 95 % of velocity controllers (s)");
   cmd->add_option("--overshoot", args->overshoot, "Target maximum overshoot (%)");
+  cmd->add_option("--observe", args->observe, "Time observed after the step (s); longer than the target settling time");
   cmd->add_option("--evaluations", args->evaluations, "Maximum experiments per joint");
   cmd->add_flag("--write", args->write, "Write the gains into the controller YAML (its pid line)");
   cmd->callback([args, &result] { run(*args, result); });

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <regex>
 #include <sstream>
 #include <tuple>
@@ -103,10 +104,10 @@ std::array<double, N> nelder_mead(F&& cost, std::array<double, N> start, double 
   return x[best];
 }
 
-}  // namespace
-
-StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, bool velocity,
-                         const control::PidGains& gains) {
+// The robot with every controller of the namespace that loads, the tuned one (with `gains`)
+// winning its joint; not yet run.
+std::unique_ptr<Simulation> make_experiment(const TuneSetup& setup, const std::string& controller, bool velocity,
+                                            const control::PidGains& gains) {
   control::Params ns = controller_namespace(setup);
   ns.set(controller + "/pid/p", gains.p);
   ns.set(controller + "/pid/i", gains.i);
@@ -118,21 +119,71 @@ StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, 
     world.spec.gravity = 0.0;
     options.spawn.z = 1.0;
   }
-  Simulation sim(setup.robot, world, ns, options);
+  auto sim = std::make_unique<Simulation>(setup.robot, world, ns, options);
   std::vector<std::string> start{controller};
   for (const std::string& name : ns.keys()) {
     if (name == controller || !ns.child(name).is_map() || !ns.child(name).has("type")) continue;
-    if (sim.load_controller(name)) start.push_back(name);
+    if (sim->load_controller(name)) start.push_back(name);
   }
-  if (control::ControlResult r = sim.load_controller(controller); !r) {
+  if (control::ControlResult r = sim->load_controller(controller); !r) {
     throw std::runtime_error("could not load controller '" + controller + "': " + r.error);
   }
   // The tuned controller first: under BEST_EFFORT it wins its joint over group controllers.
-  sim.controllers().switch_controllers(start, {}, control::SwitchStrictness::BestEffort);
+  sim->controllers().switch_controllers(start, {}, control::SwitchStrictness::BestEffort);
+  return sim;
+}
 
-  const auto joint = sim.physics().model().joint_index(setup.joint);
-  if (!joint) throw std::runtime_error("joint '" + setup.joint + "' is not simulated");
-  auto value = [&] { return velocity ? sim.physics().velocity(*joint) : sim.physics().position(*joint); };
+std::size_t simulated_joint(const Simulation& sim, const std::string& joint) {
+  const auto index = sim.physics().model().joint_index(joint);
+  if (!index) throw std::runtime_error("joint '" + joint + "' is not simulated");
+  return *index;
+}
+
+std::string format_number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// Where a position-controlled joint rests after `settle_before` under `gains` (rad or m).
+double resting_position(const TuneSetup& setup, const std::string& controller, const control::PidGains& gains) {
+  const std::unique_ptr<Simulation> sim = make_experiment(setup, controller, false, gains);
+  const std::size_t joint = simulated_joint(*sim, setup.joint);
+  sim->run_for(setup.settle_before);  // a diverging hold still has a last position to start from
+  const double q = sim->physics().position(joint);
+  return std::isfinite(q) ? q : 0.0;
+}
+
+}  // namespace
+
+TuneResult::StepPlanInfo plan_position_step(const description::Joint& joint, double start, double step) {
+  TuneResult::StepPlanInfo plan;
+  plan.step = step;
+  const bool bounded = joint.type == description::JointType::Revolute || joint.type == description::JointType::Prismatic;
+  if (!bounded || !joint.limits) return plan;
+  plan.limited = true;
+  plan.soft = joint.safety.has_value();
+  plan.lower = plan.soft ? joint.safety->soft_lower_limit : joint.limits->lower;
+  plan.upper = plan.soft ? joint.safety->soft_upper_limit : joint.limits->upper;
+  auto inside = [&](double target) { return target >= plan.lower && target <= plan.upper; };
+  if (inside(start + step)) return plan;
+  if (inside(start - step)) {
+    plan.step = -step;
+    plan.reversed = true;
+    return plan;
+  }
+  throw std::runtime_error("joint '" + joint.name + "': a step of " + format_number(step) + " from " + format_number(start) +
+                           " leaves its " + (plan.soft ? "soft limits" : "limits") + " [" + format_number(plan.lower) + ", " +
+                           format_number(plan.upper) + "] in both directions (targets " + format_number(start + step) +
+                           " and " + format_number(start - step) + "); give a smaller --step");
+}
+
+StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, bool velocity,
+                         const control::PidGains& gains) {
+  const std::unique_ptr<Simulation> experiment = make_experiment(setup, controller, velocity, gains);
+  Simulation& sim = *experiment;
+  const std::size_t joint = simulated_joint(sim, setup.joint);
+  auto value = [&] { return velocity ? sim.physics().velocity(joint) : sim.physics().position(joint); };
   StepMetrics m;
   m.step = setup.step.value_or(velocity ? 2.0 : 0.5);
   if (!sim.run_for(setup.settle_before)) {
@@ -166,7 +217,7 @@ StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, 
       last_outside = t;
       outside_ever = true;
     }
-    m.peak_effort = std::max(m.peak_effort, std::abs(sim.physics().actuator_effort(*joint)));
+    m.peak_effort = std::max(m.peak_effort, std::abs(sim.physics().actuator_effort(joint)));
   }
   m.overshoot = std::max(0.0, peak - 1.0) * 100.0;
   m.steady_state_error = target - value();
@@ -175,7 +226,8 @@ StepMetrics measure_step(const TuneSetup& setup, const std::string& controller, 
   return m;
 }
 
-TuneResult tune_joint(const TuneSetup& setup) {
+TuneResult tune_joint(const TuneSetup& requested) {
+  TuneSetup setup = requested;  // its step becomes the planned one
   const control::Params ns = controller_namespace(setup);
   TuneResult result;
   for (const std::string& name : ns.keys()) {
@@ -191,6 +243,17 @@ TuneResult tune_joint(const TuneSetup& setup) {
   if (result.controller.empty()) {
     throw std::runtime_error("no PID position or velocity controller for joint '" + setup.joint + "' in " +
                              setup.controllers_file + (setup.controllers_namespace.empty() ? "" : " under '" + setup.controllers_namespace + "'"));
+  }
+  if (!result.velocity) {
+    // The step must stay in the joint's range from where the joint rests (a step into a limit
+    // never settles, and would be reported as a controller that misses its targets).
+    const description::Joint* joint = setup.robot.joint(setup.joint);
+    if (joint == nullptr) throw std::runtime_error("joint '" + setup.joint + "' is not in robot '" + setup.robot.name + "'");
+    result.start = resting_position(setup, result.controller, result.before);
+    result.plan = plan_position_step(*joint, result.start, setup.step.value_or(0.5));
+    setup.step = result.plan.step;
+  } else {
+    result.plan.step = setup.step.value_or(2.0);
   }
   result.before_metrics = measure_step(setup, result.controller, result.velocity, result.before);
 

@@ -54,15 +54,34 @@ struct TuneResult {
   std::string controller;  // name in the YAML
   std::string type;
   bool velocity = false;   // a velocity controller (else position)
+  // Position controllers: where the joint rests before the step (rad or m), the step applied
+  // (the requested one, or its opposite when that left the joint's range) and whether it was
+  // reversed; plan.limited false for continuous joints and velocity controllers.
+  double start = 0.0;
+  struct StepPlanInfo {
+    double step = 0.0;
+    bool reversed = false;
+    bool limited = false;
+    double lower = 0.0, upper = 0.0;  // the range checked (rad or m)
+    bool soft = false;                // the range is the safety controller's soft limits
+  } plan;
   control::PidGains before, after;
   StepMetrics before_metrics, after_metrics;
   int evaluations = 0;
   bool targets_met = false;
 };
 
+// The step a position experiment can take from `start` (rad or m) on `joint`: `step` when
+// start + step lies within the joint's range (the safety controller's soft limits when the joint
+// has one, else its limits), else -step (reversed). Continuous and unlimited joints take `step`
+// as given. Throws std::runtime_error naming the joint, its range, the start and the step when
+// neither direction stays in range.
+TuneResult::StepPlanInfo plan_position_step(const description::Joint& joint, double start, double step);
+
 // The controller of `setup.joint` in the YAML, its step response with the YAML's gains, and the
 // tuned gains with theirs. Throws std::runtime_error naming the joint/controller when the YAML
-// has no PID position/velocity controller for the joint.
+// has no PID position/velocity controller for the joint, and (position controllers) when the step
+// fits the joint's range in neither direction (see plan_position_step).
 TuneResult tune_joint(const TuneSetup& setup);
 
 // One step experiment with the given gains (exposed for tests).
