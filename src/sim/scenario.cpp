@@ -43,19 +43,6 @@ std::string scalar_text(const Params& p) {
   fail(p, "expected a scalar value");
 }
 
-std::string resolve_path(const fs::path& base, const std::string& file) {
-  const fs::path p(file);
-  return (p.is_absolute() ? p : (base / p)).lexically_normal().string();
-}
-
-control::Twist read_twist(const Params& p) {
-  control::Twist t;
-  t.linear.x = p.get<double>("vx", p.get<double>("linear/x", 0.0));
-  t.linear.y = p.get<double>("vy", p.get<double>("linear/y", 0.0));
-  t.angular.z = p.get<double>("wz", p.get<double>("angular/z", 0.0));
-  return t;
-}
-
 // Rejects keys outside `allowed` (a misspelt bound must not be ignored).
 void only_keys(const Params& p, std::initializer_list<const char*> allowed) {
   if (!p.is_map()) fail(p, "expected a map");
@@ -68,6 +55,20 @@ void only_keys(const Params& p, std::initializer_list<const char*> allowed) {
     }
     if (!ok) fail(p.child(k), "unknown key '" + k + "' (expected one of: " + list + ")");
   }
+}
+
+std::string resolve_path(const fs::path& base, const std::string& file) {
+  const fs::path p(file);
+  return (p.is_absolute() ? p : (base / p)).lexically_normal().string();
+}
+
+control::Twist read_twist(const Params& p) {
+  only_keys(p, {"vx", "vy", "wz", "linear", "angular"});
+  control::Twist t;
+  t.linear.x = p.get<double>("vx", p.get<double>("linear/x", 0.0));
+  t.linear.y = p.get<double>("vy", p.get<double>("linear/y", 0.0));
+  t.angular.z = p.get<double>("wz", p.get<double>("angular/z", 0.0));
+  return t;
 }
 
 double finite(const Params& p, std::string_view key, double fallback) {
@@ -148,6 +149,7 @@ control::GripperCommand read_gripper(const Params& g) {
 TimelineEvent read_event(const Params& e) {
   TimelineEvent ev;
   ev.location = e.location().empty() ? e.path() : e.location();
+  only_keys(e, {"at", "controller", "command", "twist", "mode", "route", "trajectory", "gripper"});
   ev.at = e.get<double>("at");
   if (!(ev.at >= 0.0)) fail(e.child("at"), "must be >= 0 s");
   ev.controller = e.get<std::string>("controller");
@@ -177,6 +179,7 @@ TimelineEvent read_event(const Params& e) {
     ++kinds;
     ev.kind = TimelineEvent::Kind::Route;
     const Params r = e.child("route");
+    only_keys(r, {"waypoints", "speed", "tolerance", "lookahead", "max_yaw_rate"});
     for (const Params& w : r.child("waypoints").items()) {
       const auto xy = w.as<std::vector<double>>();
       if (xy.size() != 2) fail(w, "a waypoint is [x, y]");
@@ -214,26 +217,31 @@ Check read_check(const Params& c) {
   check.text = kind;
   if (kind == "reach") {
     check.kind = Check::Kind::Reach;
+    only_keys(p, {"x", "y", "within", "by"});
     check.x = p.get<double>("x");
     check.y = p.get<double>("y");
     check.within = p.get<double>("within");
     check.by = p.get<double>("by");
   } else if (kind == "final_pose") {
     check.kind = Check::Kind::FinalPose;
+    only_keys(p, {"x", "y", "within", "lateral_within"});
     check.x = p.get<double>("x");
     check.y = p.get<double>("y");
     check.within = p.get<double>("within");
     if (p.has("lateral_within")) check.lateral_within = p.get<double>("lateral_within");
   } else if (kind == "final_heading") {
     check.kind = Check::Kind::FinalHeading;
+    only_keys(p, {"yaw_deg", "within_deg"});
     check.yaw = p.get<double>("yaw_deg") * kDeg;
     check.within_angle = p.get<double>("within_deg") * kDeg;
   } else if (kind == "direction") {
     check.kind = Check::Kind::Direction;
+    only_keys(p, {"deg", "within_deg"});
     check.yaw = p.get<double>("deg") * kDeg;
     check.within_angle = p.get<double>("within_deg") * kDeg;
   } else if (kind == "upright") {
     check.kind = Check::Kind::Upright;
+    only_keys(p, {"max_tilt_deg"});
     check.max_tilt = p.get<double>("max_tilt_deg") * kDeg;
   } else if (kind == "odometry") {
     check.kind = Check::Kind::Odometry;
@@ -243,6 +251,7 @@ Check read_check(const Params& c) {
     if (!check.max_error_fraction && !check.max_yaw_error_fraction) fail(p, "needs max_error_fraction and/or max_yaw_error_fraction");
   } else if (kind == "distance") {
     check.kind = Check::Kind::Distance;
+    only_keys(p, {"min", "max"});
     check.min_distance = p.get<double>("min", 0.0);
     check.max_distance = p.get<double>("max", 1e300);
   } else if (kind == "trajectory" || kind == "gripper") {

@@ -70,8 +70,8 @@
 //     # A mechanism joint's position (rad, m) at time `at` (s; default: the end of the run).
 //     - {joint: {name: r_gripper_joint, at: 1.2, position: 0.08, within: 0.002}}
 //
-// Unknown keys inside timeline events and checks are errors (a misspelt bound must not pass
-// silently). Every error names the file, the line and the parameter path.
+// Unknown keys inside timeline events, world boxes and checks are errors (a misspelt bound
+// must not pass silently). Every error names the file, the line and the parameter path.
 
 #include <array>
 #include <cstdint>

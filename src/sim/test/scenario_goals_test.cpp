@@ -224,5 +224,14 @@ TEST_F(ScenarioGoalsRun, InitialJointPositionsAreWhereTheRunStarts) {
   EXPECT_FALSE(r0.checks[0].passed) << r0.checks[0].detail;  // without it the bob hangs at 0
 }
 
+TEST_F(ScenarioGoalsRun, AJointCheckAfterTheEndOfAShortenedRunFails) {
+  Scenario s = load_scenario(write("checks:\n  - {joint: {name: hinge, at: 2.0, position: 0.0, within: 1.0}}\n"));
+  s.duration = 0.5;  // as `mechsim run --duration 0.5` does
+  const ScenarioResult r = run_scenario(s, RunOptions{});
+  ASSERT_EQ(r.checks.size(), 1u);
+  EXPECT_FALSE(r.checks[0].passed);
+  EXPECT_NE(r.checks[0].detail.find("not sampled, the run ended at t=0.500 s"), std::string::npos) << r.checks[0].detail;
+}
+
 }  // namespace
 }  // namespace mechsim::sim

@@ -224,6 +224,10 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCase{"box_quat_and_yaw", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], yaw: 1, quat: [1, 0, 0, 0]}]}\n",
                             "give quat or roll/pitch/yaw, not both"},
                     BadCase{"box_typo", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], heigth: 2}]}\n", "unknown key 'heigth'"},
+                    BadCase{"event_typo", "duration: 1\ntimeline:\n  - {at: 0, controller: c, comand: 1}\n", "unknown key 'comand'"},
+                    BadCase{"twist_typo", "duration: 1\ntimeline:\n  - {at: 0, controller: c, twist: {vz: 1}}\n", "twist/vz: unknown key 'vz'"},
+                    BadCase{"reach_typo", "duration: 1\nchecks:\n  - {reach: {x: 1, y: 2, within: 0.5, by: 10, withn: 1}}\n",
+                            "/checks[0]/reach/withn: unknown key 'withn'"},
                     BadCase{"spawn_joints_list", "duration: 1\nspawn: {joints: [1, 2]}\n", "/spawn/joints: expected a map"}),
     [](const testing::TestParamInfo<BadCase>& param) { return std::string(param.param.name); });
 
