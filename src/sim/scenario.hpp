@@ -24,7 +24,7 @@
 //     start: [joint_state_controller, rover_drive_controller]
 //   duration: 30        # s of simulation time
 //   period: 0.001       # s
-//   integrator: implicit  # implicit (default) | euler | rk4: MuJoCo's integrator (see BuildOptions)
+//   integrator: euler   # euler | implicit | rk4: MuJoCo's integrator; default physics::BuildOptions' (see there)
 //   seed: 1             # for everything random (world generation when world.seed is absent)
 //   record_rate: 50     # Hz of the CSV files
 //   timeline:
@@ -157,7 +157,7 @@ struct Scenario {
   std::vector<std::string> start;
   double duration = 10.0;
   double period = 0.001;
-  physics::Integrator integrator = physics::Integrator::Implicit;
+  physics::Integrator integrator = physics::BuildOptions{}.integrator;  // the project default
   std::uint64_t seed = 1;
   double record_rate = 50.0;
   std::vector<TimelineEvent> timeline;  // sorted by time

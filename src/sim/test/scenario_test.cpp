@@ -69,7 +69,7 @@ checks:
   EXPECT_EQ(s.checks[0].kind, Check::Kind::Reach);
   EXPECT_NEAR(s.checks[1].yaw, M_PI / 2, 1e-12);
   EXPECT_EQ(s.checks[2].kind, Check::Kind::Direction);
-  EXPECT_EQ(s.integrator, physics::Integrator::Implicit);  // the default when absent
+  EXPECT_EQ(s.integrator, physics::BuildOptions{}.integrator);  // the project default when absent
 }
 
 TEST_F(ScenarioFile, ReadsTheIntegrator) {
