@@ -1,6 +1,6 @@
 #pragma once
 // The PR2's own action interfaces over the controllers' goal ports, beside the generic
-// follow_joint_trajectory (trajectory_action.hpp), with the same polling design: goals are
+// follow_joint_trajectory (trajectory_action.hpp), as PolledActionServer policies: goals are
 // submitted to the port at once, and a wall timer (20 Hz) relays feedback and finishes goal
 // handles as the tick reports them.
 //
@@ -18,70 +18,70 @@
 //       PREEMPTED by a cancel, a newer goal or a plain `command`. Feedback: position, effort,
 //       stalled, reached_goal at the timer's rate.
 
-#include <memory>
-#include <mutex>
-#include <vector>
+#include <cstdint>
+#include <optional>
+#include <string>
 
-#include <actionlib/server/action_server.h>
 #include <pr2_controllers_msgs/JointTrajectoryAction.h>
 #include <pr2_controllers_msgs/Pr2GripperCommandAction.h>
 
 #include "ros/bridge/sim_bridge.hpp"
+#include "ros/polled_action_server.hpp"
 
 namespace mechsim::ros {
 
-class Pr2TrajectoryActionServer {
+// joint_trajectory_action over the controller's follow_joint_trajectory goal port (a
+// control::TrajectoryGoalPort). No feedback; a goal the port no longer knows is aborted.
+class Pr2JointTrajectoryPolicy {
  public:
-  // `port` is the controller's follow_joint_trajectory goal port.
-  Pr2TrajectoryActionServer(::ros::NodeHandle nh, const std::string& name, PortRef port);
-  ~Pr2TrajectoryActionServer();
-  // After this returns the port is never touched again; active goals are aborted.
-  void shutdown();
+  using Action = pr2_controllers_msgs::JointTrajectoryAction;
+  using Result = pr2_controllers_msgs::JointTrajectoryResult;
+  using Outcome = control::TrajectoryResult;
 
- private:
-  using Server = actionlib::ActionServer<pr2_controllers_msgs::JointTrajectoryAction>;
-  using GoalHandle = Server::GoalHandle;
-  struct Tracked {
-    GoalHandle handle;
-    std::uint64_t id;
-  };
-  void on_goal(GoalHandle handle);
-  void on_cancel(GoalHandle handle);
-  void poll();
-
-  PortRef port_;
-  std::mutex mutex_;
-  bool alive_ = true;
-  std::vector<Tracked> goals_;
-  std::unique_ptr<Server> server_;
-  ::ros::WallTimer timer_;
+  PolicySubmission<Result> submit(const PortRef& port, const pr2_controllers_msgs::JointTrajectoryGoal& goal);
+  bool cancel(const PortRef& port, std::uint64_t id) { return cancel_goal(port, id); }
+  std::optional<control::GoalStatus> status(const PortRef& port, std::uint64_t id) {
+    return goal_status(port, id).value_or(control::GoalStatus::Aborted);
+  }
+  Outcome outcome(const PortRef& port, std::uint64_t id) { return goal_result(port, id).value_or(Outcome{}); }
+  bool read_feedback(const PortRef&, std::uint64_t&) { return false; }
+  pr2_controllers_msgs::JointTrajectoryFeedback feedback() const { return {}; }
+  static Result result(const Outcome&) { return {}; }
+  static std::string text(control::GoalStatus, const Outcome& outcome) { return outcome.error_string; }
+  static Result unloaded_result() { return {}; }
 };
 
-class GripperActionServer {
+// gripper_action over the gripper controller's gripper_action goal port (a
+// control::GripperGoalPort). A goal the port no longer knows is aborted.
+class Pr2GripperPolicy {
  public:
-  // `port` is the gripper controller's gripper_action goal port.
-  GripperActionServer(::ros::NodeHandle nh, const std::string& name, PortRef port);
-  ~GripperActionServer();
-  void shutdown();  // as Pr2TrajectoryActionServer::shutdown
+  using Action = pr2_controllers_msgs::Pr2GripperCommandAction;
+  using Result = pr2_controllers_msgs::Pr2GripperCommandResult;
+  using Outcome = GripperStateData;
+
+  PolicySubmission<Result> submit(const PortRef& port, const pr2_controllers_msgs::Pr2GripperCommandGoal& goal);
+  bool cancel(const PortRef& port, std::uint64_t id) { return cancel_gripper_goal(port, id); }
+  std::optional<control::GoalStatus> status(const PortRef& port, std::uint64_t id) {
+    return gripper_goal_status(port, id).value_or(control::GoalStatus::Aborted);
+  }
+  Outcome outcome(const PortRef& port, std::uint64_t id) { return gripper_goal_result(port, id).value_or(Outcome{}); }
+  bool read_feedback(const PortRef& port, std::uint64_t& goal_id) {
+    return read_gripper_feedback(port, feedback_, &goal_id, &feedback_sequence_);
+  }
+  pr2_controllers_msgs::Pr2GripperCommandFeedback feedback() const;
+  static Result result(const Outcome& outcome);
+  // pr2_gripper_action says why it aborted: "stalled" short of the goal.
+  static std::string text(control::GoalStatus status, const Outcome& outcome);
+  static Result unloaded_result() { return {}; }
 
  private:
-  using Server = actionlib::ActionServer<pr2_controllers_msgs::Pr2GripperCommandAction>;
-  using GoalHandle = Server::GoalHandle;
-  struct Tracked {
-    GoalHandle handle;
-    std::uint64_t id;
-  };
-  void on_goal(GoalHandle handle);
-  void on_cancel(GoalHandle handle);
-  void poll();
-
-  PortRef port_;
-  std::mutex mutex_;
-  bool alive_ = true;
-  std::vector<Tracked> goals_;
   std::uint64_t feedback_sequence_ = 0;
-  std::unique_ptr<Server> server_;
-  ::ros::WallTimer timer_;
+  GripperStateData feedback_;
 };
+
+using Pr2TrajectoryActionServer = PolledActionServer<Pr2JointTrajectoryPolicy>;
+using GripperActionServer = PolledActionServer<Pr2GripperPolicy>;
+extern template class PolledActionServer<Pr2JointTrajectoryPolicy>;
+extern template class PolledActionServer<Pr2GripperPolicy>;
 
 }  // namespace mechsim::ros

@@ -1,52 +1,69 @@
 #pragma once
 // <controller>/follow_joint_trajectory: control_msgs/FollowJointTrajectoryAction over a trajectory
-// controller's goal port. Goals are submitted to the port at once (rejected goals answered with
-// the controller's error code); a wall timer (20 Hz) relays feedback and finishes goal handles
-// as the tick reports them (succeeded, aborted, preempted -> canceled). Conversions between the
-// ROS messages and control/trajectory_msgs.hpp live here too.
+// controller's goal port (PolledActionServer: goals submitted at once, rejected goals answered
+// with the controller's error code; feedback and results relayed at 20 Hz, wall; preempted ->
+// canceled). Conversions between the ROS messages and control/trajectory_msgs.hpp live here too.
 
-#include <memory>
-#include <mutex>
+#include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
-#include <actionlib/server/action_server.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/JointTrajectoryControllerState.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
 #include "ros/bridge/sim_bridge.hpp"
+#include "ros/polled_action_server.hpp"
 
 namespace mechsim::ros {
 
 control::JointTrajectory from_msg(const trajectory_msgs::JointTrajectory& msg);
-control_msgs::JointTrajectoryControllerState to_msg(const control::JointTrajectoryControllerState& state);
+trajectory_msgs::JointTrajectoryPoint to_msg(const control::TrajectoryPointState& point);
 
-class TrajectoryActionServer {
+// A message with the fields of control_msgs/JointTrajectoryControllerState (header, joint_names,
+// desired, actual, error), as the controller state, the PR2's state message and the
+// follow_joint_trajectory feedback have them.
+template <class Msg>
+Msg trajectory_state_msg(const control::JointTrajectoryControllerState& state) {
+  Msg out;
+  out.header.stamp = ::ros::Time(state.stamp);
+  out.joint_names = state.joint_names;
+  out.desired = to_msg(state.desired);
+  out.actual = to_msg(state.actual);
+  out.error = to_msg(state.error);
+  return out;
+}
+
+inline control_msgs::JointTrajectoryControllerState to_msg(const control::JointTrajectoryControllerState& state) {
+  return trajectory_state_msg<control_msgs::JointTrajectoryControllerState>(state);
+}
+
+// follow_joint_trajectory over a control::TrajectoryGoalPort (the goal's tolerances apply).
+class FollowJointTrajectoryPolicy {
  public:
-  TrajectoryActionServer(::ros::NodeHandle nh, const std::string& name, PortRef port);
-  ~TrajectoryActionServer();
-  // After this returns the port is never touched again; active goals are aborted.
-  void shutdown();
+  using Action = control_msgs::FollowJointTrajectoryAction;
+  using Result = control_msgs::FollowJointTrajectoryResult;
+  using Outcome = control::TrajectoryResult;
+
+  PolicySubmission<Result> submit(const PortRef& port, const control_msgs::FollowJointTrajectoryGoal& goal);
+  bool cancel(const PortRef& port, std::uint64_t id) { return cancel_goal(port, id); }
+  std::optional<control::GoalStatus> status(const PortRef& port, std::uint64_t id) { return goal_status(port, id); }
+  Outcome outcome(const PortRef& port, std::uint64_t id) { return goal_result(port, id).value_or(Outcome{}); }
+  bool read_feedback(const PortRef& port, std::uint64_t& goal_id);
+  control_msgs::FollowJointTrajectoryFeedback feedback() const {
+    return trajectory_state_msg<control_msgs::FollowJointTrajectoryFeedback>(feedback_.state);
+  }
+  static Result result(const Outcome& outcome);
+  static std::string text(control::GoalStatus, const Outcome& outcome) { return outcome.error_string; }
+  static Result unloaded_result();
 
  private:
-  using Server = actionlib::ActionServer<control_msgs::FollowJointTrajectoryAction>;
-  using GoalHandle = Server::GoalHandle;
-  struct Tracked {
-    GoalHandle handle;
-    std::uint64_t id;
-  };
-  void on_goal(GoalHandle handle);
-  void on_cancel(GoalHandle handle);
-  void poll();
-
-  PortRef port_;
-  std::mutex mutex_;
-  bool alive_ = true;
-  std::vector<Tracked> goals_;
   std::uint64_t feedback_sequence_ = 0;
   control::FollowJointTrajectoryFeedback feedback_;
-  std::unique_ptr<Server> server_;
-  ::ros::WallTimer timer_;
 };
+
+using TrajectoryActionServer = PolledActionServer<FollowJointTrajectoryPolicy>;
+extern template class PolledActionServer<FollowJointTrajectoryPolicy>;
 
 }  // namespace mechsim::ros
