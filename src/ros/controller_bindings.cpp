@@ -23,7 +23,6 @@
 //                     base_footprint on /tf unless publish_tf is false (the PR2's parameters)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
 // relative names resolve in the controller's namespace. Remapping the full name works too.
-#include <cmath>
 
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
@@ -37,8 +36,9 @@
 #include <pr2_controllers_msgs/JointTrajectoryControllerState.h>
 #include <pr2_controllers_msgs/Pr2GripperCommand.h>
 
-#include "ros/sim_node.hpp"
 #include "ros/pr2_actions.hpp"
+#include "ros/publish_helpers.hpp"
+#include "ros/sim_node.hpp"
 #include "ros/trajectory_action.hpp"
 
 namespace mechsim::ros {
@@ -82,13 +82,6 @@ std::string topic_param(const control::Params& params, const std::string& contro
   return port;
 }
 
-// The first whole multiple of `period` after `time` (s): a rate whose period is not a whole
-// number of ticks (Pr2Odometry's 30 Hz) keeps its average instead of rounding every period up.
-double next_due_after(double time, double period) {
-  if (period <= 0.0) return time;
-  return (std::floor(time / period + 1e-6) + 1.0) * period;
-}
-
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
 // The PR2's controller packages (pr2_controller_manager's types).
@@ -114,14 +107,20 @@ void fill_state(Msg& msg, const JointControllerStateData& d) {
   msg.i_clamp = d.i_clamp;
 }
 
-pr2_controllers_msgs::JointTrajectoryControllerState to_pr2(const control_msgs::JointTrajectoryControllerState& m) {
-  pr2_controllers_msgs::JointTrajectoryControllerState out;
-  out.header = m.header;
-  out.joint_names = m.joint_names;
-  out.desired = m.desired;
-  out.actual = m.actual;
-  out.error = m.error;
-  return out;
+// A command topic of binding `weak`: each message is written to the port with `write(port, msg,
+// &error)` under `mutex` (bindings_mutex_) while the binding is alive; a refused command is
+// warned about at most once a second (per call site: each one is its own instantiation).
+template <class Msg, class B, class Write>
+::ros::Subscriber subscribe_command(::ros::NodeHandle& nh, const std::string& topic, std::mutex& mutex,
+                                    std::weak_ptr<B> weak, const char* what, Write write) {
+  return nh.subscribe<Msg>(topic, 1, [&mutex, weak, what, write](const typename Msg::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto self = weak.lock();
+    std::string error;
+    if (self && self->alive && !write(self->port, *msg, &error)) {
+      ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": " << what << " rejected: " << error);
+    }
+  });
 }
 
 }  // namespace
@@ -158,38 +157,25 @@ void SimNode::bind(const std::string& controller) {
     const std::string topic = topic_param(params, controller, port.name);
     switch (port.type) {
       case PortType::ScalarCommand:
-        b->subscriber = controller_nh.subscribe<std_msgs::Float64>(
-            topic, 1, [this, weak](const std_msgs::Float64::ConstPtr& msg) {
-              std::lock_guard<std::mutex> lock(bindings_mutex_);
-              auto self = weak.lock();
-              std::string error;
-              if (self && self->alive && !write_scalar(self->port, msg->data, &error)) {
-                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": command rejected: " << error);
-              }
+        b->subscriber = subscribe_command<std_msgs::Float64>(
+            controller_nh, topic, bindings_mutex_, weak, "command",
+            [](const PortRef& p, const std_msgs::Float64& msg, std::string* error) {
+              return write_scalar(p, msg.data, error);
             });
         break;
       case PortType::ArrayCommand:
-        b->subscriber = controller_nh.subscribe<std_msgs::Float64MultiArray>(
-            topic, 1, [this, weak](const std_msgs::Float64MultiArray::ConstPtr& msg) {
-              std::lock_guard<std::mutex> lock(bindings_mutex_);
-              auto self = weak.lock();
-              std::string error;
-              if (self && self->alive && !write_array(self->port, msg->data, &error)) {
-                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": command rejected: " << error);
-              }
+        b->subscriber = subscribe_command<std_msgs::Float64MultiArray>(
+            controller_nh, topic, bindings_mutex_, weak, "command",
+            [](const PortRef& p, const std_msgs::Float64MultiArray& msg, std::string* error) {
+              return write_array(p, msg.data, error);
             });
         break;
       case PortType::TwistCommand:
-        b->subscriber = controller_nh.subscribe<geometry_msgs::Twist>(
-            topic, 1, [this, weak](const geometry_msgs::Twist::ConstPtr& msg) {
-              std::lock_guard<std::mutex> lock(bindings_mutex_);
-              auto self = weak.lock();
-              std::string error;
-              if (self && self->alive &&
-                  !write_twist(self->port, msg->linear.x, msg->linear.y, msg->linear.z, msg->angular.x,
-                               msg->angular.y, msg->angular.z, &error)) {
-                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": cmd_vel rejected: " << error);
-              }
+        b->subscriber = subscribe_command<geometry_msgs::Twist>(
+            controller_nh, topic, bindings_mutex_, weak, "cmd_vel",
+            [](const PortRef& p, const geometry_msgs::Twist& msg, std::string* error) {
+              return write_twist(p, msg.linear.x, msg.linear.y, msg.linear.z, msg.angular.x, msg.angular.y,
+                                 msg.angular.z, error);
             });
         break;
       case PortType::JointControllerState: {
@@ -247,14 +233,10 @@ void SimNode::bind(const std::string& controller) {
         }
         break;
       case PortType::GripperCommand:
-        b->subscriber = controller_nh.subscribe<pr2_controllers_msgs::Pr2GripperCommand>(
-            topic, 1, [this, weak](const pr2_controllers_msgs::Pr2GripperCommand::ConstPtr& msg) {
-              std::lock_guard<std::mutex> lock(bindings_mutex_);
-              auto self = weak.lock();
-              std::string error;
-              if (self && self->alive && !write_gripper_command(self->port, msg->position, msg->max_effort, &error)) {
-                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": command rejected: " << error);
-              }
+        b->subscriber = subscribe_command<pr2_controllers_msgs::Pr2GripperCommand>(
+            controller_nh, topic, bindings_mutex_, weak, "command",
+            [](const PortRef& p, const pr2_controllers_msgs::Pr2GripperCommand& msg, std::string* error) {
+              return write_gripper_command(p, msg.position, msg.max_effort, error);
             });
         break;
       case PortType::GripperGoal:
@@ -327,13 +309,7 @@ void SimNode::publish_controller_states(double time) {
       }
       case PortType::JointStates: {
         if (!read_joint_states(b.port, b.joint_states, &b.sequence)) break;
-        sensor_msgs::JointState msg;
-        msg.header.stamp = ::ros::Time(b.joint_states.stamp);
-        msg.name = b.joint_states.names;
-        msg.position = b.joint_states.position;
-        msg.velocity = b.joint_states.velocity;
-        msg.effort = b.joint_states.effort;
-        b.publisher.publish(msg);
+        b.publisher.publish(to_msg(b.joint_states));
         break;
       }
       case PortType::Odometry: {
@@ -376,7 +352,8 @@ void SimNode::publish_controller_states(double time) {
         if (!read_trajectory_state(b.port, b.trajectory_state, &b.sequence)) break;
         b.next_due = next_due_after(time, b.period);
         if (b.pr2) {
-          b.publisher.publish(to_pr2(to_msg(b.trajectory_state)));
+          b.publisher.publish(
+              trajectory_state_msg<pr2_controllers_msgs::JointTrajectoryControllerState>(b.trajectory_state));
         } else {
           b.publisher.publish(to_msg(b.trajectory_state));
         }

@@ -18,6 +18,7 @@
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 
+#include "ros/publish_helpers.hpp"
 #include "ros/sim_node.hpp"
 
 namespace mechsim::ros {
@@ -33,12 +34,6 @@ double period_of(const ::ros::NodeHandle& nh, const char* key, double default_ra
     rate = default_rate;
   }
   return rate > 0.0 ? 1.0 / rate : 0.0;
-}
-
-// The first multiple of `period` after `time` (s); `time` itself when period is 0.
-double next_multiple(double time, double period) {
-  if (period <= 0.0) return time;
-  return (std::floor(time / period + 1e-6) + 1.0) * period;
 }
 
 }  // namespace
@@ -61,18 +56,12 @@ void SimNode::advertise_pr2_outputs() {
 
 void SimNode::publish_pr2_outputs(double time) {
   if (time + 1e-9 >= next_joint_states_) {
-    next_joint_states_ = next_multiple(time, joint_state_period_);
+    next_joint_states_ = next_due_after(time, joint_state_period_);
     bridge_->mechanism_joint_states(pr2_joint_states_);
-    sensor_msgs::JointState msg;
-    msg.header.stamp = ::ros::Time(pr2_joint_states_.stamp);
-    msg.name = pr2_joint_states_.names;
-    msg.position = pr2_joint_states_.position;
-    msg.velocity = pr2_joint_states_.velocity;
-    msg.effort = pr2_joint_states_.effort;
-    pr2_joint_states_pub_.publish(msg);
+    pr2_joint_states_pub_.publish(to_msg(pr2_joint_states_));
   }
   if (time + 1e-9 >= next_statistics_) {
-    next_statistics_ = next_multiple(time, statistics_period_);
+    next_statistics_ = next_due_after(time, statistics_period_);
     bridge_->take_mechanism_statistics(pr2_statistics_);
     const ::ros::Time stamp(pr2_statistics_.stamp);
     pr2_mechanism_msgs::MechanismStatistics msg;
