@@ -4,10 +4,9 @@
 #include "control/controller_params.hpp"
 
 namespace mechsim::control {
-namespace {
 
-void fill_state(JointControllerState& s, double time, double period, double set_point, double value, double value_dot,
-                double error, double command, const PidGains& gains) noexcept {
+void fill_joint_controller_state(JointControllerState& s, double time, double period, double set_point, double value,
+                                 double value_dot, double error, double command, const PidGains& gains) noexcept {
   s.stamp = time;
   s.set_point = set_point;
   s.process_value = value;
@@ -17,8 +16,6 @@ void fill_state(JointControllerState& s, double time, double period, double set_
   s.command = command;
   s.gains = gains;
 }
-
-}  // namespace
 
 // ---------------------------------------------------------------- position
 
@@ -47,7 +44,7 @@ UpdateStatus JointPositionPidController::update(double time, double period) {
   joint_.set_command(effort);
   const double reported_error = flavour_ == ControllerFlavour::Pr2 ? -error : error;
   state_.publish_from_rt([&](JointControllerState& s) {
-    fill_state(s, time, period, set_point, position, joint_.velocity(), reported_error, effort, pid_.rt_gains());
+    fill_joint_controller_state(s, time, period, set_point, position, joint_.velocity(), reported_error, effort, pid_.rt_gains());
   });
   return UpdateStatus::Ok();
 }
@@ -75,7 +72,7 @@ UpdateStatus JointVelocityPidController::update(double time, double period) {
   joint_.set_command(effort);
   const double reported_error = flavour_ == ControllerFlavour::Pr2 ? -error : error;
   state_.publish_from_rt([&](JointControllerState& s) {
-    fill_state(s, time, period, set_point, velocity, 0.0, reported_error, effort, pid_.rt_gains());
+    fill_joint_controller_state(s, time, period, set_point, velocity, 0.0, reported_error, effort, pid_.rt_gains());
   });
   return UpdateStatus::Ok();
 }
@@ -127,7 +124,7 @@ UpdateStatus JointGroupPositionPidController::update(double time, double period)
     for (std::size_t i = 0; i < joints_.size(); ++i) {
       const double set_point = enforce_position_limits(joints_[i].info(), commands[i]);
       const double position = joints_[i].position();
-      fill_state(s.joints[i], time, period, set_point, position, joints_[i].velocity(),
+      fill_joint_controller_state(s.joints[i], time, period, set_point, position, joints_[i].velocity(),
                  position_error(joints_[i].info(), position, set_point), scratch_[i], pids_[i]->rt_gains());
     }
   });

@@ -19,6 +19,11 @@ namespace mechsim::control {
 
 enum class ControllerFlavour : std::uint8_t { RosControl, Pr2 };
 
+// Fills one joint's controller state: time and period in s, the rest in the joint's units (set point and
+// process value: position or velocity; command: effort).
+void fill_joint_controller_state(JointControllerState& s, double time, double period, double set_point, double value,
+                                 double value_dot, double error, double command, const PidGains& gains) noexcept;
+
 class JointPositionPidController : public Controller {
  public:
   explicit JointPositionPidController(ControllerFlavour flavour = ControllerFlavour::RosControl) : flavour_(flavour) {}

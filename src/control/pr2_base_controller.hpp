@@ -59,12 +59,11 @@
 //     caster_names: fl_caster_rotation_link fr_caster_rotation_link bl_caster_rotation_link br_caster_rotation_link
 // (gains to be tuned in simulation; the values above are a starting point, not the PR2's).
 
-#include <memory>
 #include <vector>
 
 #include "control/controller.hpp"
-#include "control/pid.hpp"
 #include "control/pr2_base_params.hpp"
+#include "control/steered_drive.hpp"
 
 namespace mechsim::control {
 
@@ -89,7 +88,7 @@ class Pr2BaseController : public Controller {
   std::vector<Port*> ports() override;
 
   TwistCommandPort& command_port() { return command_; }
-  StatePort<JointGroupControllerState>& state_port() { return state_; }
+  StatePort<JointGroupControllerState>& state_port() { return drive_.state_port(); }
   StatePort<Pr2BaseStatus>& status_port() { return status_; }
   const Pr2BaseConfig& config() const { return config_; }
 
@@ -98,30 +97,18 @@ class Pr2BaseController : public Controller {
   void publish(double time, double period) noexcept;
 
   Pr2BaseConfig config_;
-  std::vector<JointHandle> casters_;
-  std::vector<JointHandle> wheels_;
-  std::vector<std::unique_ptr<Pid>> pids_;  // casters, then wheels
-  std::vector<std::unique_ptr<PidGainsPort>> gains_;
+  SteeredDrive drive_;  // casters (steering), then wheels: PIDs, set points, efforts, "state"
+  TwistCommandTimeout command_timeout_;
 
   // Real-time working state, sized at init.
   std::vector<double> measured_headings_;  // rad
   std::vector<double> target_headings_;    // rad
-  std::vector<double> wheel_setpoints_;    // rad/s, joint
-  std::vector<double> efforts_;            // N m, casters then wheels
-  Twist command_value_;
   PlanarTwist applied_;
-  std::uint64_t last_command_seq_ = 0;
-  double last_command_time_ = 0.0;
-  bool timed_out_ = false;
   double max_caster_error_ = 0.0;
   int reversed_ = 0;
 
   TwistCommandPort command_{"command"};
-  StatePort<JointGroupControllerState> state_{"state"};
   StatePort<Pr2BaseStatus> status_{"status"};
 };
-
-// Gains for `joint` from `params`: the `<joint>` namespace when it holds a `p`, else `fallback`.
-void init_joint_pid(Pid& pid, const Params& params, const std::string& joint, const char* fallback);
 
 }  // namespace mechsim::control

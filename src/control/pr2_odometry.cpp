@@ -38,32 +38,24 @@ bool Pr2OdometryController::init(RobotHardware& hardware, const Params& params, 
   if (!std::isfinite(initial_.x) || !std::isfinite(initial_.y) || !std::isfinite(initial_.yaw)) {
     throw ControllerConfigError("parameter " + join_param_path(params.path(), "odom") + ": the initial pose is not finite");
   }
-  pose_ = initial_;
+  odometry_.pose = initial_;
 
   headings_.assign(casters_.size(), 0.0);
   rates_.assign(casters_.size(), 0.0);
   speeds_.assign(wheels_.size(), 0.0);
   scratch_.resize(wheels_.size());
 
-  OdometrySnapshot odom;
-  odom.frame_id = params.get<std::string>("odom_frame", "odom");
-  odom.child_frame_id = params.get<std::string>("base_footprint_frame", "base_footprint");
+  std::string frame = params.get<std::string>("odom_frame", "odom");
+  std::string child_frame = params.get<std::string>("base_footprint_frame", "base_footprint");
   const double sx = params.get<double>("sigma_x", 0.002), sy = params.get<double>("sigma_y", 0.002);
   const double st = params.get<double>("sigma_theta", 0.017);
-  const double diag[6] = {sx * sx, sy * sy, 1e6, 1e6, 1e6, st * st};
-  for (std::size_t i = 0; i < 6; ++i) {
-    odom.pose_covariance[i * 7] = diag[i];
-    odom.twist_covariance[i * 7] = diag[i];
-  }
-  odom.x = pose_.x;
-  odom.y = pose_.y;
-  odom.yaw = pose_.yaw;
-  odom_.init(odom);
+  const std::array<double, 6> diag = {sx * sx, sy * sy, 1e6, 1e6, 1e6, st * st};
+  odom_.init(odometry_prototype(std::move(frame), std::move(child_frame), diag, diag, odometry_.pose));
   return true;
 }
 
 UpdateStatus Pr2OdometryController::update(double time, double period) {
-  if (reset_.exchange(false, std::memory_order_acq_rel)) pose_ = initial_;
+  if (reset_.exchange(false, std::memory_order_acq_rel)) odometry_.pose = initial_;
   if (!(period > 0.0)) return UpdateStatus::Ok();
   const Pr2BaseKinematics& k = geometry_.kinematics;
   bool finite = true;
@@ -77,21 +69,10 @@ UpdateStatus Pr2OdometryController::update(double time, double period) {
     finite = finite && std::isfinite(speeds_[w]);
   }
   PlanarTwist twist;
-  if (finite && estimate_base_twist(k, headings_, rates_, speeds_, scratch_, twist, iterations_, weight_, &residual_)) {
-    twist_ = twist;
-    valid_ = true;
-    pose_ = integrate_pose(pose_, twist_, period);
+  if (finite && estimate_base_twist(k, headings_, rates_, speeds_, scratch_, twist, iterations_, weight_, &odometry_.residual)) {
+    odometry_.advance(twist, period);
   }
-  odom_.publish_from_rt([&](OdometrySnapshot& o) {
-    o.stamp = time;
-    o.x = pose_.x;
-    o.y = pose_.y;
-    o.yaw = pose_.yaw;
-    o.linear = {twist_.vx, twist_.vy, 0.0};
-    o.angular = {0.0, 0.0, twist_.wz};
-    o.residual = residual_;
-    o.valid = valid_;
-  });
+  odometry_.publish(odom_, time);
   return UpdateStatus::Ok();  // a non-finite joint state holds the pose (the tick goes on)
 }
 

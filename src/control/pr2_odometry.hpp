@@ -30,6 +30,7 @@
 #include "control/controller.hpp"
 #include "control/pr2_base_params.hpp"
 #include "control/rover_drive_ports.hpp"
+#include "control/steered_drive.hpp"  // PlanarOdometry
 
 namespace mechsim::control {
 
@@ -56,10 +57,7 @@ class Pr2OdometryController : public Controller {
   std::vector<double> rates_;     // rad/s
   std::vector<double> speeds_;    // m/s
   Pr2OdometryScratch scratch_;
-  PlanarPose pose_;
-  PlanarTwist twist_;
-  double residual_ = 0.0;
-  bool valid_ = false;
+  PlanarOdometry odometry_;
   std::atomic<bool> reset_{false};
 
   StatePort<OdometrySnapshot> odom_{"odom"};
