@@ -6,93 +6,53 @@
 #include "control/angles.hpp"
 
 namespace mechsim::control {
-namespace {
-
-double clamp_abs(double v, double limit) noexcept { return std::fmin(std::fmax(v, -limit), limit); }
-
-// Moves `from` towards `to` by at most `step`.
-double step_towards(double from, double to, double step) noexcept { return from + clamp_abs(to - from, step); }
-
-}  // namespace
 
 bool RoverDriveController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
   // Claim first, so that an unknown joint is reported as such (naming its parameter) before
   // any geometry parameter that would mention it.
-  const auto steering = read_rover_joint_list(params, "steering_joints", 0);
-  const auto wheels = read_rover_joint_list(params, "wheel_joints", 2);
-  const auto claim = [&](const std::vector<std::string>& names, const char* key, std::vector<JointHandle>& out) {
-    const std::string path = join_param_path(params.path(), key);
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      out.push_back(hardware.claim_joint(names[i], HardwareInterface::Effort, path + "[" + std::to_string(i) + "]"));
-    }
-  };
-  claim(steering, "steering_joints", steering_);
-  claim(wheels, "wheel_joints", wheels_);
+  drive_.claim(hardware, params, "steering_joints", 0, "wheel_joints", 2);
   config_ = read_rover_drive_config(params, hardware);
 
-  for (std::size_t i = 0; i < steering_.size() + wheels_.size(); ++i) {
-    pids_.push_back(std::make_unique<Pid>());
-    pids_.back()->init(params, i < steering_.size() ? "steering_pid" : "wheel_pid");
-  }
-  std::vector<std::string> names = steering;
-  names.insert(names.end(), wheels.begin(), wheels.end());
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    gains_.push_back(std::make_unique<PidGainsPort>("gains/" + names[i], pids_[i].get()));
-  }
+  drive_.init_pids(params, "steering_pid", "wheel_pid", SteeredDrive::Gains::Shared);
 
-  const std::size_t ns = steering_.size(), nw = wheels_.size();
+  const std::size_t ns = drive_.steering_count(), nw = drive_.wheel_count();
   measured_headings_.assign(ns, 0.0);
   target_headings_.assign(ns, 0.0);
   setpoint_headings_.assign(ns, 0.0);
   rolling_speeds_.assign(nw, 0.0);
-  wheel_setpoints_.assign(nw, 0.0);
   measured_speeds_.assign(nw, 0.0);
-  efforts_.assign(ns + nw, 0.0);
   rolling_weights_.assign(nw, 1.0);
   lateral_weights_.assign(nw, 1.0);
   work_rolling_.assign(nw, 1.0);
   work_lateral_.assign(nw, 1.0);
   sensing_.assign(nw, 0);
 
-  JointGroupControllerState prototype;
-  prototype.joint_names = names;
-  prototype.joints.resize(names.size());
-  state_.init(prototype);
-  OdometrySnapshot odom;
-  odom.frame_id = config_.odom_frame_id;
-  odom.child_frame_id = config_.base_frame_id;
-  for (std::size_t i = 0; i < 6; ++i) {
-    odom.pose_covariance[i * 7] = config_.pose_covariance_diagonal[i];
-    odom.twist_covariance[i * 7] = config_.twist_covariance_diagonal[i];
-  }
-  odom_.init(odom);
+  odom_.init(odometry_prototype(config_.odom_frame_id, config_.base_frame_id, config_.pose_covariance_diagonal,
+                                config_.twist_covariance_diagonal));
   status_.init(RoverDriveStatus{});
   return true;
 }
 
 std::vector<Port*> RoverDriveController::ports() {
-  std::vector<Port*> out{&command_, &mode_, &odom_, &state_, &status_};
-  for (auto& g : gains_) out.push_back(g.get());
+  std::vector<Port*> out{&command_, &mode_, &odom_, &drive_.state_port(), &status_};
+  drive_.append_gains_ports(out);
   return out;
 }
 
 void RoverDriveController::starting(double time) {
   const RoverKinematics& k = config_.kinematics;
-  for (std::size_t s = 0; s < steering_.size(); ++s) {
-    measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * steering_[s].position());
+  for (std::size_t s = 0; s < drive_.steering_count(); ++s) {
+    measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * drive_.steering(s).position());
     target_headings_[s] = measured_headings_[s];
     setpoint_headings_[s] = measured_headings_[s];
   }
-  command_.reset_from_rt(Twist{});
-  last_command_seq_ = command_.accepted();
-  last_command_time_ = time;
-  timed_out_ = false;
+  command_timeout_.start(command_, time);
   applied_ = {};
   heading_hold_ = false;
   heading_integral_ = 0.0;
   yaw_correction_ = 0.0;
   crab_sensing_ = false;
-  for (auto& pid : pids_) pid->reset();
+  drive_.reset_pids();
 }
 
 PlanarTwist RoverDriveController::limit_command(const PlanarTwist& target, double period) const noexcept {
@@ -106,18 +66,10 @@ PlanarTwist RoverDriveController::limit_command(const PlanarTwist& target, doubl
 UpdateStatus RoverDriveController::update(double time, double period) {
   if (!(period > 0.0)) return UpdateStatus::Ok();  // nothing to integrate; the commands stay
   const RoverKinematics& k = config_.kinematics;
-  const std::size_t ns = steering_.size(), nw = wheels_.size();
+  const std::size_t ns = drive_.steering_count(), nw = drive_.wheel_count();
 
   // 1-2. The command, its timeout and limits.
-  command_value_ = command_.read_from_rt();
-  const Twist& command = command_value_;
-  const std::uint64_t seq = command_.accepted();
-  if (seq != last_command_seq_) {
-    last_command_seq_ = seq;
-    last_command_time_ = time;
-  }
-  timed_out_ = config_.cmd_vel_timeout > 0.0 && time - last_command_time_ > config_.cmd_vel_timeout;
-  const PlanarTwist target = timed_out_ ? PlanarTwist{} : PlanarTwist{command.linear.x, command.linear.y, command.angular.z};
+  const PlanarTwist target = command_timeout_.read(command_, time, config_.cmd_vel_timeout);
   applied_ = limit_command(target, period);
 
   // 3-4. Mode and inverse kinematics.
@@ -125,7 +77,7 @@ UpdateStatus RoverDriveController::update(double time, double period) {
   choice_ = select_drive_mode(k, requested_mode_, applied_);
   if (choice_.unsupported) ++unsupported_count_;
   for (std::size_t s = 0; s < ns; ++s) {
-    measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * steering_[s].position());
+    measured_headings_[s] = normalize_angle(k.steering_axis_signs[s] * drive_.steering(s).position());
   }
   const bool crab = choice_.mode == DriveMode::Crab;
   const bool moving = std::hypot(choice_.twist.vx, choice_.twist.vy) > 1e-6;
@@ -158,30 +110,19 @@ UpdateStatus RoverDriveController::update(double time, double period) {
     alignment_scale_ = (config_.steering_stop_error - max_steering_error_) /
                        (config_.steering_stop_error - config_.steering_tolerance);
   }
+  const std::span<double> wheel_setpoints = drive_.wheel_setpoints();
   double fastest = 0.0;
   for (std::size_t i = 0; i < nw; ++i) {
-    wheel_setpoints_[i] = k.wheels[i].axis_sign * rolling_speeds_[i] / k.wheel_radius * alignment_scale_;
-    fastest = std::fmax(fastest, std::abs(wheel_setpoints_[i]));
+    wheel_setpoints[i] = k.wheels[i].axis_sign * rolling_speeds_[i] / k.wheel_radius * alignment_scale_;
+    fastest = std::fmax(fastest, std::abs(wheel_setpoints[i]));
   }
   wheel_speed_scale_ = fastest > config_.max_wheel_speed ? config_.max_wheel_speed / fastest : 1.0;
-  for (double& w : wheel_setpoints_) w *= wheel_speed_scale_;
+  for (double& w : wheel_setpoints) w *= wheel_speed_scale_;
 
   // 7. PIDs.
-  for (std::size_t s = 0; s < ns; ++s) {
-    const double set_point = k.steering_axis_signs[s] * setpoint_headings_[s];
-    efforts_[s] = pids_[s]->compute_command(shortest_angular_distance(steering_[s].position(), set_point), period);
-    steering_[s].set_command(efforts_[s]);
-  }
-  for (std::size_t i = 0; i < nw; ++i) {
-    if (sensing_[i] != 0) {
-      // Unpowered: the wheel rolls with the ground and its speed measures it.
-      pids_[ns + i]->reset();
-      efforts_[ns + i] = 0.0;
-    } else {
-      efforts_[ns + i] = pids_[ns + i]->compute_command(wheel_setpoints_[i] - wheels_[i].velocity(), period);
-    }
-    wheels_[i].set_command(efforts_[ns + i]);
-  }
+  const std::span<double> steering_setpoints = drive_.steering_setpoints();
+  for (std::size_t s = 0; s < ns; ++s) steering_setpoints[s] = k.steering_axis_signs[s] * setpoint_headings_[s];
+  drive_.update(period, sensing_);
 
   // 8. Odometry, then the snapshots.
   update_odometry(time, period);
@@ -213,7 +154,7 @@ void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool m
   // Off unless crabbing (moving) without a commanded rotation; each crab motion holds the
   // heading it starts with.
   const bool wz_commanded = std::abs(target.wz) > 1e-9;
-  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !odom_valid_ || !moving) {
+  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !odometry_.valid || !moving) {
     heading_hold_ = false;
     heading_integral_ = 0.0;
     yaw_correction_ = 0.0;
@@ -221,10 +162,10 @@ void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool m
   }
   if (!heading_hold_) {
     heading_hold_ = true;
-    held_yaw_ = pose_.yaw;
+    held_yaw_ = odometry_.pose.yaw;
     heading_integral_ = 0.0;
   }
-  const double error = shortest_angular_distance(pose_.yaw, held_yaw_);
+  const double error = shortest_angular_distance(odometry_.pose.yaw, held_yaw_);
   if (!std::isfinite(error)) {
     yaw_correction_ = 0.0;
     return;
@@ -240,12 +181,12 @@ void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool m
 void RoverDriveController::update_odometry(double /*time*/, double period) noexcept {
   const RoverKinematics& k = config_.kinematics;
   if (reset_odometry_.exchange(false, std::memory_order_acq_rel)) {
-    pose_ = {};
+    odometry_.pose = {};
     heading_hold_ = false;  // the held yaw was in the old frame: hold the new one
   }
-  const bool crab = choice_.mode == DriveMode::Crab && !steering_.empty();
-  for (std::size_t i = 0; i < wheels_.size(); ++i) {
-    measured_speeds_[i] = k.wheels[i].axis_sign * wheels_[i].velocity() * k.wheel_radius;
+  const bool crab = choice_.mode == DriveMode::Crab && drive_.steering_count() > 0;
+  for (std::size_t i = 0; i < drive_.wheel_count(); ++i) {
+    measured_speeds_[i] = k.wheels[i].axis_sign * drive_.wheel(i).velocity() * k.wheel_radius;
     const bool fixed = k.wheels[i].steering < 0;
     // In crab the fixed wheels slide sideways by design; their no-side-slip rows would be wrong.
     lateral_weights_[i] = crab && fixed ? 0.0 : crab_sensing_ ? config_.crab_lateral_weight : 1.0;
@@ -253,56 +194,21 @@ void RoverDriveController::update_odometry(double /*time*/, double period) noexc
   }
   PlanarTwist twist;
   if (estimate_twist_robust(k, measured_headings_, measured_speeds_, rolling_weights_, lateral_weights_,
-                            config_.odometry_robust, work_rolling_, work_lateral_, twist, &odom_residual_)) {
-    odom_twist_ = twist;
-    odom_valid_ = true;
-    pose_ = integrate_pose(pose_, odom_twist_, period);
+                            config_.odometry_robust, work_rolling_, work_lateral_, twist, &odometry_.residual)) {
+    odometry_.advance(twist, period);
   }
 }
 
 void RoverDriveController::publish(double time, double period) noexcept {
-  const RoverKinematics& k = config_.kinematics;
-  const std::size_t ns = steering_.size();
-  state_.publish_from_rt([&](JointGroupControllerState& s) {
-    s.stamp = time;
-    for (std::size_t j = 0; j < s.joints.size(); ++j) {
-      JointControllerState& js = s.joints[j];
-      js.stamp = time;
-      js.time_step = period;
-      js.command = efforts_[j];
-      js.gains = pids_[j]->rt_gains();
-      if (j < ns) {
-        const JointHandle& h = steering_[j];
-        js.set_point = k.steering_axis_signs[j] * setpoint_headings_[j];
-        js.process_value = h.position();
-        js.process_value_dot = h.velocity();
-        js.error = shortest_angular_distance(h.position(), js.set_point);
-      } else {
-        const JointHandle& h = wheels_[j - ns];
-        js.set_point = wheel_setpoints_[j - ns];
-        js.process_value = h.velocity();
-        js.process_value_dot = 0.0;
-        js.error = js.set_point - js.process_value;
-      }
-    }
-  });
-  odom_.publish_from_rt([&](OdometrySnapshot& o) {
-    o.stamp = time;
-    o.x = pose_.x;
-    o.y = pose_.y;
-    o.yaw = pose_.yaw;
-    o.linear = {odom_twist_.vx, odom_twist_.vy, 0.0};
-    o.angular = {0.0, 0.0, odom_twist_.wz};
-    o.residual = odom_residual_;
-    o.valid = odom_valid_;
-  });
+  drive_.publish_state(time, period);
+  odometry_.publish(odom_, time);
   status_.publish_from_rt([&](RoverDriveStatus& st) {
     st.stamp = time;
     st.requested_mode = requested_mode_;
     st.active_mode = choice_.mode;
-    st.command = command_value_;
+    st.command = command_timeout_.value();
     st.applied = choice_.twist;
-    st.timed_out = timed_out_;
+    st.timed_out = command_timeout_.timed_out();
     st.unsupported = choice_.unsupported;
     st.unsupported_count = unsupported_count_;
     st.alignment_scale = alignment_scale_;

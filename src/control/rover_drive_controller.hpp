@@ -106,13 +106,12 @@
 // odometry pose persists across restarts (reset_odometry() zeroes it).
 
 #include <atomic>
-#include <memory>
 #include <vector>
 
 #include "control/controller.hpp"
-#include "control/pid.hpp"
 #include "control/rover_drive_params.hpp"
 #include "control/rover_drive_ports.hpp"
+#include "control/steered_drive.hpp"
 
 namespace mechsim::control {
 
@@ -126,7 +125,7 @@ class RoverDriveController : public Controller {
   TwistCommandPort& command_port() { return command_; }
   DriveModeCommandPort& mode_port() { return mode_; }
   StatePort<OdometrySnapshot>& odometry_port() { return odom_; }
-  StatePort<JointGroupControllerState>& state_port() { return state_; }
+  StatePort<JointGroupControllerState>& state_port() { return drive_.state_port(); }
   StatePort<RoverDriveStatus>& status_port() { return status_; }
   const RoverDriveConfig& config() const { return config_; }
   // Any thread: the next update() puts the odometry pose back to (0, 0, 0).
@@ -140,26 +139,18 @@ class RoverDriveController : public Controller {
   void publish(double time, double period) noexcept;
 
   RoverDriveConfig config_;
-  std::vector<JointHandle> steering_;
-  std::vector<JointHandle> wheels_;
-  std::vector<std::unique_ptr<Pid>> pids_;  // steering joints, then wheels
-  std::vector<std::unique_ptr<PidGainsPort>> gains_;
+  SteeredDrive drive_;  // joints, PIDs, wheel set points, efforts, "state"
+  TwistCommandTimeout command_timeout_;
 
   // Real-time working state, sized at init.
   std::vector<double> measured_headings_;  // rad
   std::vector<double> target_headings_;    // rad, from the kinematics
   std::vector<double> setpoint_headings_;  // rad, rate limited
   std::vector<double> rolling_speeds_;     // m/s, target
-  std::vector<double> wheel_setpoints_;    // rad/s, joint
   std::vector<double> measured_speeds_;    // m/s, rolling
-  std::vector<double> efforts_;            // N m, steering then wheels
-  Twist command_value_;                    // this tick's command as read
   DriveMode requested_mode_ = DriveMode::Auto;
   PlanarTwist applied_;                    // after limits, before the mode
   ModeChoice choice_;
-  std::uint64_t last_command_seq_ = 0;
-  double last_command_time_ = 0.0;
-  bool timed_out_ = false;
   std::uint64_t unsupported_count_ = 0;
   double alignment_scale_ = 1.0;
   double max_steering_error_ = 0.0;
@@ -174,16 +165,12 @@ class RoverDriveController : public Controller {
   double held_yaw_ = 0.0;                  // rad, odometry frame
   double heading_integral_ = 0.0;          // rad s
   double yaw_correction_ = 0.0;            // rad/s
-  PlanarPose pose_;
-  PlanarTwist odom_twist_;
-  double odom_residual_ = 0.0;
-  bool odom_valid_ = false;
+  PlanarOdometry odometry_;
   std::atomic<bool> reset_odometry_{false};
 
   TwistCommandPort command_{"cmd_vel"};
   DriveModeCommandPort mode_{"mode"};
   StatePort<OdometrySnapshot> odom_{"odom"};
-  StatePort<JointGroupControllerState> state_{"state"};
   StatePort<RoverDriveStatus> status_{"drive_status"};
 };
 
