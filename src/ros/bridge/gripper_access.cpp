@@ -1,22 +1,20 @@
 // The PR2 gripper's ports through the opaque PortRef (C++20 side of the bridge).
 #include "control/pr2_gripper_ports.hpp"
+#include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 
 namespace mechsim::ros {
 
-namespace {
+using bridge_detail::port_as;
 
-template <class P>
-P* as(const PortRef& ref) {
-  return dynamic_cast<P*>(static_cast<control::Port*>(ref.port));
-}
+namespace {
 
 GripperStateData to_data(const control::GripperResult& r) { return {r.position, r.effort, r.stalled, r.reached_goal}; }
 
 }  // namespace
 
 bool write_gripper_command(const PortRef& port, double position, double max_effort, std::string* error) {
-  auto* p = as<control::GripperCommandPort>(port);
+  auto* p = port_as<control::GripperCommandPort>(port);
   if (!p) {
     if (error) *error = "port '" + port.name + "' of '" + port.controller + "' takes no gripper commands";
     return false;
@@ -25,7 +23,7 @@ bool write_gripper_command(const PortRef& port, double position, double max_effo
 }
 
 bool submit_gripper_goal(const PortRef& port, double position, double max_effort, GripperTicket& ticket) {
-  auto* p = as<control::GripperGoalPort>(port);
+  auto* p = port_as<control::GripperGoalPort>(port);
   if (!p) return false;
   const control::GripperSubmission s = p->submit({position, max_effort});
   ticket.id = s.id;
@@ -35,18 +33,15 @@ bool submit_gripper_goal(const PortRef& port, double position, double max_effort
 }
 
 bool cancel_gripper_goal(const PortRef& port, std::uint64_t id) {
-  auto* p = as<control::GripperGoalPort>(port);
-  return p && p->cancel(id);
+  return bridge_detail::cancel_goal_on<control::GripperGoalPort>(port, id);
 }
 
 std::optional<control::GoalStatus> gripper_goal_status(const PortRef& port, std::uint64_t id) {
-  auto* p = as<control::GripperGoalPort>(port);
-  if (!p) return std::nullopt;
-  return p->status(id);
+  return bridge_detail::goal_status_on<control::GripperGoalPort>(port, id);
 }
 
 std::optional<GripperStateData> gripper_goal_result(const PortRef& port, std::uint64_t id) {
-  auto* p = as<control::GripperGoalPort>(port);
+  auto* p = port_as<control::GripperGoalPort>(port);
   if (!p) return std::nullopt;
   const auto r = p->result(id);
   if (!r) return std::nullopt;
@@ -55,11 +50,8 @@ std::optional<GripperStateData> gripper_goal_result(const PortRef& port, std::ui
 
 bool read_gripper_feedback(const PortRef& port, GripperStateData& out, std::uint64_t* goal_id,
                            std::uint64_t* sequence) {
-  const auto* p = as<control::GripperGoalPort>(port);
-  if (!p) return false;
-  const std::uint64_t seq = p->feedback_sequence();
-  if (seq == 0 || (sequence && seq == *sequence)) return false;
-  if (sequence) *sequence = seq;
+  const auto* p = port_as<control::GripperGoalPort>(port);
+  if (!p || !bridge_detail::take_newer(p->feedback_sequence(), sequence)) return false;
   const control::GripperFeedback f = p->feedback();
   out = to_data(f.state);
   if (goal_id) *goal_id = f.goal_id;

@@ -3,45 +3,27 @@
 
 #include "control/ports.hpp"
 #include "control/rover_drive_ports.hpp"
+#include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 
 namespace mechsim::ros {
 
-namespace {
-
-template <class P>
-P* as(const PortRef& ref, std::string* error) {
-  auto* p = dynamic_cast<P*>(static_cast<control::Port*>(ref.port));
-  if (!p && error) *error = "port '" + ref.name + "' of controller '" + ref.controller + "' has another type";
-  return p;
-}
-
-// True when the state port has a snapshot newer than *sequence.
-template <class T>
-const control::StatePort<T>* fresh(const PortRef& ref, std::uint64_t* sequence) {
-  auto* p = dynamic_cast<const control::StatePort<T>*>(static_cast<control::Port*>(ref.port));
-  if (!p) return nullptr;
-  const std::uint64_t seq = p->sequence();
-  if (seq == 0 || (sequence && seq == *sequence)) return nullptr;
-  if (sequence) *sequence = seq;
-  return p;
-}
-
-}  // namespace
+using bridge_detail::fresh_state;
+using bridge_detail::port_as;
 
 bool write_scalar(const PortRef& port, double value, std::string* error) {
-  auto* p = as<control::ScalarCommandPort>(port, error);
+  auto* p = port_as<control::ScalarCommandPort>(port, error);
   return p && p->write(value, error);
 }
 
 bool write_array(const PortRef& port, const std::vector<double>& values, std::string* error) {
-  auto* p = as<control::ArrayCommandPort>(port, error);
+  auto* p = port_as<control::ArrayCommandPort>(port, error);
   return p && p->write(std::span<const double>(values.data(), values.size()), error);
 }
 
 bool write_twist(const PortRef& port, double vx, double vy, double vz, double wx, double wy, double wz,
                  std::string* error) {
-  auto* p = as<control::TwistCommandPort>(port, error);
+  auto* p = port_as<control::TwistCommandPort>(port, error);
   if (!p) return false;
   control::Twist t;
   t.linear = {vx, vy, vz};
@@ -50,7 +32,7 @@ bool write_twist(const PortRef& port, double vx, double vy, double vz, double wx
 }
 
 bool read_joint_controller_state(const PortRef& port, JointControllerStateData& out, std::uint64_t* sequence) {
-  const auto* p = fresh<control::JointControllerState>(port, sequence);
+  const auto* p = fresh_state<control::JointControllerState>(port, sequence);
   if (!p) return false;
   const control::JointControllerState s = p->read();
   out.stamp = s.stamp;
@@ -69,7 +51,7 @@ bool read_joint_controller_state(const PortRef& port, JointControllerStateData& 
 }
 
 bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t* sequence) {
-  const auto* p = fresh<control::JointStateSnapshot>(port, sequence);
+  const auto* p = fresh_state<control::JointStateSnapshot>(port, sequence);
   if (!p) return false;
   control::JointStateSnapshot s = p->read();
   out.stamp = s.stamp;
@@ -81,7 +63,7 @@ bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t*
 }
 
 bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequence) {
-  const auto* p = fresh<control::OdometrySnapshot>(port, sequence);
+  const auto* p = fresh_state<control::OdometrySnapshot>(port, sequence);
   if (!p) return false;
   const control::OdometrySnapshot s = p->read();
   out.stamp = s.stamp;

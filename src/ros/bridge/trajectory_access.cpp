@@ -1,20 +1,14 @@
 // Trajectory ports through the opaque PortRef (C++20 side of the bridge).
 #include "control/trajectory_goal.hpp"
+#include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 
 namespace mechsim::ros {
 
-namespace {
-
-template <class P>
-P* as(const PortRef& ref) {
-  return dynamic_cast<P*>(static_cast<control::Port*>(ref.port));
-}
-
-}  // namespace
+using bridge_detail::port_as;
 
 bool write_trajectory(const PortRef& port, const control::JointTrajectory& trajectory, std::string* error) {
-  auto* p = as<control::TrajectoryCommandPort>(port);
+  auto* p = port_as<control::TrajectoryCommandPort>(port);
   if (!p) {
     if (error) *error = "port '" + port.name + "' of '" + port.controller + "' takes no trajectories";
     return false;
@@ -24,17 +18,14 @@ bool write_trajectory(const PortRef& port, const control::JointTrajectory& traje
 
 bool read_trajectory_state(const PortRef& port, control::JointTrajectoryControllerState& out,
                            std::uint64_t* sequence) {
-  const auto* p = as<control::StatePort<control::JointTrajectoryControllerState>>(port);
+  const auto* p = bridge_detail::fresh_state<control::JointTrajectoryControllerState>(port, sequence);
   if (!p) return false;
-  const std::uint64_t seq = p->sequence();
-  if (seq == 0 || (sequence && seq == *sequence)) return false;
-  if (sequence) *sequence = seq;
   out = p->read();
   return true;
 }
 
 bool submit_goal(const PortRef& port, const control::FollowJointTrajectoryGoal& goal, GoalTicket& ticket) {
-  auto* p = as<control::TrajectoryGoalPort>(port);
+  auto* p = port_as<control::TrajectoryGoalPort>(port);
   if (!p) return false;
   const control::GoalSubmission s = p->submit(goal);
   ticket.id = s.id;
@@ -44,28 +35,22 @@ bool submit_goal(const PortRef& port, const control::FollowJointTrajectoryGoal& 
 }
 
 bool cancel_goal(const PortRef& port, std::uint64_t id) {
-  auto* p = as<control::TrajectoryGoalPort>(port);
-  return p && p->cancel(id);
+  return bridge_detail::cancel_goal_on<control::TrajectoryGoalPort>(port, id);
 }
 
 std::optional<control::GoalStatus> goal_status(const PortRef& port, std::uint64_t id) {
-  auto* p = as<control::TrajectoryGoalPort>(port);
-  if (!p) return std::nullopt;
-  return p->status(id);
+  return bridge_detail::goal_status_on<control::TrajectoryGoalPort>(port, id);
 }
 
 std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::uint64_t id) {
-  auto* p = as<control::TrajectoryGoalPort>(port);
+  auto* p = port_as<control::TrajectoryGoalPort>(port);
   if (!p) return std::nullopt;
   return p->result(id);
 }
 
 bool read_goal_feedback(const PortRef& port, control::FollowJointTrajectoryFeedback& out, std::uint64_t* sequence) {
-  const auto* p = as<control::TrajectoryGoalPort>(port);
-  if (!p) return false;
-  const std::uint64_t seq = p->feedback_sequence();
-  if (seq == 0 || (sequence && seq == *sequence)) return false;
-  if (sequence) *sequence = seq;
+  const auto* p = port_as<control::TrajectoryGoalPort>(port);
+  if (!p || !bridge_detail::take_newer(p->feedback_sequence(), sequence)) return false;
   out = p->feedback();
   return true;
 }
