@@ -17,15 +17,27 @@ void fill_joint_controller_state(JointControllerState& s, double time, double pe
   s.gains = gains;
 }
 
-// ---------------------------------------------------------------- position
+// ---------------------------------------------------------------- single joint
 
-bool JointPositionPidController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
+bool SingleJointPidController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
   const std::string joint = read_joint_name(params);
   joint_ = hardware.claim_joint(joint, HardwareInterface::Effort, join_param_path(params.path(), "joint"));
   pid_.init(params, "pid");
   state_.init(JointControllerState{});
   return true;
 }
+
+void SingleJointPidController::drive(double time, double period, double set_point, double value, double value_dot,
+                                     double error) noexcept {
+  const double effort = pid_.compute_command(error, period);
+  joint_.set_command(effort);
+  const double reported_error = flavour_ == ControllerFlavour::Pr2 ? -error : error;
+  state_.publish_from_rt([&](JointControllerState& s) {
+    fill_joint_controller_state(s, time, period, set_point, value, value_dot, reported_error, effort, pid_.rt_gains());
+  });
+}
+
+// ---------------------------------------------------------------- position
 
 double JointPositionPidController::limit(double command) const noexcept {
   return flavour_ == ControllerFlavour::RosControl ? enforce_position_limits(joint_.info(), command) : command;
@@ -39,25 +51,11 @@ void JointPositionPidController::starting(double /*time*/) {
 UpdateStatus JointPositionPidController::update(double time, double period) {
   const double set_point = limit(command_.read_from_rt());
   const double position = joint_.position();
-  const double error = position_error(joint_.info(), position, set_point);
-  const double effort = pid_.compute_command(error, period);
-  joint_.set_command(effort);
-  const double reported_error = flavour_ == ControllerFlavour::Pr2 ? -error : error;
-  state_.publish_from_rt([&](JointControllerState& s) {
-    fill_joint_controller_state(s, time, period, set_point, position, joint_.velocity(), reported_error, effort, pid_.rt_gains());
-  });
+  drive(time, period, set_point, position, joint_.velocity(), position_error(joint_.info(), position, set_point));
   return UpdateStatus::Ok();
 }
 
 // ---------------------------------------------------------------- velocity
-
-bool JointVelocityPidController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
-  const std::string joint = read_joint_name(params);
-  joint_ = hardware.claim_joint(joint, HardwareInterface::Effort, join_param_path(params.path(), "joint"));
-  pid_.init(params, "pid");
-  state_.init(JointControllerState{});
-  return true;
-}
 
 void JointVelocityPidController::starting(double /*time*/) {
   command_.reset_from_rt(0.0);
@@ -67,13 +65,7 @@ void JointVelocityPidController::starting(double /*time*/) {
 UpdateStatus JointVelocityPidController::update(double time, double period) {
   const double set_point = command_.read_from_rt();
   const double velocity = joint_.velocity();
-  const double error = set_point - velocity;
-  const double effort = pid_.compute_command(error, period);
-  joint_.set_command(effort);
-  const double reported_error = flavour_ == ControllerFlavour::Pr2 ? -error : error;
-  state_.publish_from_rt([&](JointControllerState& s) {
-    fill_joint_controller_state(s, time, period, set_point, velocity, 0.0, reported_error, effort, pid_.rt_gains());
-  });
+  drive(time, period, set_point, velocity, 0.0, set_point - velocity);
   return UpdateStatus::Ok();
 }
 

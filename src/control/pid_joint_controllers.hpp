@@ -24,20 +24,23 @@ enum class ControllerFlavour : std::uint8_t { RosControl, Pr2 };
 void fill_joint_controller_state(JointControllerState& s, double time, double period, double set_point, double value,
                                  double value_dot, double error, double command, const PidGains& gains) noexcept;
 
-class JointPositionPidController : public Controller {
+// What the position and velocity controllers share: the joint (`joint`, claimed on the effort
+// interface), its PID (gains under `pid`) and the three ports.
+class SingleJointPidController : public Controller {
  public:
-  explicit JointPositionPidController(ControllerFlavour flavour = ControllerFlavour::RosControl) : flavour_(flavour) {}
   bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
-  void starting(double time) override;
-  UpdateStatus update(double time, double period) override;
   std::vector<Port*> ports() override { return {&command_, &state_, &gains_}; }
 
   ScalarCommandPort& command_port() { return command_; }
   StatePort<JointControllerState>& state_port() { return state_; }
   Pid& pid() { return pid_; }
 
- private:
-  double limit(double command) const noexcept;
+ protected:
+  explicit SingleJointPidController(ControllerFlavour flavour) : flavour_(flavour) {}
+  // Real-time: effort = pid(error, period) to the joint, then the state (the error reported
+  // with the flavour's sign).
+  void drive(double time, double period, double set_point, double value, double value_dot, double error) noexcept;
+
   ControllerFlavour flavour_;
   JointHandle joint_;
   Pid pid_;
@@ -46,25 +49,23 @@ class JointPositionPidController : public Controller {
   PidGainsPort gains_{"gains", &pid_};
 };
 
-class JointVelocityPidController : public Controller {
+class JointPositionPidController : public SingleJointPidController {
  public:
-  explicit JointVelocityPidController(ControllerFlavour flavour = ControllerFlavour::RosControl) : flavour_(flavour) {}
-  bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
+  explicit JointPositionPidController(ControllerFlavour flavour = ControllerFlavour::RosControl)
+      : SingleJointPidController(flavour) {}
   void starting(double time) override;
   UpdateStatus update(double time, double period) override;
-  std::vector<Port*> ports() override { return {&command_, &state_, &gains_}; }
-
-  ScalarCommandPort& command_port() { return command_; }
-  StatePort<JointControllerState>& state_port() { return state_; }
-  Pid& pid() { return pid_; }
 
  private:
-  ControllerFlavour flavour_;
-  JointHandle joint_;
-  Pid pid_;
-  ScalarCommandPort command_{"command"};
-  StatePort<JointControllerState> state_{"state"};
-  PidGainsPort gains_{"gains", &pid_};
+  double limit(double command) const noexcept;
+};
+
+class JointVelocityPidController : public SingleJointPidController {
+ public:
+  explicit JointVelocityPidController(ControllerFlavour flavour = ControllerFlavour::RosControl)
+      : SingleJointPidController(flavour) {}
+  void starting(double time) override;
+  UpdateStatus update(double time, double period) override;
 };
 
 // effort_controllers/JointGroupPositionController: params `joints`, one PID per joint under
