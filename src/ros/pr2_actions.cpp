@@ -1,7 +1,5 @@
 #include "ros/pr2_actions.hpp"
 
-#include "ros/trajectory_action.hpp"
-
 namespace mechsim::ros {
 
 namespace {

@@ -27,27 +27,24 @@
 
 #include "ros/bridge/sim_bridge.hpp"
 #include "ros/polled_action_server.hpp"
+#include "ros/trajectory_action.hpp"
 
 namespace mechsim::ros {
 
 // joint_trajectory_action over the controller's follow_joint_trajectory goal port (a
 // control::TrajectoryGoalPort). No feedback; a goal the port no longer knows is aborted.
-class Pr2JointTrajectoryPolicy {
+class Pr2JointTrajectoryPolicy : public TrajectoryGoalPortPolicy {
  public:
   using Action = pr2_controllers_msgs::JointTrajectoryAction;
   using Result = pr2_controllers_msgs::JointTrajectoryResult;
-  using Outcome = control::TrajectoryResult;
 
   PolicySubmission<Result> submit(const PortRef& port, const pr2_controllers_msgs::JointTrajectoryGoal& goal);
-  bool cancel(const PortRef& port, std::uint64_t id) { return cancel_goal(port, id); }
   std::optional<control::GoalStatus> status(const PortRef& port, std::uint64_t id) {
     return goal_status(port, id).value_or(control::GoalStatus::Aborted);
   }
-  Outcome outcome(const PortRef& port, std::uint64_t id) { return goal_result(port, id).value_or(Outcome{}); }
   bool read_feedback(const PortRef&, std::uint64_t&) { return false; }
   pr2_controllers_msgs::JointTrajectoryFeedback feedback() const { return {}; }
-  static Result result(const Outcome&) { return {}; }
-  static std::string text(control::GoalStatus, const Outcome& outcome) { return outcome.error_string; }
+  static Result result(const Outcome&) { return {}; }  // empty, as the PR2's
   static Result unloaded_result() { return {}; }
 };
 

@@ -39,23 +39,31 @@ inline control_msgs::JointTrajectoryControllerState to_msg(const control::JointT
   return trajectory_state_msg<control_msgs::JointTrajectoryControllerState>(state);
 }
 
-// follow_joint_trajectory over a control::TrajectoryGoalPort (the goal's tolerances apply).
-class FollowJointTrajectoryPolicy {
+// What the PolledActionServer policies over a control::TrajectoryGoalPort share
+// (follow_joint_trajectory here, the PR2's joint_trajectory_action in pr2_actions.hpp).
+class TrajectoryGoalPortPolicy {
+ public:
+  using Outcome = control::TrajectoryResult;
+
+  bool cancel(const PortRef& port, std::uint64_t id) { return cancel_goal(port, id); }
+  Outcome outcome(const PortRef& port, std::uint64_t id) { return goal_result(port, id).value_or(Outcome{}); }
+  static std::string text(control::GoalStatus, const Outcome& outcome) { return outcome.error_string; }
+};
+
+// follow_joint_trajectory (the goal's tolerances apply). A goal the port no longer knows is
+// polled again.
+class FollowJointTrajectoryPolicy : public TrajectoryGoalPortPolicy {
  public:
   using Action = control_msgs::FollowJointTrajectoryAction;
   using Result = control_msgs::FollowJointTrajectoryResult;
-  using Outcome = control::TrajectoryResult;
 
   PolicySubmission<Result> submit(const PortRef& port, const control_msgs::FollowJointTrajectoryGoal& goal);
-  bool cancel(const PortRef& port, std::uint64_t id) { return cancel_goal(port, id); }
   std::optional<control::GoalStatus> status(const PortRef& port, std::uint64_t id) { return goal_status(port, id); }
-  Outcome outcome(const PortRef& port, std::uint64_t id) { return goal_result(port, id).value_or(Outcome{}); }
   bool read_feedback(const PortRef& port, std::uint64_t& goal_id);
   control_msgs::FollowJointTrajectoryFeedback feedback() const {
     return trajectory_state_msg<control_msgs::FollowJointTrajectoryFeedback>(feedback_.state);
   }
   static Result result(const Outcome& outcome);
-  static std::string text(control::GoalStatus, const Outcome& outcome) { return outcome.error_string; }
   static Result unloaded_result();
 
  private:
