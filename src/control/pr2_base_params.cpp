@@ -66,14 +66,9 @@ Pr2BaseGeometry read_pr2_base_geometry(const Params& params) {
                                 " (caster links) needs the robot description: let the simulation fill the base "
                                 "geometry (control::fill_pr2_base_geometry)");
   }
-  g.caster_joints = read_rover_joint_list(params, "caster_joints", 1);
-  g.wheel_joints = read_rover_joint_list(params, "wheel_joints", 1);
-  for (const std::string& c : g.caster_joints) {
-    if (std::find(g.wheel_joints.begin(), g.wheel_joints.end(), c) != g.wheel_joints.end()) {
-      throw ControllerConfigError("joint '" + c + "' is in both " + path_of(params, "caster_joints") + " and " +
-                                  path_of(params, "wheel_joints"));
-    }
-  }
+  SteeredJointLists lists = read_steered_joint_lists(params, "caster_joints", 1, "wheel_joints", 1);
+  g.caster_joints = std::move(lists.steering);
+  g.wheel_joints = std::move(lists.wheels);
   Pr2BaseKinematics& k = g.kinematics;
   if (!params.has("wheel_radius")) {
     throw ControllerConfigError("parameter " + path_of(params, "wheel_radius") +

@@ -34,6 +34,19 @@ std::vector<std::string> read_rover_joint_list(const Params& params, const char*
   return names;
 }
 
+SteeredJointLists read_steered_joint_lists(const Params& params, const char* steering_key, std::size_t min_steering,
+                                           const char* wheel_key, std::size_t min_wheels) {
+  SteeredJointLists lists{read_rover_joint_list(params, steering_key, min_steering),
+                          read_rover_joint_list(params, wheel_key, min_wheels)};
+  for (const std::string& s : lists.steering) {
+    if (std::find(lists.wheels.begin(), lists.wheels.end(), s) != lists.wheels.end()) {
+      throw ControllerConfigError("joint '" + s + "' is in both " + path_of(params, steering_key) + " and " +
+                                  path_of(params, wheel_key));
+    }
+  }
+  return lists;
+}
+
 namespace {
 
 // A strictly positive number; absent gives `fallback`.
@@ -122,14 +135,9 @@ double velocity_limit(const RobotHardware& hardware, const std::vector<std::stri
 
 RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardware& hardware) {
   RoverDriveConfig c;
-  c.steering_joints = read_rover_joint_list(params, "steering_joints", 0);
-  c.wheel_joints = read_rover_joint_list(params, "wheel_joints", 2);
-  for (const std::string& s : c.steering_joints) {
-    if (std::find(c.wheel_joints.begin(), c.wheel_joints.end(), s) != c.wheel_joints.end()) {
-      throw ControllerConfigError("joint '" + s + "' is in both " + path_of(params, "steering_joints") + " and " +
-                                  path_of(params, "wheel_joints"));
-    }
-  }
+  SteeredJointLists lists = read_steered_joint_lists(params, "steering_joints", 0, "wheel_joints", 2);
+  c.steering_joints = std::move(lists.steering);
+  c.wheel_joints = std::move(lists.wheels);
 
   RoverKinematics& k = c.kinematics;
   if (!params.has("wheel_radius")) {

@@ -61,6 +61,15 @@ struct RoverDriveConfig {
 // empty or repeated.
 std::vector<std::string> read_rover_joint_list(const Params& params, const char* key, std::size_t min_count);
 
+// The steering (or caster) and wheel joint lists, each read by read_rover_joint_list; throws
+// naming both parameters when a joint is in both.
+struct SteeredJointLists {
+  std::vector<std::string> steering;
+  std::vector<std::string> wheels;
+};
+SteeredJointLists read_steered_joint_lists(const Params& params, const char* steering_key, std::size_t min_steering,
+                                           const char* wheel_key, std::size_t min_wheels);
+
 // Reads every parameter (see the list in rover_drive_controller.hpp). `hardware` gives the
 // joints' URDF velocity limits, the defaults of max_steering_rate and max_wheel_speed. Throws
 // ControllerConfigError / ParamsError naming the parameter path.
