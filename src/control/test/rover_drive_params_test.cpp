@@ -143,5 +143,19 @@ TEST(RoverDriveParams, MissingJointListsNameTheParameter) {
   }
 }
 
+TEST(RoverDriveParams, AJointInBothListsNamesBothParameters) {
+  const Params p = Params::from_yaml_string("base: {casters: [c0, c1], wheels: [w0, c1, w1]}").child("base");
+  try {
+    read_steered_joint_lists(p, "casters", 1, "wheels", 1);
+    FAIL() << "no error";
+  } catch (const ControllerConfigError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("joint 'c1' is in both /base/casters and /base/wheels"));
+  }
+  const Params ok = Params::from_yaml_string("base: {casters: [c0], wheels: [w0, w1]}").child("base");
+  const SteeredJointLists lists = read_steered_joint_lists(ok, "casters", 1, "wheels", 2);
+  EXPECT_THAT(lists.steering, ::testing::ElementsAre("c0"));
+  EXPECT_THAT(lists.wheels, ::testing::ElementsAre("w0", "w1"));
+}
+
 }  // namespace
 }  // namespace mechsim::control
