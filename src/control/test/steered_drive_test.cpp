@@ -33,13 +33,22 @@ drive:
   w1: {p: 5.0}
 )";
 
-TEST(SteeredDrive, ClosesPositionPidsOnSteeringAndVelocityPidsOnWheels) {
-  auto robot = two_by_two();
-  RobotHardware hardware(robot->model, robot->state);
-  const Params params = Params::from_yaml_string(kParams).child("drive");
+// Two steering joints s0, s1 and two wheels w0, w1 on the test robot, claimed and given PIDs from kParams.
+struct Rig {
+  explicit Rig(SteeredDrive::Gains gains) {
+    drive.claim(hardware, params, "steer", 1, "wheels", 1);
+    drive.init_pids(params, "steer_pid", "wheel_pid", gains);
+  }
+  std::unique_ptr<testing::TestRobot> robot = two_by_two();
+  RobotHardware hardware{robot->model, robot->state};
+  Params params = Params::from_yaml_string(kParams).child("drive");
   SteeredDrive drive;
-  drive.claim(hardware, params, "steer", 1, "wheels", 1);
-  drive.init_pids(params, "steer_pid", "wheel_pid", SteeredDrive::Gains::Shared);
+};
+
+TEST(SteeredDrive, ClosesPositionPidsOnSteeringAndVelocityPidsOnWheels) {
+  Rig rig(SteeredDrive::Gains::Shared);
+  auto& robot = rig.robot;
+  SteeredDrive& drive = rig.drive;
   ASSERT_EQ(drive.steering_count(), 2u);
   ASSERT_EQ(drive.wheel_count(), 2u);
 
@@ -85,12 +94,9 @@ TEST(SteeredDrive, ClosesPositionPidsOnSteeringAndVelocityPidsOnWheels) {
 }
 
 TEST(SteeredDrive, JointGainsOverrideTheSharedOnesAndUnpoweredWheelsGetNoEffort) {
-  auto robot = two_by_two();
-  RobotHardware hardware(robot->model, robot->state);
-  const Params params = Params::from_yaml_string(kParams).child("drive");
-  SteeredDrive drive;
-  drive.claim(hardware, params, "steer", 1, "wheels", 1);
-  drive.init_pids(params, "steer_pid", "wheel_pid", SteeredDrive::Gains::JointOrShared);
+  Rig rig(SteeredDrive::Gains::JointOrShared);
+  auto& robot = rig.robot;
+  SteeredDrive& drive = rig.drive;
   robot->joint("w0").velocity = 0.0;
   robot->joint("w1").velocity = 0.0;
   drive.wheel_setpoints()[0] = 1.0;
