@@ -18,6 +18,13 @@
 namespace mechsim::sim {
 namespace {
 
+// Fraction of the target time below which a faster response no longer lowers the cost.
+constexpr double kTimeMargin = 0.75;
+// Final error, as a fraction of the step, below which a smaller one no longer lowers the cost.
+constexpr double kErrorMargin = 0.005;
+// Cost per decade the gains move from where the search starts (the YAML's gains).
+constexpr double kStayWeight = 0.05;
+
 control::Params controller_namespace(const TuneSetup& setup) {
   control::Params root = control::Params::from_yaml_file(setup.controllers_file);
   return setup.controllers_namespace.empty() ? root : root.child(setup.controllers_namespace);
@@ -258,20 +265,43 @@ TuneResult tune_joint(const TuneSetup& requested) {
   result.before_metrics = measure_step(setup, result.controller, result.velocity, result.before);
 
   const TuneTargets& tg = setup.targets;
+  // Where the search starts: the YAML's gains, raised to at least p 10 (weak gains give a flat
+  // cost landscape), d 0.1 sqrt(p) and i 0.1 p (velocity: i p).
+  control::PidGains start = result.before;
+  start.p = std::max(result.before.p, 10.0);
+  if (result.velocity) {
+    start.i = std::max(result.before.i, start.p);
+    start.d = 0.0;
+  } else {
+    start.d = std::max(result.before.d, 0.1 * std::sqrt(start.p));
+    start.i = std::max(result.before.i, 0.1 * start.p);
+  }
+  // Decades away from the start, summed over the searched gains.
+  auto distance_from_start = [&](const control::PidGains& g) {
+    double decades = std::abs(std::log10(g.p / start.p)) + std::abs(std::log10(g.i / start.i));
+    if (!result.velocity) decades += std::abs(std::log10(g.d / start.d));
+    return decades;
+  };
   auto cost_of = [&](const StepMetrics& m, const control::PidGains& g) {
     if (m.diverged) return 1e6;
     const double horizon = setup.observe;
     double c = 0.0;
+    // Being faster than three quarters of the target earns nothing: past that margin the search
+    // stays near the YAML's gains instead of taking ever stiffer ones (which only shave
+    // milliseconds off an effort-saturated step and make the loop touchy elsewhere in the
+    // workspace), or ever softer ones (which meet a step but hold poorly against the loads of a
+    // moving robot).
     if (result.velocity) {
-      c += (m.rise95 < 0 ? 2.0 * horizon : m.rise95) / tg.rise95;
+      c += std::max(m.rise95 < 0 ? 2.0 * horizon : m.rise95, kTimeMargin * tg.rise95) / tg.rise95;
     } else {
-      c += (m.settling_time < 0 ? 2.0 * horizon : m.settling_time) / tg.settling_time;
+      c += std::max(m.settling_time < 0 ? 2.0 * horizon : m.settling_time, kTimeMargin * tg.settling_time) / tg.settling_time;
     }
     c += 10.0 * std::max(0.0, m.overshoot - tg.overshoot) / tg.overshoot;
     // A final error costs as much as missing the time target by several times: a velocity loop
     // that settles off its set point is useless for driving.
-    c += std::abs(m.steady_state_error / m.step) * 100.0;
-    c += 0.02 * std::log10(1.0 + g.p + g.i + g.d);  // prefer gentler gains among equals
+    // Errors under half a percent of the step earn nothing either (same reason).
+    c += std::max(0.0, std::abs(m.steady_state_error / m.step) - kErrorMargin) * 100.0;
+    c += kStayWeight * distance_from_start(g);  // among equals, the smallest change
     return c;
   };
   auto gains_of = [&](const auto& x) {
@@ -289,15 +319,12 @@ TuneResult tune_joint(const TuneSetup& requested) {
   auto clamp_log = [](double v) { return std::log(std::clamp(v, 1e-3, 1e5)); };
   int evaluations = 1;
   control::PidGains best;
-  // Start from gains that move the joint at all: the YAML's, raised to at least a tenth of the
-  // joint's effort limit per unit of step (weak gains give a flat cost landscape).
-  const double start_p = std::max(result.before.p, 10.0);
   if (result.velocity) {
     auto cost = [&](const std::array<double, 2>& x) {
       const control::PidGains g = gains_of(x);
       return cost_of(measure_step(setup, result.controller, true, g), g);
     };
-    const auto x = nelder_mead<2>(cost, {clamp_log(start_p), clamp_log(std::max(result.before.i, start_p))}, 1.0,
+    const auto x = nelder_mead<2>(cost, {clamp_log(start.p), clamp_log(start.i)}, 1.0,
                                   setup.max_evaluations, evaluations);
     best = gains_of(x);
   } else {
@@ -305,8 +332,7 @@ TuneResult tune_joint(const TuneSetup& requested) {
       const control::PidGains g = gains_of(x);
       return cost_of(measure_step(setup, result.controller, false, g), g);
     };
-    const auto x = nelder_mead<3>(cost, {clamp_log(start_p), clamp_log(std::max(result.before.d, 0.1 * std::sqrt(start_p))),
-                                         clamp_log(std::max(result.before.i, 0.1 * start_p))},
+    const auto x = nelder_mead<3>(cost, {clamp_log(start.p), clamp_log(start.d), clamp_log(start.i)},
                                   1.0, setup.max_evaluations, evaluations);
     best = gains_of(x);
   }

@@ -4,7 +4,10 @@
 // robot_mechanism_controllers equivalents) with the rest of the robot held by its other
 // controllers, and a Nelder-Mead search over the gains (in log space) that minimises a cost
 // built from the stated targets: settling time and overshoot for position, time to 95 % and
-// overshoot for velocity, with a small preference for smaller gains.
+// overshoot for velocity, and the final error, with a small cost per decade the gains move away
+// from the YAML's. Times faster than 3/4 of the target and final errors under 0.5 % of the step
+// earn nothing, so among gains that meet the targets with that margin the closest to the YAML's
+// win (neither ever stiffer nor ever softer gains).
 
 #include <optional>
 #include <string>
