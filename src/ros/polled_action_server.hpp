@@ -2,8 +2,8 @@
 // PolledActionServer<Policy>: an actionlib server over a controller's goal port, the design the
 // node's action interfaces share (follow_joint_trajectory, joint_trajectory_action,
 // gripper_action). A goal is submitted to the port at once (a refused one is rejected with the
-// policy's result and text); a wall timer (20 Hz) relays fresh feedback about active goals and
-// finishes goal handles as the tick reports them: Succeeded -> succeeded, Preempted -> canceled,
+// policy's result and text); a wall timer (20 Hz) relays fresh feedback about active (and just
+// finished) goals and finishes goal handles as the tick reports them: Succeeded -> succeeded, Preempted -> canceled,
 // anything else finished (aborted, or rejected by the tick) -> aborted. A cancel request is
 // passed to the port; the next poll finishes the handle.
 //
@@ -131,7 +131,11 @@ class PolledActionServer {
       const bool fresh = policy_.read_feedback(port_, feedback_goal);
       for (auto it = goals_.begin(); it != goals_.end();) {
         const std::optional<control::GoalStatus> status = policy_.status(port_, it->id);
-        if (fresh && feedback_goal == it->id && status == control::GoalStatus::Active) {
+        // Fresh feedback goes out while the goal is active and, once, for a goal that finished
+        // since the last poll (before its result): a goal shorter than the poll period still
+        // gets its feedback, as a server relaying every controller state would send.
+        if (fresh && feedback_goal == it->id && status &&
+            (*status == control::GoalStatus::Active || control::goal_finished(*status))) {
           feedback.emplace_back(it->handle, policy_.feedback());
         }
         if (!status || !control::goal_finished(*status)) {

@@ -94,6 +94,26 @@ class Pr2Node : public ::testing::Test {
   ::ros::NodeHandle nh_;
 };
 
+// The publication schedule from received stamps (sim time): the median interval between
+// consecutive messages, and the fraction of intervals that are exactly one `period`. Under load
+// the node may skip a publication (try-lock, never blocking the loop) and the subscriber may
+// drop one, so a message count over the span would measure delivery, not the schedule.
+double median_interval(const std::vector<double>& stamps) {
+  std::vector<double> d;
+  for (std::size_t k = 1; k < stamps.size(); ++k) d.push_back(stamps[k] - stamps[k - 1]);
+  if (d.empty()) return std::nan("");
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+double whole_periods(const std::vector<double>& stamps, double period) {
+  std::size_t whole = 0;
+  for (std::size_t k = 1; k < stamps.size(); ++k) {
+    if (std::abs(stamps[k] - stamps[k - 1] - period) < 1e-6) ++whole;
+  }
+  return stamps.size() < 2 ? 0.0 : static_cast<double>(whole) / static_cast<double>(stamps.size() - 1);
+}
+
 TEST_F(Pr2Node, GripperActionOpensAndJointTrajectoryActionMovesTheArm) {
   ASSERT_TRUE(spawn({"r_gripper_controller", "r_arm_controller"}));
 
@@ -238,8 +258,10 @@ TEST_F(Pr2Node, BaseCommandTwistDrivesBaseOdometry) {
   EXPECT_TRUE(odom_tf) << "no odom -> base_footprint on /tf";
   // Pr2Odometry's default odom_publish_rate: 30 Hz of sim time.
   ASSERT_GE(stamps.size(), 10u);
-  const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
-  EXPECT_NEAR(rate, 30.0, 0.5);
+  // Due at whole multiples of 1/30 s, published on the 1 ms tick at or after: intervals of 33 or
+  // 34 ms (median within one tick of 1/30 s), whatever the load drops.
+  const double rate = 1.0 / median_interval(stamps);
+  EXPECT_NEAR(median_interval(stamps), 1.0 / 30.0, 0.0011);
   std::printf("base_odometry/odom: %.1f Hz (sim time), x = %.3f m\n", rate, last.pose.pose.position.x);
 }
 
@@ -277,13 +299,9 @@ TEST_F(Pr2Node, ControllerManagerPublishesJointStatesMechanismStatisticsAndCalib
   EXPECT_TRUE(sizes_match);
   EXPECT_THAT(names, ::testing::IsSupersetOf({"r_shoulder_pan_joint", "torso_lift_joint", "r_gripper_joint",
                                                "fl_caster_rotation_joint", "head_tilt_joint", "l_wrist_roll_joint"}));
-  const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
-  EXPECT_NEAR(rate, 100.0, 5.0);
-  std::size_t whole = 0;
-  for (std::size_t k = 1; k < stamps.size(); ++k) {
-    if (std::abs(stamps[k] - stamps[k - 1] - 0.01) < 1e-6) ++whole;
-  }
-  EXPECT_GE(static_cast<double>(whole), 0.95 * static_cast<double>(stamps.size() - 1));
+  const double rate = 1.0 / median_interval(stamps);
+  EXPECT_NEAR(rate, 100.0, 1e-3);
+  EXPECT_GE(whole_periods(stamps, 0.01), 0.8);
   std::printf("joint_states: %zu messages at %.2f Hz (sim time), %zu joints\n", stamps.size(), rate, names.size());
 
   // mechanism_statistics: the same joints, the actuators, the controller; 1 Hz of sim time.
@@ -345,8 +363,9 @@ TEST_F(Pr2NodeAt250Hz, JointStatesFollowJointStatePublishRate) {
       },
       20.0));
   std::lock_guard<std::mutex> l(m);
-  const double rate = static_cast<double>(stamps.size() - 1) / (stamps.back() - stamps.front());
-  EXPECT_NEAR(rate, 250.0, 12.5);
+  const double rate = 1.0 / median_interval(stamps);
+  EXPECT_NEAR(rate, 250.0, 1e-3);
+  EXPECT_GE(whole_periods(stamps, 0.004), 0.8);
   std::printf("joint_states at joint_state_publish_rate 250: %.2f Hz (sim time)\n", rate);
 }
 
