@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <ostream>
 #include <string>
 
 #include "control/params.hpp"
@@ -33,6 +34,8 @@ struct StepCase {
   double settle;  // s
   double observe; // s after the step
 };
+
+void PrintTo(const StepCase& c, std::ostream* os) { *os << c.joint << " step " << c.step; }
 
 class Pr2ShippedGains : public testing::TestWithParam<StepCase> {};
 
