@@ -2,8 +2,9 @@
 // on the test's master brings up mechsim_node, uploads mechsim's own PR2 description
 // (robots/pr2/urdf, expanded by `mechsim xacro`) and starts the default controllers that
 // pr2_gazebo starts; pr2_controller_manager lists them running, and a Twist on
-// /pr2/base_controller/command moves /pr2/base_odometry/odom. The variant arg picks the
-// controller set (pr2_no_arms: no arm or gripper controllers). Skipped without roslaunch.
+// /pr2/base_controller/command moves /pr2/base_odometry/odom. paused:=true holds them until
+// /gazebo/unpause_physics; the variant arg picks the description and the controller set
+// (pr2_no_arms: no arm or gripper controllers). Skipped without roslaunch.
 // Each test bounds its waits (wall) well under a minute and stops roslaunch (its process group:
 // the node and the spawner with it) also on failure.
 #include <gmock/gmock.h>
@@ -14,6 +15,7 @@
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <pr2_mechanism_msgs/ListControllers.h>
+#include <std_srvs/Empty.h>
 
 #include "ros_fixture.hpp"
 
@@ -23,18 +25,20 @@ namespace {
 const char* const kRoslaunch = "/usr/bin/roslaunch";
 const char* const kList = "/pr2_controller_manager/list_controllers";
 
-// The controllers pr2_controller_manager lists as running; empty when it is not up (yet).
-std::vector<std::string> running_controllers() {
+// The controllers pr2_controller_manager lists in `state` (sorted); empty when it is not up (yet).
+std::vector<std::string> controllers_in(const std::string& state) {
   if (!::ros::service::exists(kList, false)) return {};
   pr2_mechanism_msgs::ListControllers list;
   if (!::ros::service::call(kList, list)) return {};
   std::vector<std::string> running;
   for (std::size_t i = 0; i < list.response.controllers.size() && i < list.response.state.size(); ++i) {
-    if (list.response.state[i] == "running") running.push_back(list.response.controllers[i]);
+    if (list.response.state[i] == state) running.push_back(list.response.controllers[i]);
   }
   std::sort(running.begin(), running.end());
   return running;
 }
+
+std::vector<std::string> running_controllers() { return controllers_in("running"); }
 
 class Pr2Launch : public ::testing::Test {
  protected:
@@ -126,6 +130,23 @@ TEST_F(Pr2Launch, EmptyWorldStartsDefaultControllersAndBaseFollowsTwist) {
   }
   std::printf("pr2_empty_world.launch: 9 controllers running after %.1f s (wall); base_odometry x %.3f -> %.3f m\n",
               up, x0, x);
+  stop();
+}
+
+// paused:=true: the spawner loads the set, whose start waits for the first tick; unpausing the
+// world (gazebo's service) starts them.
+TEST_F(Pr2Launch, PausedWorldStartsTheControllersOnUnpause) {
+  launch({"paused:=true"});
+  ASSERT_TRUE(wait_until([] { return controllers_in("stopped").size() == 9; }, 30.0))
+      << "stopped: " << ::testing::PrintToString(controllers_in("stopped")) << "\n"
+      << launch_->log();
+  ::ros::WallDuration(0.5).sleep();
+  EXPECT_THAT(running_controllers(), ::testing::IsEmpty()) << "started while paused";
+  std_srvs::Empty unpause;
+  ASSERT_TRUE(call("/gazebo/unpause_physics", unpause));
+  EXPECT_TRUE(wait_until([] { return running_controllers().size() == 9; }, 10.0))
+      << "running: " << ::testing::PrintToString(running_controllers()) << "\n"
+      << launch_->log();
   stop();
 }
 
