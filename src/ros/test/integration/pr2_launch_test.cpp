@@ -5,7 +5,7 @@
 // /pr2/base_controller/command moves /pr2/base_odometry/odom. paused:=true holds them until
 // /gazebo/unpause_physics; the variant arg picks the description and the controller set
 // (pr2_no_arms: no arm or gripper controllers). Skipped without roslaunch.
-// Each test bounds its waits (wall) well under a minute and stops roslaunch (its process group:
+// Each test's waits add up to at most 50 s (wall); it stops roslaunch (its process group:
 // the node and the spawner with it) also on failure.
 #include <gmock/gmock.h>
 
@@ -53,14 +53,14 @@ class Pr2Launch : public ::testing::Test {
     launch_ = std::make_unique<ChildProcess>(argv, log_dir() + "/roslaunch_" + name() + ".log");
   }
 
-  // Waits (at most 30 s wall) until exactly `expected` (sorted) run.
+  // Waits (at most 20 s wall) until exactly `expected` (sorted) run.
   bool wait_for_controllers(const std::vector<std::string>& expected) {
-    return wait_until([&] { return running_controllers() == expected; }, 30.0);
+    return wait_until([&] { return running_controllers() == expected; }, 20.0);
   }
 
   // Stops roslaunch and everything it started; true when all went and the services are gone.
   void stop() {
-    ASSERT_NE(launch_->stop(20.0), -1) << "roslaunch did not stop on SIGINT within 20 s\n" << launch_->log();
+    ASSERT_NE(launch_->stop(10.0), -1) << "roslaunch did not stop on SIGINT within 10 s\n" << launch_->log();
     EXPECT_FALSE(::ros::service::exists(kList, false)) << "pr2_controller_manager still up after roslaunch stopped";
   }
 
@@ -101,14 +101,14 @@ TEST_F(Pr2Launch, EmptyWorldStartsDefaultControllersAndBaseFollowsTwist) {
         last = *msg;
         ++count;
       });
-  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return count > 0; }, 10.0)) << launch_->log();
+  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return count > 0; }, 5.0)) << launch_->log();
   double x0 = 0.0;
   {
     std::lock_guard<std::mutex> l(m);
     x0 = last.pose.pose.position.x;
   }
   ::ros::Publisher cmd = nh.advertise<geometry_msgs::Twist>("/pr2/base_controller/command", 1);
-  ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0; }, 5.0));
   geometry_msgs::Twist twist;
   twist.linear.x = 0.2;
   // Keep commanding (the base controller stops on a stale command) until the base has gone 0.15 m
@@ -121,7 +121,7 @@ TEST_F(Pr2Launch, EmptyWorldStartsDefaultControllersAndBaseFollowsTwist) {
         x = last.pose.pose.position.x;
         return x - x0 > 0.15;
       },
-      15.0);
+      10.0);
   EXPECT_TRUE(moved) << "base_odometry x " << x0 << " -> " << x << " m\n" << launch_->log();
   {
     std::lock_guard<std::mutex> l(m);
@@ -137,13 +137,13 @@ TEST_F(Pr2Launch, EmptyWorldStartsDefaultControllersAndBaseFollowsTwist) {
 // world (gazebo's service) starts them.
 TEST_F(Pr2Launch, PausedWorldStartsTheControllersOnUnpause) {
   launch({"paused:=true"});
-  ASSERT_TRUE(wait_until([] { return controllers_in("stopped").size() == 9; }, 30.0))
+  ASSERT_TRUE(wait_until([] { return controllers_in("stopped").size() == 9; }, 20.0))
       << "stopped: " << ::testing::PrintToString(controllers_in("stopped")) << "\n"
       << launch_->log();
   ::ros::WallDuration(0.5).sleep();
   EXPECT_THAT(running_controllers(), ::testing::IsEmpty()) << "started while paused";
   std_srvs::Empty unpause;
-  ASSERT_TRUE(call("/gazebo/unpause_physics", unpause));
+  ASSERT_TRUE(call("/gazebo/unpause_physics", unpause, 5.0));
   EXPECT_TRUE(wait_until([] { return running_controllers().size() == 9; }, 10.0))
       << "running: " << ::testing::PrintToString(running_controllers()) << "\n"
       << launch_->log();
