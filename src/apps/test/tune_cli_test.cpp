@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "run_process.hpp"
+#include "../../sim/test/tuning_pendulum.hpp"  // the cli tests have no include root
 
 namespace mechsim::apps::test {
 namespace {
@@ -19,17 +20,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-// A 1 kg pendulum hanging from a fixed hinge whose range is -1..0 rad: it rests at its upper limit.
-constexpr const char* kUrdf = R"(<robot name="pendulum">
-  <link name="world"/>
-  <link name="arm"><inertial><origin xyz="0 0 -0.5"/><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="hinge" type="revolute"><parent link="world"/><child link="arm"/><origin xyz="0 0 1"/><axis xyz="0 1 0"/>
-    <limit lower="-1" upper="0" effort="20" velocity="5"/></joint>
-  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
-    <joint name="hinge"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="m"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>
-</robot>
-)";
+constexpr const char* kUrdf = sim::test::kTuningPendulumUrdf;  // rests at its upper limit
 constexpr const char* kControllers =
     "pendulum:\n  hinge_position_controller:\n    type: effort_controllers/JointPositionController\n"
     "    joint: hinge\n    pid: {p: 60.0, i: 0.0, d: 4.0}\n";

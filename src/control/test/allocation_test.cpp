@@ -11,6 +11,7 @@
 
 #include "control/controller_manager.hpp"
 #include "control/test/test_robot.hpp"
+#include "control/test/allocation_counter.hpp"
 
 namespace {
 

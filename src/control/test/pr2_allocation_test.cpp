@@ -10,11 +10,7 @@
 #include "control/pr2_gripper_controller.hpp"
 #include "control/test/pr2_base_test_util.hpp"
 #include "mechanism/propagation.hpp"
-
-namespace mechsim::control::testing {
-void start_counting_allocations() noexcept;
-long stop_counting_allocations() noexcept;
-}  // namespace mechsim::control::testing
+#include "control/test/allocation_counter.hpp"
 
 namespace mechsim::control {
 namespace {

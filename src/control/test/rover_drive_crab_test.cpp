@@ -17,13 +17,9 @@
 #include "control/rover_drive_controller.hpp"
 #include "control/rover_drive_odometry.hpp"
 #include "control/test/rover_drive_test_util.hpp"
+#include "control/test/allocation_counter.hpp"
 
 namespace mechsim::control {
-namespace testing {
-// The counting operator new of this test program (allocation_test.cpp).
-void start_counting_allocations() noexcept;
-long stop_counting_allocations() noexcept;
-}  // namespace testing
 
 namespace {
 

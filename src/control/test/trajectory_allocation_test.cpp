@@ -8,11 +8,7 @@
 #include "control/controller_manager.hpp"
 #include "control/test/test_robot.hpp"
 #include "control/trajectory_controller.hpp"
-
-namespace mechsim::control::testing {
-void start_counting_allocations() noexcept;
-long stop_counting_allocations() noexcept;
-}  // namespace mechsim::control::testing
+#include "control/test/allocation_counter.hpp"
 
 namespace mechsim::control {
 namespace {

@@ -13,6 +13,7 @@
 
 #include "description/urdf_parser.hpp"
 #include "sim/tuning.hpp"
+#include "sim/test/tuning_pendulum.hpp"
 
 namespace mechsim::sim {
 namespace {
@@ -86,16 +87,7 @@ TEST(TunePlan, ContinuousJointsTakeTheStepAsGiven) {
   EXPECT_FALSE(plan.limited);
 }
 
-// A 1 kg pendulum hanging from a fixed hinge whose range is -1..0 rad: it rests at its upper limit.
-constexpr const char* kPendulum = R"(<robot name="pendulum">
-  <link name="world"/>
-  <link name="arm"><inertial><origin xyz="0 0 -0.5"/><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="hinge" type="revolute"><parent link="world"/><child link="arm"/><origin xyz="0 0 1"/><axis xyz="0 1 0"/>
-    <limit lower="-1" upper="0" effort="20" velocity="5"/></joint>
-  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
-    <joint name="hinge"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="m"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>
-</robot>)";
+constexpr const char* kPendulum = sim::test::kTuningPendulumUrdf;  // rests at its upper limit
 
 class TunePendulum : public testing::Test {
  protected:
