@@ -72,13 +72,12 @@ void SimNode::loop() {
 }
 
 void SimNode::on_tick(double time) {
-  const auto now = std::chrono::steady_clock::now();
-  const double min_wall = options_.clock_publish_rate > 0.0 ? 1.0 / options_.clock_publish_rate : 0.0;
-  if (std::chrono::duration<double>(now - last_clock_).count() >= min_wall) {
+  if (time + 1e-9 >= next_clock_) {
     rosgraph_msgs::Clock clock;
     clock.clock = ::ros::Time(time);
     clock_pub_.publish(clock);
-    last_clock_ = now;
+    last_clock_ = std::chrono::steady_clock::now();
+    next_clock_ = time + (options_.clock_publish_rate > 0.0 ? 1.0 / options_.clock_publish_rate : 0.0);
   }
   publish_controller_states(time);
   if (options_.pr2) publish_pr2_outputs(time);

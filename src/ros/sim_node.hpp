@@ -33,7 +33,9 @@ struct NodeOptions {
   std::string robot_namespace = "/";  // where the controllers' parameters and topics live
   double state_publish_rate = 50.0;   // Hz (sim time) of <controller>/state; 0: every tick
   double odom_publish_rate = 50.0;    // Hz (sim time) of <controller>/odom; 0: every tick
-  double clock_publish_rate = 1000.0; // Hz (wall time) at most of /clock
+  // Hz (sim time) of /clock; 0: every tick. Gazebo's pub_clock_frequency default: at 1 kHz every
+  // use_sim_time node wakes 1000 times a second for nothing.
+  double clock_publish_rate = 100.0;
   bool publish_tf = true;
   bool publish_odom_tf = false;
   double tf_rate = 50.0;          // Hz (sim time)
@@ -81,7 +83,8 @@ class SimNode {
 
   ::ros::Publisher clock_pub_;
   std::vector<::ros::ServiceServer> services_;
-  std::chrono::steady_clock::time_point last_clock_{};
+  std::chrono::steady_clock::time_point last_clock_{};  // wall time of the last /clock
+  double next_clock_ = 0.0;              // s, sim time of the next /clock
   double next_tf_ = 0.0;                 // s, sim time of the next /tf message
   double last_tf_ = -1.0;                // s, sim time of the last one
   std::vector<double> joint_positions_;  // reused by the loop thread

@@ -275,23 +275,38 @@ TickResult Simulation::run_for(double duration) {
   TickResult result;
   while (ticks_ < target) {
     if (paused()) {
+      pace_anchored_ = false;  // time stood still: the pace starts afresh on unpause
       apply_requests();
       // Nobody can unpause a paused single-threaded run: return instead of waiting forever.
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       if (paused()) break;
       continue;
     }
+    if (options_.real_time_factor > 0.0 && !pace_anchored_) {
+      pace_wall_ = Clock::now();
+      pace_sim_ = time();
+      pace_anchored_ = true;
+    }
     result = step();
     if (!result.ok && options_.on_divergence == DivergencePolicy::Stop) break;
-    if (options_.real_time_factor > 0.0) {
-      const auto due = wall_start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                                        (time() - sim_start) / options_.real_time_factor));
-      std::this_thread::sleep_until(due);
-    }
+    if (options_.real_time_factor > 0.0) pace();
   }
   const double wall = std::chrono::duration<double>(Clock::now() - wall_start).count();
   if (wall > 0.0) measured_rtf_ = (time() - sim_start) / wall;
   return result;
+}
+
+void Simulation::pace() {
+  using Clock = std::chrono::steady_clock;
+  const auto due = pace_wall_ + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>((time() - pace_sim_) / options_.real_time_factor));
+  const auto now = Clock::now();
+  if (now - due > std::chrono::duration<double>(kMaxPaceLag)) {
+    pace_wall_ = now;
+    pace_sim_ = time();
+    return;
+  }
+  std::this_thread::sleep_until(due);
 }
 
 void Simulation::reset() {

@@ -20,6 +20,7 @@
 // request_step() may be called from any thread; the loop applies them between ticks.
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -49,13 +50,20 @@ struct SimulationOptions {
   physics::SpawnPose spawn;
   bool start_paused = false;
   // 0: as fast as possible (headless default); R > 0: paced so that simulation time runs R times
-  // as fast as wall-clock time.
+  // as fast as wall-clock time. The pace is kept across run_for() calls against one wall-clock
+  // anchor (a caller that runs in short chunks, like the ROS node, loses nothing between them);
+  // the anchor moves only on pause, on a new factor, and when the simulation falls more than
+  // kMaxPaceLag behind (it then goes on from there instead of racing to catch up).
   double real_time_factor = 0.0;
   DivergencePolicy on_divergence = DivergencePolicy::Stop;
   // Servo gains of joints commanded through position/velocity interfaces, by joint name
   // (gazebo_ros_control's pid_gains/<joint>: p -> kp, d -> kv). Missing: the physics default.
   std::map<std::string, physics::ServoGains> servo_gains;
 };
+
+// Wall-clock seconds the paced simulation may fall behind its anchor before it gives up
+// catching up (a stalled process, a debugger, a slower-than-real-time model).
+inline constexpr double kMaxPaceLag = 0.25;
 
 struct TickResult {
   bool ok = true;
@@ -101,7 +109,10 @@ class Simulation {
   std::uint64_t divergences() const { return divergences_; }
   // Simulation seconds per wall-clock second over the last run_for().
   double measured_real_time_factor() const { return measured_rtf_; }
-  void set_real_time_factor(double factor) { options_.real_time_factor = factor; }
+  void set_real_time_factor(double factor) {
+    options_.real_time_factor = factor;
+    pace_anchored_ = false;
+  }
 
   const description::RobotModel& robot() const { return robot_; }
   const World& world() const { return world_; }
@@ -172,7 +183,14 @@ class Simulation {
   std::vector<AddedInertia> reflected_inertia_;
   void add_reflected_inertia_for_safety_limits();
 
+  // Sleeps until the wall-clock time at which the current simulation time is due (loop thread).
+  void pace();
+
   std::vector<Observer> observers_;
+  // Pacing anchor: simulation time `pace_sim_` was due at wall time `pace_wall_`.
+  bool pace_anchored_ = false;
+  std::chrono::steady_clock::time_point pace_wall_{};
+  double pace_sim_ = 0.0;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
   double measured_rtf_ = 0.0;
   std::atomic<bool> paused_{false};

@@ -16,7 +16,7 @@
 //   publish_tf         built-in robot state publisher (default true); tf_rate (Hz, default 50)
 //   publish_odom_tf    odom -> root link from the physics (default false); odom_frame (default odom)
 //   state_publish_rate Hz of <controller>/state (default 50; 0: every tick)
-//   clock_publish_rate Hz (wall) at most of /clock (default 1000)
+//   clock_publish_rate Hz (sim time) of /clock (default 100, Gazebo's pub_clock_frequency; 0: every tick)
 // When ~model is used, the expanded URDF is also set as robot_description (for RViz).
 #include <csignal>
 #include <cstdlib>
@@ -111,7 +111,7 @@ int run(int argc, char** argv) {
   options.odom_frame = pnh.param<std::string>("odom_frame", "odom");
   options.tf_rate = pnh.param("tf_rate", 50.0);
   options.state_publish_rate = pnh.param("state_publish_rate", 50.0);
-  options.clock_publish_rate = pnh.param("clock_publish_rate", 1000.0);
+  options.clock_publish_rate = pnh.param("clock_publish_rate", 100.0);
 
   bridge.world = pnh.param<std::string>("world", "empty");
   bridge.x = pnh.param("x", 0.0);

@@ -23,6 +23,7 @@ class ChildProcess {
   // Waits at most `timeout` s for the process to exit by itself; its exit status, or -2.
   int wait(double timeout);
   const std::string& log_path() const { return log_path_; }
+  pid_t pid() const { return pid_; }  // -1 once reaped
   std::string log() const;  // the output so far
 
  private:

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <limits>
 
+#include <xmlrpcpp/XmlRpcClient.h>
+
 #include <rosgraph_msgs/Clock.h>
 #include <controller_manager_msgs/ListControllers.h>
 
@@ -25,6 +27,38 @@ State& state() {
   return s;
 }
 
+// The pid of the master answering on 127.0.0.1:port (its getPid call), or -1 when none answers.
+int master_pid(int port) {
+  XmlRpc::XmlRpcClient client("127.0.0.1", port, "/");
+  XmlRpc::XmlRpcValue args, result;
+  args[0] = "/mechsim_ros_test";
+  if (!client.execute("getPid", args, result) || client.isFault()) return -1;
+  if (result.getType() != XmlRpc::XmlRpcValue::TypeArray || result.size() < 3) return -1;
+  return static_cast<int>(result[2]);
+}
+
+// Starts `rosmaster --core` on a free loopback port and returns once it answers. Another test
+// program may take the same port between the probe and the master's bind (ctest -j, other
+// worktrees): the master that answers must be this one (its pid), else another port is tried.
+std::unique_ptr<ChildProcess> start_master(const std::string& log_dir, int& port) {
+  std::string failures;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    port = free_loopback_port();
+    auto master = std::make_unique<ChildProcess>(
+        std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p", std::to_string(port)},
+        log_dir + "/master.log");
+    const pid_t own = master->pid();
+    int answering = -1;
+    wait_until([&] { return (answering = master_pid(port)) > 0 || !master->running(); }, 15.0);
+    if (answering == own) return master;
+    failures += "\n  port " + std::to_string(port) + ": " +
+                (answering > 0 ? "another master (pid " + std::to_string(answering) + ") answers"
+                               : "no answer; " + master->log());
+    master->stop();
+  }
+  throw std::runtime_error("could not start a rosmaster of our own:" + failures);
+}
+
 class RosEnvironment : public ::testing::Environment {
  public:
   void SetUp() override {
@@ -32,7 +66,7 @@ class RosEnvironment : public ::testing::Environment {
     char dir[] = "/tmp/mechsim_ros_test.XXXXXX";
     if (!::mkdtemp(dir)) throw std::runtime_error("mkdtemp failed");
     s.log_dir = dir;
-    s.port = free_loopback_port();
+    s.master = start_master(s.log_dir, s.port);
     const std::string uri = "http://127.0.0.1:" + std::to_string(s.port);
     ::setenv("ROS_MASTER_URI", uri.c_str(), 1);
     ::setenv("ROS_IP", "127.0.0.1", 1);
@@ -44,9 +78,6 @@ class RosEnvironment : public ::testing::Environment {
     // The ROS tools are Debian's Python programs: never a pyenv/venv interpreter's paths.
     ::unsetenv("PYTHONPATH");
     ::unsetenv("PYTHONHOME");
-    s.master = std::make_unique<ChildProcess>(
-        std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p", std::to_string(s.port)},
-        s.log_dir + "/master.log");
     int argc = 0;
     ::ros::init(argc, nullptr, "mechsim_ros_test",
                 ::ros::init_options::AnonymousName | ::ros::init_options::NoSigintHandler);
