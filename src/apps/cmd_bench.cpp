@@ -43,7 +43,7 @@ void run(const BenchArgs& args) {
   options.spawn.z = args.spawn_z;
   options.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
   sim::Simulation sim(std::move(robot), sim::make_world(world), params, options);
-  // Load everything asked for; start what does not conflict (BEST_EFFORT), as a user would.
+  // Load everything asked for; start what does not conflict, first come first served.
   std::vector<std::string> loaded;
   for (const std::string& name : start) {
     if (control::ControlResult r = sim.load_controller(name); r) {
@@ -52,7 +52,7 @@ void run(const BenchArgs& args) {
       std::cerr << "warning: " << r.error << "\n";
     }
   }
-  const control::SwitchResult s = sim.controllers().switch_controllers(loaded, {}, control::SwitchStrictness::BestEffort);
+  const control::SwitchResult s = sim.controllers().switch_controllers(loaded, {}, control::SwitchStrictness::SkipConflicts);
   for (const std::string& skipped : s.skipped) std::cerr << "warning: " << skipped << "\n";
   sim.run_for(0.2);
 

@@ -255,7 +255,7 @@ SwitchResult ControllerManager::switch_controllers(const std::vector<std::string
       }
     }
     if (!conflict.empty()) {
-      if (strict) return refuse("could not switch controllers: " + conflict);
+      if (strictness != SwitchStrictness::SkipConflicts) return refuse("could not switch controllers: " + conflict);
       result.skipped.push_back("could not start controller '" + e->name + "': " + conflict);
       continue;
     }
@@ -310,6 +310,13 @@ std::vector<ControllerInfo> ControllerManager::list_controllers() const {
     {
       std::lock_guard<std::mutex> failure_lock(e->failure_mutex);
       info.failure = e->failure;
+    }
+    // The tick reads the pending lists but never changes them; switch_controllers() writes them
+    // under config_mutex_ only while no switch is pending.
+    if (switch_pending()) {
+      auto in = [&](const std::vector<Entry*>& v) { return std::find(v.begin(), v.end(), e.get()) != v.end(); };
+      info.start_pending = in(pending_start_);
+      info.stop_pending = in(pending_stop_);
     }
     out.push_back(std::move(info));
   }

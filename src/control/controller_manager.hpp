@@ -36,8 +36,12 @@
 namespace mechsim::control {
 
 // ros_control's strictness: STRICT refuses the whole switch on any problem (unknown name,
-// wrong state, resource conflict); BEST_EFFORT does what it can and reports what it skipped.
-enum class SwitchStrictness : std::uint8_t { BestEffort, Strict };
+// wrong state, resource conflict); BEST_EFFORT skips unknown names and controllers already in
+// the requested state and reports them, but, as ros_control's controller_manager, refuses the
+// whole switch on a resource conflict. SkipConflicts is mechsim's own, for its tools (tune,
+// bench): BEST_EFFORT that also drops a controller whose joints are taken, first come first
+// served.
+enum class SwitchStrictness : std::uint8_t { BestEffort, Strict, SkipConflicts };
 
 // ros_control's states: "initialized" (loaded, never started), "running", "stopped".
 enum class ControllerLifecycle : std::uint8_t { Initialized, Running, Stopped };
@@ -58,6 +62,10 @@ struct ControllerInfo {
   std::vector<ResourceClaim> claims;  // per hardware interface
   ControllerStatistics statistics;
   std::string failure;  // why the manager last stopped it; "" if it never failed
+  // Part of a switch that was accepted and not applied yet (the next tick applies it; a paused
+  // simulation does not tick): it will start, or stop, then.
+  bool start_pending = false;
+  bool stop_pending = false;
 };
 
 struct ManagerStatistics {

@@ -14,6 +14,26 @@ namespace mechsim::ros {
 
 namespace cmm = controller_manager_msgs;
 
+int switch_strictness(int strictness) {
+  // ros_control's controller_manager: 0 (what a request that leaves the field out carries, e.g.
+  // `rosservice call .../switch_controller "{start_controllers: [x]}"`) is taken as BEST_EFFORT
+  // with a warning. Other values ros_control silently treats as BEST_EFFORT; mechsim refuses
+  // them as the typo they most likely are.
+  if (strictness == 0) {
+    ROS_WARN_STREAM("mechsim: switch_controller: strictness 0 given; it must be STRICT ("
+                    << int{cmm::SwitchController::Request::STRICT} << ") or BEST_EFFORT ("
+                    << int{cmm::SwitchController::Request::BEST_EFFORT}
+                    << "): defaulting to BEST_EFFORT, as ros_control does");
+    return cmm::SwitchController::Request::BEST_EFFORT;
+  }
+  if (strictness != cmm::SwitchController::Request::STRICT && strictness != cmm::SwitchController::Request::BEST_EFFORT) {
+    ROS_ERROR_STREAM("mechsim: switch_controller refused: strictness " << strictness
+                                                                       << " is neither BEST_EFFORT (1) nor STRICT (2)");
+    return -1;
+  }
+  return strictness;
+}
+
 void SimNode::advertise_controller_manager() {
   ::ros::NodeHandle cm(robot_nh_, "controller_manager");
 
@@ -65,17 +85,15 @@ void SimNode::advertise_controller_manager() {
 
   services_.push_back(cm.advertiseService<cmm::SwitchController::Request, cmm::SwitchController::Response>(
       "switch_controller", [this](cmm::SwitchController::Request& req, cmm::SwitchController::Response& res) {
-        if (req.strictness != cmm::SwitchController::Request::STRICT &&
-            req.strictness != cmm::SwitchController::Request::BEST_EFFORT) {
-          ROS_ERROR_STREAM("mechsim: switch_controller: strictness " << req.strictness
-                                                                   << " is neither BEST_EFFORT (1) nor STRICT (2)");
+        const int strictness = switch_strictness(req.strictness);
+        if (strictness < 0) {
           res.ok = false;
           return true;
         }
         // start_asap needs no handling: a switch is applied at the start of the next tick.
         std::lock_guard<std::mutex> lock(manager_mutex_);
         const BridgeResult r = bridge_->switch_controllers(
-            req.start_controllers, req.stop_controllers, req.strictness == cmm::SwitchController::Request::STRICT,
+            req.start_controllers, req.stop_controllers, strictness == cmm::SwitchController::Request::STRICT,
             req.timeout);
         res.ok = r.ok;
         if (!r.ok) {

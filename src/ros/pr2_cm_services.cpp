@@ -45,14 +45,14 @@ void SimNode::advertise_pr2_controller_manager() {
       }));
   services_.push_back(cm.advertiseService<pmm::SwitchController::Request, pmm::SwitchController::Response>(
       "switch_controller", [this](pmm::SwitchController::Request& req, pmm::SwitchController::Response& res) {
-        if (req.strictness != pmm::SwitchController::Request::STRICT &&
-            req.strictness != pmm::SwitchController::Request::BEST_EFFORT) {
+        const int strictness = switch_strictness(req.strictness);
+        if (strictness < 0) {
           res.ok = false;
           return true;
         }
         std::lock_guard<std::mutex> lock(manager_mutex_);
         const BridgeResult r = bridge_->switch_controllers(
-            req.start_controllers, req.stop_controllers, req.strictness == pmm::SwitchController::Request::STRICT, 5.0);
+            req.start_controllers, req.stop_controllers, strictness == pmm::SwitchController::Request::STRICT, 5.0);
         res.ok = r.ok;
         if (!r.ok) ROS_ERROR_STREAM("mechsim: switch_controller refused: " << r.error);
         return true;

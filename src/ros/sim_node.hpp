@@ -29,6 +29,11 @@
 
 namespace mechsim::ros {
 
+// SwitchController's strictness as the controller manager takes it (cm_services.cpp): STRICT (2)
+// or BEST_EFFORT (1) as given, 0 as BEST_EFFORT with a warning (ros_control), anything else -1
+// (refused, logged). The PR2's pr2_mechanism_msgs use the same values.
+int switch_strictness(int strictness);
+
 struct NodeOptions {
   std::string robot_namespace = "/";  // where the controllers' parameters and topics live
   double state_publish_rate = 50.0;   // Hz (sim time) of <controller>/state; 0: every tick

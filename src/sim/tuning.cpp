@@ -135,8 +135,8 @@ std::unique_ptr<Simulation> make_experiment(const TuneSetup& setup, const std::s
   if (control::ControlResult r = sim->load_controller(controller); !r) {
     throw std::runtime_error("could not load controller '" + controller + "': " + r.error);
   }
-  // The tuned controller first: under BEST_EFFORT it wins its joint over group controllers.
-  sim->controllers().switch_controllers(start, {}, control::SwitchStrictness::BestEffort);
+  // The tuned controller first: it wins its joint over group controllers.
+  sim->controllers().switch_controllers(start, {}, control::SwitchStrictness::SkipConflicts);
   return sim;
 }
 

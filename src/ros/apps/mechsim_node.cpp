@@ -19,6 +19,7 @@
 //   clock_publish_rate Hz (sim time) of /clock (default 100, Gazebo's pub_clock_frequency; 0: every tick)
 // When ~model is used, the expanded URDF is also set as robot_description (for RViz).
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
@@ -147,6 +148,9 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Line by line into a log file too (roslaunch's output="log", a test's capture): INFO goes to
+  // stdout, which is otherwise block-buffered when it is not a terminal.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

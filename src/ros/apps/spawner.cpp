@@ -14,7 +14,9 @@
 // The namespace: --namespace if given, else the node's own (launch `ns=`); service names are
 // resolved relative to it, as the Python spawner does. Times are wall-clock (with use_sim_time
 // a paused simulation would stop ros::Time).
+#include <algorithm>
 #include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -23,6 +25,7 @@
 #include <topic_tools/shape_shifter.h>
 #include <yaml-cpp/yaml.h>
 
+#include <controller_manager_msgs/ListControllers.h>
 #include <controller_manager_msgs/LoadController.h>
 #include <controller_manager_msgs/SwitchController.h>
 #include <controller_manager_msgs/UnloadController.h>
@@ -185,6 +188,17 @@ class Spawner {
     loaded_.clear();
   }
   const std::vector<std::string>& loaded() const { return loaded_; }
+  // Of `names`, those the controller manager lists as "waiting": their start is accepted but
+  // not applied (mechsim applies a switch at the next tick, and a paused world does not tick).
+  std::vector<std::string> waiting(const std::vector<std::string>& names) const {
+    cmm::ListControllers srv;
+    std::vector<std::string> out;
+    if (!::ros::service::call(service("list_controllers"), srv)) return out;
+    for (const auto& c : srv.response.controller) {
+      if (c.state == "waiting" && std::find(names.begin(), names.end(), c.name) != names.end()) out.push_back(c.name);
+    }
+    return out;
+  }
 
  private:
   ::ros::NodeHandle nh_;
@@ -250,7 +264,15 @@ int run(int argc, char** argv) {
       return 1;
     }
     started = true;
-    ROS_INFO_STREAM("mechsim spawner: started " << controllers.size() << " controllers");
+    const std::vector<std::string> waiting = spawner.waiting(controllers);
+    if (waiting.empty()) {
+      ROS_INFO_STREAM("mechsim spawner: started " << controllers.size() << " controllers");
+    } else {
+      ROS_INFO_STREAM("mechsim spawner: loaded " << controllers.size() << " controllers; the simulation is paused: "
+                                                 << waiting.size()
+                                                 << " will start on unpause (/gazebo/unpause_physics; "
+                                                    "list_controllers shows them 'waiting')");
+    }
   }
 
   while (::ros::ok() && !g_signalled) ::ros::WallDuration(0.1).sleep();
@@ -263,6 +285,9 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Line by line into a log file too (roslaunch's output="log", a test's capture): INFO goes to
+  // stdout, which is otherwise block-buffered when it is not a terminal.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -175,6 +175,9 @@ std::vector<ControllerSummary> SimBridge::list_controllers() const {
     s.name = info.name;
     s.type = info.type;
     s.state = lifecycle_string(info.state);
+    // ros_control's "waiting": asked to start, not started yet (a switch made while paused
+    // applies at the first tick after unpause).
+    if (info.start_pending && info.state != control::ControllerLifecycle::Running) s.state = "waiting";
     for (const control::ResourceClaim& claim : info.claims) {
       s.claims.push_back({ros_control_interface(claim.interface), claim.joints});
     }

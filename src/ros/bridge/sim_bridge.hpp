@@ -68,7 +68,7 @@ struct ClaimedResources {
 
 struct ControllerSummary {
   std::string name, type;
-  std::string state;  // "initialized", "running", "stopped"
+  std::string state;  // "initialized", "running", "stopped", "waiting" (its start is pending)
   std::vector<ClaimedResources> claims;
 };
 

@@ -220,7 +220,7 @@ TEST_F(CC8Node, BadRequestsAreRefusedAndTheSimulationKeepsRunning) {
   EXPECT_FALSE(switch_controllers({"wheel_joint_FL_velocity_controller", "other_fl_controller"}, {}))
       << "conflicting resources under STRICT";
   EXPECT_FALSE(switch_controllers({"no_such_controller"}, {}));
-  EXPECT_FALSE(switch_controllers({"wheel_joint_FL_velocity_controller"}, {}, 0)) << "strictness 0 is invalid";
+  EXPECT_FALSE(switch_controllers({"wheel_joint_FL_velocity_controller"}, {}, 3)) << "strictness 3 is invalid";
   for (const auto& c : list_controllers()) EXPECT_NE(c.state, "running") << c.name;
 
   // BEST_EFFORT starts what it can.
