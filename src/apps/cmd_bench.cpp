@@ -11,6 +11,7 @@
 #include "apps/commands.hpp"
 #include "control/params.hpp"
 #include "description/robot_loader.hpp"
+#include "sim/controller_set.hpp"
 #include "sim/simulation.hpp"
 
 namespace mechsim::apps {
@@ -29,9 +30,10 @@ void run(const BenchArgs& args) {
   description::RobotModel robot = description::load_robot(args.robot.file, load_options(args.robot)).model;
   control::Params params;
   std::vector<std::string> start = args.start;
+  const bool usual_set = start.empty();
   if (!args.controllers.empty()) {
     params = controller_namespace(args.controllers, args.ns);
-    if (start.empty()) {
+    if (usual_set) {
       for (const std::string& k : params.keys()) {
         if (params.child(k).is_map() && params.child(k).has("type")) start.push_back(k);
       }
@@ -52,8 +54,14 @@ void run(const BenchArgs& args) {
       std::cerr << "warning: " << r.error << "\n";
     }
   }
+  // Without --start: the robot's usual set (sim::widest_conflict_free), not every controller of
+  // the YAML, so that the figures are those of the configuration its scenarios run.
+  if (usual_set) loaded = sim::widest_conflict_free(sim.controllers().list_controllers());
   const control::SwitchResult s = sim.controllers().switch_controllers(loaded, {}, control::SwitchStrictness::SkipConflicts);
   for (const std::string& skipped : s.skipped) std::cerr << "warning: " << skipped << "\n";
+  std::printf("controllers running (%s):", usual_set ? "default: the widest conflict-free set" : "--start");
+  for (const std::string& name : s.starting) std::printf(" %s", name.c_str());
+  std::printf("\n");
   sim.run_for(0.2);
 
   const auto ticks = static_cast<long>(args.seconds / sim.period());
@@ -88,7 +96,7 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   add_robot_options(cmd, args->robot);
   cmd->add_option("--controllers", args->controllers, "Controller YAML (all its controllers are loaded)");
   cmd->add_option("--namespace", args->ns, "Namespace of the controllers in the YAML");
-  cmd->add_option("--start", args->start, "Controllers to start (default: all in the namespace)");
+  cmd->add_option("--start", args->start, "Controllers to start (default: the widest conflict-free set of the namespace's controllers, e.g. the CC8's rover drive)");
   cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
   cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
   cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: euler (default), implicit or rk4")

@@ -2,10 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include "apps/commands.hpp"
 #include "sim/scenario.hpp"
@@ -53,6 +55,12 @@ void run(const RunArgs& args, CommandResult& result) {
   options.output_dir = args.output.empty() ? (std::filesystem::path("out") / scenario.name).string() : args.output;
   options.plots = !args.no_plots;
   options.progress = progress_printer();
+  // Warnings as they arise (at spawn, before a long run), each printed once.
+  auto printed = std::make_shared<std::vector<std::string>>();
+  options.warning = [printed](const std::string& text) {
+    std::cerr << "warning: " << text << "\n" << std::flush;
+    printed->push_back(text);
+  };
   std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time, "
             << physics::integrator_name(scenario.integrator) << " integrator\n" << std::flush;
   const sim::ScenarioResult r = sim::run_scenario(scenario, options);
@@ -60,7 +68,9 @@ void run(const RunArgs& args, CommandResult& result) {
             << r.final_yaw * 180.0 / 3.141592653589793 << " deg, real-time factor " << r.real_time_factor << "\n";
   if (!r.completed) std::cout << "did not complete: " << r.error << "\n";
   for (const sim::CheckOutcome& c : r.checks) std::cout << (c.passed ? "  PASS " : "  FAIL ") << c.detail << "\n";
-  for (const std::string& w : r.warnings) std::cerr << "warning: " << w << "\n";
+  for (const std::string& w : r.warnings) {
+    if (std::find(printed->begin(), printed->end(), w) == printed->end()) std::cerr << "warning: " << w << "\n";
+  }
   std::cout << "report: " << std::filesystem::absolute(options.output_dir).lexically_normal().string() << "/summary.json";
   for (const std::string& f : r.files) {
     if (f.ends_with(".png")) std::cout << ", " << f;

@@ -21,6 +21,7 @@ struct Physics::Data {
   std::vector<JointMode> modes;
   std::vector<ServoGains> gains;
   std::vector<std::string> geom_links;  // URDF link (or world geom) per MuJoCo geom
+  std::vector<int> robot_collision_geoms;
   // State before the current step, restored when a step fails.
   double saved_time = 0.0;
   std::vector<mjtNum> saved_qpos, saved_qvel, saved_act, saved_warm;
@@ -88,6 +89,7 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
     // Geom names are "<link>/collision/<i>" or "<link>/visual/<i>" (link names may hold '/').
     std::string name = n != nullptr ? n : "";
     auto cut = name.rfind("/collision/");
+    if (cut != std::string::npos) data_->robot_collision_geoms.push_back(g);
     if (cut == std::string::npos) cut = name.rfind("/visual/");
     data_->geom_links.push_back(cut == std::string::npos ? (name.empty() ? "world" : name) : name.substr(0, cut));
   }
@@ -311,6 +313,20 @@ void Physics::set_base_pose(const Pose& X_WB) {
   data_->stale = true;
 }
 
+void Physics::set_spawn_pose(const Pose& X_WB) {
+  mjModel* m = data_->m;
+  const int j = root_free_joint(m);
+  if (j < 0) return;
+  const Quat r = quat_normalized(X_WB.orientation);
+  const mjtNum values[7] = {X_WB.position.x, X_WB.position.y, X_WB.position.z, r.w, r.x, r.y, r.z};
+  std::copy(values, values + 7, m->qpos0 + m->jnt_qposadr[j]);
+  // The constants the compiler derives at qpos0 (inverse inertias that scale constraint
+  // softness), as if the model had been compiled at this pose.
+  mj_resetData(m, data_->d);
+  mj_setConst(m, data_->d);
+  reset();
+}
+
 void Physics::set_base_twist(const Twist& V) {
   const int j = root_free_joint(data_->m);
   if (j < 0) return;
@@ -378,6 +394,33 @@ std::size_t Physics::contacts(std::vector<Contact>& out) const {
     out.push_back(k);
   }
   return out.size();
+}
+
+Bounds Physics::robot_bounds() const {
+  refresh_kinematics();
+  const mjModel* m = data_->m;
+  const mjData* d = data_->d;
+  Bounds b;
+  for (const int g : data_->robot_collision_geoms) {
+    const mjtNum* p = d->geom_xpos + 3 * g;
+    const mjtNum* R = d->geom_xmat + 9 * g;  // row-major: R[3 i + j] = world axis i . geom axis j
+    const mjtNum* s = m->geom_size + 3 * g;
+    double half[3];
+    for (int i = 0; i < 3; ++i) {
+      const double rx = std::abs(R[3 * i]), ry = std::abs(R[3 * i + 1]), rz = std::abs(R[3 * i + 2]);
+      switch (m->geom_type[g]) {
+        case mjGEOM_SPHERE: half[i] = s[0]; break;
+        case mjGEOM_CAPSULE: half[i] = rz * s[1] + s[0]; break;
+        case mjGEOM_CYLINDER: half[i] = rz * s[1] + s[0] * std::sqrt(std::max(0.0, 1.0 - rz * rz)); break;
+        case mjGEOM_ELLIPSOID: half[i] = std::sqrt(rx * rx * s[0] * s[0] + ry * ry * s[1] * s[1] + rz * rz * s[2] * s[2]); break;
+        case mjGEOM_BOX: half[i] = rx * s[0] + ry * s[1] + rz * s[2]; break;
+        default: half[i] = m->geom_rbound[g]; break;
+      }
+    }
+    b.min = {std::min(b.min.x, p[0] - half[0]), std::min(b.min.y, p[1] - half[1]), std::min(b.min.z, p[2] - half[2])};
+    b.max = {std::max(b.max.x, p[0] + half[0]), std::max(b.max.y, p[1] + half[1]), std::max(b.max.z, p[2] + half[2])};
+  }
+  return b;
 }
 
 double Physics::ground_height(double x, double y) const {

@@ -52,6 +52,12 @@ struct Twist {
   description::Vec3 angular;  // rad/s
 };
 
+// An axis-aligned box in the world frame (m); empty when min > max.
+struct Bounds {
+  description::Vec3 min{1e300, 1e300, 1e300}, max{-1e300, -1e300, -1e300};
+  bool empty() const { return min.x > max.x; }
+};
+
 struct Contact {
   std::string_view link_a, link_b;  // URDF link names, or "ground" / "terrain"
   description::Vec3 position;       // world frame (m)
@@ -124,12 +130,21 @@ class Physics {
   // pose X_W<root> and twist in the world frame at the root body's origin.
   void set_base_pose(const description::Pose& X_WB);
   void set_base_twist(const Twist& V_WB);
+  // Moves a floating robot's spawn pose X_W<root> (where reset() returns) and resets to it; for
+  // set-up only (recomputes the model's constants, allocates nothing but is not for a loop).
+  // Ignored when the robot is fixed to the world.
+  void set_spawn_pose(const description::Pose& X_WB);
 
   // Pose X_WL and twist of URDF link `link` (PhysicsModel::link_index).
   description::Pose link_pose(std::size_t link) const;
   Twist link_twist(std::size_t link) const;
   description::Pose base_pose() const;  // the root link
   Twist base_twist() const;
+
+  // The box around the robot's collision geometry in its current pose (meshes by their bounding
+  // spheres); empty for a robot without collision geometry. The robot's footprint on the ground
+  // is its x-y extent.
+  Bounds robot_bounds() const;
 
   // Contacts of the last step. Fills `out` (cleared first); allocates only when `out` has
   // too little capacity. Returns the number of contacts.

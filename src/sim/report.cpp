@@ -69,10 +69,27 @@ void write_terrain(const physics::Heightmap& map, const fs::path& file, double& 
   }
 }
 
+// The command the joint's hardware interface carries: effort (N m, N), or the set point of its
+// position (rad, m) or velocity (rad/s, m/s) servo.
+double command_of(const mechanism::JointState& j) {
+  switch (j.command_mode) {
+    case mechanism::HardwareInterface::Position: return j.commanded_position;
+    case mechanism::HardwareInterface::Velocity: return j.commanded_velocity;
+    case mechanism::HardwareInterface::Effort: break;
+  }
+  return j.commanded_effort;
+}
+
 }  // namespace
 
 Recorder::Recorder(const Simulation& sim, const std::string& dir, const std::vector<std::string>& trajectory_controllers)
     : sim_(sim) {
+  // Joints no transmission drives (the CC8's rocker and bogies, the parts of a planar joint)
+  // are recorded from the physics.
+  const std::vector<physics::JointInfo>& physics_joints = sim.physics().model().joints();
+  for (std::size_t p = 0; p < physics_joints.size(); ++p) {
+    if (sim.mechanism().joint_index(physics_joints[p].name) < 0) passive_joints_.push_back(p);
+  }
   auto& manager = const_cast<Simulation&>(sim).controllers();
   for (const std::string& name : trajectory_controllers) {
     control::Controller* c = manager.controller(name);
@@ -123,6 +140,10 @@ Recorder::Recorder(const Simulation& sim, const std::string& dir, const std::vec
   for (const mechanism::JointInfo& j : sim.mechanism().joints) {
     joints_ << ',' << j.name << "/position," << j.name << "/velocity," << j.name << "/effort," << j.name << "/command";
   }
+  for (const std::size_t p : passive_joints_) {
+    const std::string& name = sim.physics().model().joints()[p].name;
+    joints_ << ',' << name << "/position," << name << "/velocity";
+  }
   joints_ << '\n';
   controllers_ << "time";
   for (const Channel& ch : channels_) {
@@ -167,8 +188,9 @@ void Recorder::sample(const control::StatePort<control::OdometrySnapshot>* odome
   }
   joints_ << t;
   for (const mechanism::JointState& j : sim_.mechanism_state().joints) {
-    joints_ << ',' << j.position << ',' << j.velocity << ',' << j.measured_effort << ',' << j.commanded_effort;
+    joints_ << ',' << j.position << ',' << j.velocity << ',' << j.measured_effort << ',' << command_of(j);
   }
+  for (const std::size_t p : passive_joints_) joints_ << ',' << sim_.physics().position(p) << ',' << sim_.physics().velocity(p);
   joints_ << '\n';
   const description::Pose X_WB = sim_.physics().base_pose();
   base_ << t << ',' << X_WB.position.x << ',' << X_WB.position.y << ',' << X_WB.position.z << ','
@@ -336,10 +358,16 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
   j["completed"] = result.completed;
   j["passed"] = result.passed;
   if (!result.error.empty()) j["error"] = result.error;
+  j["events"] = nlohmann::ordered_json::array();
+  for (const RunEvent& e : result.events) j["events"].push_back({{"t_s", e.time}, {"event", e.kind}, {"detail", e.detail}});
   j["sim_time_s"] = result.sim_time;
   j["wall_time_s"] = result.wall_time;
   j["real_time_factor"] = result.real_time_factor;
   j["distance_m"] = result.distance;
+  const description::Pose& X_WS = sim.spawn_pose();
+  j["spawn_pose"] = {{"x", X_WS.position.x}, {"y", X_WS.position.y}, {"z", X_WS.position.z},
+                     {"roll_rad", roll_of(X_WS.orientation)}, {"pitch_rad", pitch_of(X_WS.orientation)},
+                     {"yaw_rad", yaw_of(X_WS.orientation)}};
   j["final_pose"] = {{"x", result.final_x}, {"y", result.final_y}, {"z", result.final_z}, {"yaw_rad", result.final_yaw}};
   j["max_tilt_rad"] = result.max_tilt;
   j["yaw_change_rad"] = result.yaw_change;

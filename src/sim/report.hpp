@@ -18,7 +18,8 @@ namespace mechsim::sim {
 // Samples joint states, controller states and the base pose into CSV files (when `dir` is not
 // empty) and accumulates each controller's tracking error (always). The trajectory controllers
 // named in `trajectory_controllers` also get their desired and actual positions per joint
-// recorded into trajectory.csv.
+// recorded into trajectory.csv. sample() belongs in a control observer of the simulation
+// (Simulation::add_control_observer), where every file's row stamped t holds the state at t.
 class Recorder {
  public:
   Recorder(const Simulation& sim, const std::string& dir, const std::vector<std::string>& trajectory_controllers = {});
@@ -40,6 +41,7 @@ class Recorder {
  private:
   const Simulation& sim_;
   std::vector<Channel> channels_;
+  std::vector<std::size_t> passive_joints_;  // physics joints outside the mechanism
   std::vector<const control::StatePort<control::JointTrajectoryControllerState>*> trajectory_states_;
   std::vector<std::string> trajectory_columns_;
   std::ofstream joints_, controllers_, base_, trajectory_;

@@ -403,6 +403,14 @@ Scenario load_scenario(const std::string& path) {
       if (world->has("z_min")) s.world.heightmap.z_min = world->get<double>("z_min");
       if (world->has("z_max")) s.world.heightmap.z_max = world->get<double>("z_max");
       if (auto boxes = world->find("boxes")) s.boxes = read_boxes(*boxes);
+      const std::string leaving = world->get<std::string>("on_leaving", "stop");
+      if (leaving == "stop") {
+        s.on_leaving = LeavingTerrain::Stop;
+      } else if (leaving == "continue") {
+        s.on_leaving = LeavingTerrain::Continue;
+      } else {
+        fail(world->child("on_leaving"), "expected 'stop' or 'continue', got '" + leaving + "'");
+      }
     }
     if (auto spawn = root.find("spawn")) {
       s.spawn.x = spawn->get<double>("x", 0.0);
@@ -411,6 +419,7 @@ Scenario load_scenario(const std::string& path) {
       s.spawn.roll = spawn->get<double>("roll", 0.0);
       s.spawn.pitch = spawn->get<double>("pitch", 0.0);
       s.spawn.yaw = spawn->get<double>("yaw", 0.0);
+      s.settle_on_ground = !spawn->has("roll") && !spawn->has("pitch");
       if (auto joints = spawn->find("joints")) {
         if (!joints->is_map()) fail(*joints, "expected a map of joint name -> position (rad or m)");
         for (const std::string& j : joints->keys()) s.initial_joints[j] = finite(*joints, j, 0.0);

@@ -10,12 +10,22 @@
 //     lenient: false
 //   world:
 //     name: empty                     # empty | mars_yard_2024 (seed) | heightmap file (size_x ...)
+//     # Leaving the usable ground (a height field's footprint, or the Mars Yard's ground inside its
+//     # 1.5 m flat border; `empty` has no edge) is an event, recorded in summary.json:
+//     on_leaving: stop                # stop (default): the run ends there, not completed;
+//                                     # continue: a warning, the run goes on (until the robot
+//                                     # falls 10 m below the lowest ground: always a stop)
 //     boxes:                          # optional objects (physics::WorldBox), any world
 //       - {name: block, size: [0.03, 0.04, 0.03], x: 0.8, y: -0.2, z: 0.7,   # m (full edges; centre)
 //          roll: 0, pitch: 0, yaw: 0, fixed: true, mass: 1.0}                 # rad; kg (free boxes)
 //          # or an orientation quaternion instead of roll/pitch/yaw: quat: [w, x, y, z]
 //   spawn:
-//     x: 0, y: 0, z: 0.02, yaw: 0     # m, rad (roll, pitch, yaw) of the root link
+//     x: 0, y: 0, z: 0.02, yaw: 0     # m, rad (roll, pitch, yaw) of the root link. On a height
+//                                     # field (mars_yard_2024, a heightmap file) z is measured
+//                                     # from the ground under (x, y), not from z = 0, and
+//                                     # without roll or pitch the robot is stood on the ground
+//                                     # plane fitted under its footprint (roll and pitch from
+//                                     # its normal, z along it); give roll/pitch to fix them
 //     joints: {r_gripper_l_finger_joint: 0.3}   # optional initial joint positions (rad, m), as
 //                                               # Gazebo's spawn_model -J; physics joints only
 //   controllers:
@@ -140,6 +150,9 @@ struct Check {
   std::optional<double> at;                             // Joint: s (absent: the end)
 };
 
+// What a run does when the robot leaves the usable ground.
+enum class LeavingTerrain { Stop, Continue };
+
 struct Scenario {
   std::string name;
   std::string file;  // where it was read from
@@ -148,7 +161,9 @@ struct Scenario {
   std::map<std::string, std::string> packages;
   bool lenient = false;
   WorldConfig world;
+  LeavingTerrain on_leaving = LeavingTerrain::Stop;  // world.on_leaving
   physics::SpawnPose spawn;
+  bool settle_on_ground = true;  // spawn has neither roll nor pitch (SimulationOptions::settle_on_ground)
   std::map<std::string, double> initial_joints;  // spawn.joints: physics joint -> rad or m
   std::vector<physics::WorldBox> boxes;          // world.boxes, added to the world's own
   physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "sim/route_follower.hpp"
 #include "sim/scenario_goals.hpp"
 #include "sim/simulation.hpp"
+#include "sim/terrain_watch.hpp"
 
 namespace mechsim::sim {
 namespace {
@@ -138,17 +140,14 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   options.period = s.period;
   options.integrator = s.integrator;
   options.spawn = s.spawn;
+  options.settle_on_ground = s.settle_on_ground;
   options.differential = s.differential;
+  // Initial joint positions (Gazebo's spawn_model -J): set before the first tick, so the
+  // controllers starting in it hold them.
+  options.initial_joints = s.initial_joints;
   try {
     auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options);
     sim->load_and_start(s.start);
-    // Initial joint positions (Gazebo's spawn_model -J): set before the first tick, so the
-    // controllers starting in it hold them.
-    for (const auto& [joint, position] : s.initial_joints) {
-      const auto j = sim->physics().model().joint_index(joint);
-      if (!j) throw ScenarioError("spawn/joints/" + joint + ": the robot's physics has no joint '" + joint + "'");
-      sim->physics().set_joint_state(*j, position);
-    }
     return sim;
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": " + e.what());
@@ -193,6 +192,11 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   const std::uint64_t record_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(1.0 / (s.record_rate * s.period))));
   const std::uint64_t route_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(0.02 / s.period)));
   const std::uint64_t progress_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(0.5 / s.period)));
+  // Rows are sampled inside the tick, after the controllers' update (every file's row t is the
+  // state at t), every record period and at the run's last tick.
+  sim->add_control_observer([&](const Simulation& at) {
+    if (at.ticks() % record_every == 0 || at.ticks() + 1 == total_ticks) recorder.sample(odometry);
+  });
 
   std::vector<double> reach_best(s.checks.size(), 1e300);
   // Joint checks: the mechanism joint, and its position once sampled.
@@ -207,6 +211,42 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   auto joint_position = [&](std::size_t k) {
     return sim->mechanism_state().joints[static_cast<std::size_t>(check_joint[k])].position;
   };
+  auto warn = [&](const std::string& text) {
+    result.warnings.push_back(text);
+    if (options.warning) options.warning(text);
+  };
+  // Leaving the usable ground is an event: the run stops (or goes on, as the scenario says).
+  const TerrainWatch terrain(sim->world());
+  bool off_terrain = false;
+  auto watch_terrain = [&]() -> bool {  // true: stop the run
+    if (!terrain.active()) return false;
+    const physics::Bounds footprint = sim->physics().robot_bounds();
+    char at[48];
+    std::snprintf(at, sizeof at, "t=%.3f s: ", sim->time());
+    if (terrain.fallen(footprint)) {
+      result.events.push_back({sim->time(), "fell_off_world", "the robot fell " + std::to_string(TerrainWatch::kFallDepth) + " m below the lowest ground"});
+      result.error = at + result.events.back().detail;
+      return true;
+    }
+    const std::optional<std::string> outside = terrain.outside(footprint);
+    if (!outside || off_terrain) {
+      off_terrain = off_terrain && outside.has_value();
+      return false;
+    }
+    off_terrain = true;
+    result.events.push_back({sim->time(), "left_terrain", *outside});
+    if (s.on_leaving == LeavingTerrain::Stop) {
+      result.error = at + std::string("left the usable ground (world.on_leaving: stop): ") + *outside;
+      return true;
+    }
+    warn(at + std::string("left the usable ground (world.on_leaving: continue): ") + *outside);
+    return false;
+  };
+  if (terrain.active()) {
+    if (const std::optional<std::string> outside = terrain.outside(sim->physics().robot_bounds())) {
+      warn("at spawn, " + *outside + (s.on_leaving == LeavingTerrain::Stop ? " (world.on_leaving: stop ends the run at once)" : ""));
+    }
+  }
   double last_x = sim->physics().base_pose().position.x, last_y = sim->physics().base_pose().position.y;
   double last_yaw = yaw_of(sim->physics().base_pose().orientation);
   const auto wall_start = std::chrono::steady_clock::now();
@@ -230,7 +270,6 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         for (const HeldTwist& h : held) h.port->write(h.twist);
       }
     }
-    if (tick % record_every == 0) recorder.sample(odometry);
 
     const TickResult r = sim->step();
     if (!r) {
@@ -245,6 +284,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     result.yaw_change += wrap_angle(yaw_after - last_yaw);
     last_yaw = yaw_after;
     goals.poll(sim->time());
+    if (watch_terrain()) break;
     result.max_tilt = std::max(result.max_tilt, tilt_of(after.orientation));
     for (std::size_t k = 0; k < s.checks.size(); ++k) {
       const Check& c = s.checks[k];
@@ -255,7 +295,6 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     }
     if (options.progress && (tick + 1) % progress_every == 0) options.progress({sim->time(), s.duration, rtf_now()});
   }
-  recorder.sample(odometry);
   result.completed = result.error.empty();
   result.sim_time = sim->time();
   result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -339,7 +378,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         break;
       }
       case Check::Kind::Joint: {
-        // The mechanism state is read from the physics at the start of a tick: one period old at most.
+        // Sampled after the first tick that ends at or after `at`: the state at that time.
         if (c.at && !joint_sample[k]) {  // a shortened run (--duration) or a divergence
           out.passed = false;
           std::snprintf(buf, sizeof buf, "joint %s at t=%.3f s: not sampled, the run ended at t=%.3f s", c.joint.c_str(), *c.at,

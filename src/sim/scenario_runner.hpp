@@ -2,13 +2,20 @@
 // Runs a Scenario headless and writes its report: CSV files of joint states, controller states
 // and the base pose, summary.json, and PNG plots drawn by gnuplot.
 //
-// Output folder:
-//   joints.csv       time, then per mechanism joint: position, velocity, measured effort, commanded effort
+// Output folder. Every CSV row stamped t holds the state at t: the rows are sampled inside the
+// tick at t after the controllers' update, every 1/record_rate s and at the run's last tick (one
+// period before its end; summary.json's final pose is the state at the end).
+//   joints.csv       time, then per mechanism joint (those a transmission drives, in mechanism
+//                    order): position, velocity, measured effort, command (effort, or the set
+//                    point of a position/velocity interface); then every other non-fixed joint
+//                    of the physics (passive ones: the CC8's rocker and bogies): position, velocity
 //   controllers.csv  time, then per controller with a joint state port: set point, process value, error, command
 //   base.csv         time, ground-truth base pose (x, y, z, roll, pitch, yaw) and odometry (x, y, yaw) if any
 //   trajectory.csv   time, then per joint of each controller given a trajectory goal in the
 //                    timeline: desired and actual position (rad, m) from its state
-//   summary.json     distance, final pose, tracking error per controller, trajectory goals (RMS
+//   summary.json     completed (false, with the error, when the physics diverged or an event
+//                    stopped the run), events (leaving the usable ground: time, where), distance,
+//                    final pose, tracking error per controller, trajectory goals (RMS
 //                    and max error per joint while active, result code), gripper goals (status,
 //                    time to finish, reached/stalled, gap, effort), real-time factor, checks
 //   path.png, tracking.png, errors.png, trajectory.png (desired vs actual per joint) (gnuplot)
@@ -33,6 +40,16 @@ struct RunOptions {
   std::string output_dir;  // created if needed; empty: no files at all
   bool plots = true;       // draw PNGs with gnuplot (needs gnuplot on PATH)
   std::function<void(const RunProgress&)> progress;  // called about every 0.5 s of sim time
+  // Called with each warning when it arises (at spawn, during the run), besides
+  // ScenarioResult::warnings.
+  std::function<void(const std::string&)> warning;
+};
+
+// Something that happened to the robot during a run (summary.json "events").
+struct RunEvent {
+  double time = 0.0;  // s
+  std::string kind;   // left_terrain (the usable ground), fell_off_world
+  std::string detail;
 };
 
 struct CheckOutcome {
@@ -79,9 +96,10 @@ struct GripperGoalOutcome {
 };
 
 struct ScenarioResult {
-  bool completed = false;  // ran its whole duration (no divergence)
+  bool completed = false;  // ran its whole duration (no divergence, not stopped by an event)
   bool passed = false;     // completed and every check passed
   std::string error;       // why it did not complete
+  std::vector<RunEvent> events;
   double sim_time = 0.0;   // s
   double wall_time = 0.0;  // s
   double real_time_factor = 0.0;

@@ -11,6 +11,8 @@
 #include "mechanism/pr2_gripper_transmission.hpp"
 #include "mechanism/propagation.hpp"
 #include "physics/heightmap_sample.hpp"
+#include "physics/transform.hpp"
+#include "sim/ground_plane.hpp"
 
 namespace mechsim::sim {
 namespace {
@@ -71,6 +73,8 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   }
   physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
   physics_ = std::make_unique<physics::Physics>(physics_model_);
+  if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
+  spawn_pose_ = physics_->base_pose();
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   fill_description_params(controller_params, robot_);
@@ -146,8 +150,36 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     gap_from_fingers_.push_back(std::move(g));
   }
   add_reflected_inertia_for_safety_limits();
+  // After the armatures: they are computed at the zero configuration, as before spawn joints existed.
+  apply_initial_joints();
   paused_.store(options_.start_paused);
   read_physics();
+}
+
+namespace {
+constexpr double kLevel = 1e-4;  // rad: a fitted slope below this is level ground
+}  // namespace
+
+void Simulation::settle_on_ground() {
+  const physics::Bounds robot = physics_->robot_bounds();  // spawned level
+  if (robot.empty()) return;
+  const physics::SpawnPose& spawn = options_.spawn;
+  const GroundPlane plane = fit_ground_plane(*world_.spec.terrain, {robot.min.x, robot.max.x, robot.min.y, robot.max.y},
+                                             spawn.x, spawn.y);
+  if (plane.slope() < kLevel) return;  // level ground (the Mars Yard's start pad): as built
+  const RollPitch rp = roll_pitch_on(plane, spawn.yaw);
+  // The clearance spawn.z along the normal (as on level ground) is spawn.z / cos(slope) upright.
+  const double z = plane.z0 + spawn.z / std::cos(plane.slope());
+  physics_->set_spawn_pose({{spawn.x, spawn.y, z}, physics::quat_from_rpy(rp.roll, rp.pitch, spawn.yaw)});
+}
+
+void Simulation::apply_initial_joints() {
+  for (const auto& [joint, position] : options_.initial_joints) {
+    const auto j = physics_model_->joint_index(joint);
+    if (!j) throw std::invalid_argument("spawn/joints/" + joint + ": the robot's physics has no joint '" + joint + "'");
+    if (!std::isfinite(position)) throw std::invalid_argument("spawn/joints/" + joint + ": position must be finite");
+    physics_->set_joint_state(*j, position);
+  }
 }
 
 Simulation::~Simulation() = default;
@@ -249,6 +281,7 @@ TickResult Simulation::step() {
   read_physics();
   manager_->update(time(), options_.period);
   write_physics();
+  for (const Observer& observer : control_observers_) observer(*this);
   const physics::StepStatus status = physics_->step();
   ++ticks_;
   if (!status.ok()) {
@@ -263,6 +296,9 @@ TickResult Simulation::step() {
     }
     return result;
   }
+  // The mechanism state describes the new time() for observers and callers between ticks (the
+  // read at the start of the next tick repeats it, for writes to the physics in between).
+  read_physics();
   for (const Observer& observer : observers_) observer(*this);
   return {};
 }
@@ -311,6 +347,7 @@ void Simulation::pace() {
 
 void Simulation::reset() {
   physics_->reset();
+  apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
   const mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
   *mechanism_state_ = fresh;

@@ -9,7 +9,13 @@
 //   3. actuator commands -> transmissions backwards -> joint commands -> physics (effort, or the
 //      set point of the joint's implicit position/velocity servo);
 //   4. one physics step; simulation time advances by exactly one period;
-//   5. observers (publishers, recorders) run; each decides whether it is due.
+//   5. the mechanism state is read from the physics again, so that it describes the new time();
+//      then observers (publishers, recorders) run; each decides whether it is due.
+//
+// Between ticks every state the simulation exposes (physics, mechanism state) describes time().
+// Control observers run inside the tick, after step 3 and before the physics step: there the
+// physics, the mechanism state, the controllers' states and the commands they just sent all
+// describe time() (what a recorder wants: one row, one instant).
 //
 // Time: simulation time is ticks * period and never goes backwards. reset() puts the world and
 // the robot back in the spawn state and restarts the running controllers, but time goes on
@@ -48,6 +54,16 @@ struct SimulationOptions {
   physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;
   // Spawn pose of the root link. On terrain, z is measured from the ground under (x, y).
   physics::SpawnPose spawn;
+  // On a height field, stand a floating robot on the ground plane fitted under its footprint:
+  // roll and pitch from the plane's normal (spawn.roll and spawn.pitch are ignored, spawn.yaw
+  // stays the heading) and spawn.z measured along the normal from the plane under (x, y). A robot
+  // spawned level on a steep slope lands hard and tips. Nothing changes on level ground (a
+  // fitted slope under 1e-4 rad, which float heights of a level pad can reach) or on `empty`.
+  // Scenarios turn it on unless they give roll or pitch.
+  bool settle_on_ground = false;
+  // Initial joint positions (rad or m) by physics joint name, as Gazebo's spawn_model -J: set
+  // before the first tick and again by reset(). An unknown joint is an error.
+  std::map<std::string, double> initial_joints;
   bool start_paused = false;
   // 0: as fast as possible (headless default); R > 0: paced so that simulation time runs R times
   // as fast as wall-clock time. The pace is kept across run_for() calls against one wall-clock
@@ -117,6 +133,8 @@ class Simulation {
   const description::RobotModel& robot() const { return robot_; }
   const World& world() const { return world_; }
   const SimulationOptions& options() const { return options_; }
+  // X_W<root> at spawn (and after reset()): options().spawn on the ground, settled on a slope.
+  const description::Pose& spawn_pose() const { return spawn_pose_; }
   physics::Physics& physics() { return *physics_; }
   const physics::Physics& physics() const { return *physics_; }
   const mechanism::MechanismModel& mechanism() const { return *mechanism_; }
@@ -135,6 +153,9 @@ class Simulation {
 
   // Observers run after every tick, in the loop thread, in the order added.
   void add_observer(Observer observer) { observers_.push_back(std::move(observer)); }
+  // Control observers run in every tick after the controllers' update and the commands' write,
+  // before the physics step (see the top of this file), in the loop thread, in the order added.
+  void add_control_observer(Observer observer) { control_observers_.push_back(std::move(observer)); }
 
   // Loads a controller from the controller parameters, first filling what its type takes from
   // the robot description where the parameters leave it out (the rover drive's and the PR2
@@ -149,10 +170,13 @@ class Simulation {
   void read_physics();
   void write_physics();
   void apply_requests();
+  void apply_initial_joints();
+  void settle_on_ground();
 
   description::RobotModel robot_;
   World world_;
   SimulationOptions options_;
+  description::Pose spawn_pose_;
   std::shared_ptr<const physics::PhysicsModel> physics_model_;
   std::unique_ptr<physics::Physics> physics_;
   std::unique_ptr<mechanism::MechanismModel> mechanism_;
@@ -186,7 +210,7 @@ class Simulation {
   // Sleeps until the wall-clock time at which the current simulation time is due (loop thread).
   void pace();
 
-  std::vector<Observer> observers_;
+  std::vector<Observer> observers_, control_observers_;
   // Pacing anchor: simulation time `pace_sim_` was due at wall time `pace_wall_`.
   bool pace_anchored_ = false;
   std::chrono::steady_clock::time_point pace_wall_{};

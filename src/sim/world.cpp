@@ -1,5 +1,7 @@
 #include "sim/world.hpp"
 
+#include <cstdio>
+
 #include "physics/terrain_world.hpp"
 
 namespace mechsim::sim {
@@ -17,6 +19,17 @@ World make_world(const WorldConfig& config) {
   World world;
   world.name = config.name;
   world.mars_yard = std::move(terrain.yard);
+  if (terrain.usable) {
+    world.usable = terrain.usable;
+    const double border = terrain.heightmap ? (terrain.heightmap->size_x - (terrain.usable->x_max - terrain.usable->x_min)) / 2 : 0.0;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", border);
+    world.usable_what = config.name + "'s usable ground (inside its " + text + " m border)";
+  } else if (terrain.heightmap) {
+    const double hx = terrain.heightmap->size_x / 2, hy = terrain.heightmap->size_y / 2;
+    world.usable = physics::Region{-hx, hx, -hy, hy};
+    world.usable_what = "the height field of " + config.name + " (no ground past its edges)";
+  }
   if (terrain.heightmap) {
     world.spec.kind = physics::WorldSpec::Kind::Heightmap;
     world.spec.terrain = std::move(terrain.heightmap);

@@ -10,6 +10,7 @@
 #include "physics/heightmap_io.hpp"
 #include "physics/mars_yard.hpp"
 #include "physics/physics_options.hpp"
+#include "physics/terrain_stats.hpp"
 
 namespace mechsim::sim {
 
@@ -27,6 +28,11 @@ struct World {
   std::string name;
   physics::WorldSpec spec;                     // what the physics builds
   std::optional<physics::MarsYard> mars_yard;  // features, for route planning and reports
+  // The ground a robot may use (m, W): the Mars Yard's usable ground inside its flat border, a
+  // height field's footprint (past its edges there is no ground); none for the endless plane of
+  // `empty`. `usable_what` names it in messages.
+  std::optional<physics::Region> usable;
+  std::string usable_what;
 };
 
 // Throws WorldError (unknown name, unreadable heightmap: the message names the file).
