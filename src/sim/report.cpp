@@ -280,6 +280,20 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
     }
     if (result.has_odometry) plots += base + " using 8:9 with lines lw 2 dt 2 lc rgb '#ff00ff' title 'odometry', ";
     plots += base + " using 2:3 with lines lw 3 lc rgb '#0050ff' title 'true path', ";
+    if (const auto& u = sim.world().usable) {
+      std::ofstream(dir / "usable.csv") << "x,y\n" << u->x_min << ',' << u->y_min << '\n' << u->x_max << ',' << u->y_min << '\n'
+                                        << u->x_max << ',' << u->y_max << '\n' << u->x_min << ',' << u->y_max << '\n'
+                                        << u->x_min << ',' << u->y_min << '\n';
+      plots += quoted((dir / "usable.csv").string()) + " using 1:2 with lines lw 2 dt 2 lc rgb '#ffcc00' title 'usable ground', ";
+    }
+    if (!result.events.empty()) {
+      std::ofstream events(dir / "events.csv");
+      events << "x,y\n";
+      for (const RunEvent& e : result.events) events << e.x << ',' << e.y << '\n';
+      events.close();
+      plots += quoted((dir / "events.csv").string()) + " using 1:2 with points pt 2 ps 3 lw 3 lc rgb '#e00000' title " +
+               quoted(result.events.front().kind == "left_terrain" ? "left the usable ground" : result.events.front().kind) + ", ";
+    }
     plots += base + " every ::1::1 using 2:3 with points pt 5 ps 2 lc rgb '#000000' title 'start'\n";
     const std::string script = gp.str() + "plot " + plots;
     if (const std::string err = run_gnuplot(dir, "path", script); !err.empty()) {
@@ -359,7 +373,9 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
   j["passed"] = result.passed;
   if (!result.error.empty()) j["error"] = result.error;
   j["events"] = nlohmann::ordered_json::array();
-  for (const RunEvent& e : result.events) j["events"].push_back({{"t_s", e.time}, {"event", e.kind}, {"detail", e.detail}});
+  for (const RunEvent& e : result.events) {
+    j["events"].push_back({{"t_s", e.time}, {"event", e.kind}, {"x_m", e.x}, {"y_m", e.y}, {"detail", e.detail}});
+  }
   j["sim_time_s"] = result.sim_time;
   j["wall_time_s"] = result.wall_time;
   j["real_time_factor"] = result.real_time_factor;

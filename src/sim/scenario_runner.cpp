@@ -221,10 +221,11 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   auto watch_terrain = [&]() -> bool {  // true: stop the run
     if (!terrain.active()) return false;
     const physics::Bounds footprint = sim->physics().robot_bounds();
+    const description::Vec3 where = sim->physics().base_pose().position;
     char at[48];
     std::snprintf(at, sizeof at, "t=%.3f s: ", sim->time());
     if (terrain.fallen(footprint)) {
-      result.events.push_back({sim->time(), "fell_off_world", "the robot fell " + std::to_string(TerrainWatch::kFallDepth) + " m below the lowest ground"});
+      result.events.push_back({sim->time(), "fell_off_world", "the robot fell 10 m below the lowest ground", where.x, where.y});
       result.error = at + result.events.back().detail;
       return true;
     }
@@ -234,7 +235,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       return false;
     }
     off_terrain = true;
-    result.events.push_back({sim->time(), "left_terrain", *outside});
+    result.events.push_back({sim->time(), "left_terrain", *outside, where.x, where.y});
     if (s.on_leaving == LeavingTerrain::Stop) {
       result.error = at + std::string("left the usable ground (world.on_leaving: stop): ") + *outside;
       return true;

@@ -50,6 +50,7 @@ struct RunEvent {
   double time = 0.0;  // s
   std::string kind;   // left_terrain (the usable ground), fell_off_world
   std::string detail;
+  double x = 0.0, y = 0.0;  // m, where the base was (world frame)
 };
 
 struct CheckOutcome {

@@ -23,7 +23,7 @@ class TerrainWatch {
   // The robot's top is this far (m) below the lowest ground: it has fallen off the world.
   bool fallen(const physics::Bounds& robot) const { return usable_ && !robot.empty() && robot.max.z < lowest_ - kFallDepth; }
 
-  static constexpr double kFallDepth = 10.0;  // m
+  static constexpr double kFallDepth = 10.0;  // m (the event's text says 10 m)
 
  private:
   std::optional<physics::Region> usable_;

@@ -90,6 +90,7 @@ TEST_F(TerrainEdge, DrivingOffAHeightFieldsEdgeStopsTheRunAndSaysWhy) {
   EXPECT_NE(summary["error"].get<std::string>().find("left the usable ground"), std::string::npos);
   ASSERT_EQ(summary["events"].size(), 1u);
   EXPECT_EQ(summary["events"][0]["event"], "left_terrain");
+  EXPECT_NEAR(summary["events"][0]["x_m"].get<double>(), r.final_x, 0.01) << "where the base was when it left";
   std::cout << "[ figures  ] " << r.error << "\n";
 }
 
