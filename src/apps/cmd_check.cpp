@@ -4,7 +4,8 @@
 // stderr with exit status 0.
 //
 // The command is a list of steps over one CheckContext: options are gathered in CheckOptions,
-// the robot is loaded once, then each check of the loaded robot runs in turn. A further check
+// the robot is loaded once, then each check of the loaded robot runs in turn (the summary, the
+// meshes the physics would leave out, the controllers). A further check
 // (`--controllers FILE.yaml` is one) adds its option in add_check_command and a step in run_check.
 #include <filesystem>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "apps/commands.hpp"
 #include "control/controller_check.hpp"
 #include "mechanism/build_mechanism.hpp"
+#include "physics/physics_model.hpp"
 #include "sim/simulation.hpp"
 #include "description/robot_loader.hpp"
 #include "description/robot_summary.hpp"
@@ -65,6 +67,17 @@ void controllers_step(const CheckOptions& options, CheckContext& context, std::o
   if (loaded != checks.size()) context.failed = true;
 }
 
+// The mesh geoms the simulation's physics would leave out (a file it cannot find or read), once
+// each with the link and the path tried, among the warnings.
+void meshes_step(CheckContext& context) {
+  try {
+    const std::vector<std::string> w = physics::mesh_warnings(context.robot.model);
+    context.warnings.insert(context.warnings.end(), w.begin(), w.end());
+  } catch (const std::exception& e) {
+    context.warnings.push_back(std::string("meshes not checked: ") + e.what());
+  }
+}
+
 void summary_step(const CheckContext& context, std::ostream& out) {
   out << description::summarize_robot(context.robot.model);
 }
@@ -73,6 +86,7 @@ void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err
   CheckContext context;
   load_step(options, context);
   summary_step(context, out);
+  meshes_step(context);
   if (!options.controllers.empty()) controllers_step(options, context, out);
   for (const std::string& w : context.warnings) err << "warning: " << w << "\n";
   if (context.failed) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
@@ -61,6 +62,28 @@ std::array<double, 6> inertia_in_link_frame(const description::Inertial& in) {
       for (int k = 0; k < 3; ++k) out[i][j] += RI[i][k] * R[j][k];
   return {out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]};
 }
+
+}  // namespace
+
+std::string left_out_mesh_warning(const PlannedGeom& g, const MeshAsset* asset) {
+  // Once per geom, naming the link, the mesh as written and the file tried: a collision mesh
+  // left out is a link that falls through the ground or through the robot.
+  const description::Geometry& geo = g.geometry;
+  std::string why;
+  std::error_code ignored;
+  if (geo.mesh_path.empty()) {
+    why = "no file for it (an unknown package? --package NAME=DIR or ROS_PACKAGE_PATH)";
+  } else {
+    why = !std::filesystem::exists(geo.mesh_path, ignored) ? "no such file"
+          : asset != nullptr && !asset->error.empty()      ? asset->error
+                                                           : "MuJoCo could not compile it";
+    why += " (path tried: " + geo.mesh_path + ")";
+  }
+  return "link '" + g.link + "': " + (g.visual ? "visual" : "collision") + " mesh '" + geo.mesh_uri + "' (geom '" +
+         g.name + "') left out: " + why;
+}
+
+namespace {
 
 class Writer {
  public:
@@ -235,19 +258,11 @@ class Writer {
         break;
       case GeometryType::Sphere: shape << " type=\"sphere\" size=\"" << num(geo.radius) << "\""; break;
       case GeometryType::Mesh: {
-        const std::string what = (g.visual ? "visual" : "collision") + std::string(" geom '") + g.name + "'";
-        if (geo.mesh_path.empty()) {
-          doc_.warnings.push_back(what + ": mesh '" + geo.mesh_uri + "' could not be resolved to a file; left out");
-          return;
-        }
         const std::string key = mesh_key(geo.mesh_path, geo.mesh_scale);
-        auto it = usable_.find(key);
+        auto it = geo.mesh_path.empty() ? usable_.end() : usable_.find(key);
         if (it == usable_.end()) {
-          auto any = all_.find(key);
-          const std::string why = any != all_.end() && !any->second->error.empty()
-                                      ? any->second->error
-                                      : "mesh '" + geo.mesh_path + "': MuJoCo could not compile it";
-          doc_.warnings.push_back(what + ": unsupported " + why + "; left out");
+          auto any = geo.mesh_path.empty() ? all_.end() : all_.find(key);
+          doc_.warnings.push_back(left_out_mesh_warning(g, any != all_.end() ? any->second : nullptr));
           return;
         }
         shape << " type=\"mesh\" mesh=\"" << it->second->name << "\"";

@@ -26,6 +26,11 @@ struct MeshAsset {
 // converted keep an `error` and their geoms are left out (with a warning) by write_mjcf.
 std::vector<MeshAsset> collect_meshes(const BodyPlan& plan);
 
+// The warning for a mesh geom the model leaves out: the link, "collision"/"visual", the mesh as
+// written, why (no file resolved, no such file, the loader's or MuJoCo's error) and the path
+// tried. `asset`: the geom's loaded mesh, null when it has none.
+std::string left_out_mesh_warning(const PlannedGeom& g, const MeshAsset* asset);
+
 struct MjcfDocument {
   std::string xml;
   std::vector<std::string> warnings;  // geoms left out and why

@@ -101,6 +101,28 @@ void fill_hfield(mjModel& m, const Heightmap& h) {
 
 }  // namespace
 
+std::vector<std::string> mesh_warnings(const description::RobotModel& robot) {
+  const BodyPlan plan = plan_bodies(robot, BuildOptions{});
+  const std::vector<MeshAsset> meshes = collect_meshes(plan);
+  std::vector<std::string> out;
+  auto check = [&](const PlannedGeom& g) {
+    const description::Geometry& geo = g.geometry;
+    if (geo.type != description::GeometryType::Mesh) return;
+    const MeshAsset* asset = nullptr;
+    for (const MeshAsset& m : meshes) {
+      if (m.path == geo.mesh_path && m.scale.x == geo.mesh_scale.x && m.scale.y == geo.mesh_scale.y &&
+          m.scale.z == geo.mesh_scale.z) {
+        asset = &m;
+      }
+    }
+    if (geo.mesh_path.empty() || asset == nullptr || !asset->error.empty()) out.push_back(left_out_mesh_warning(g, asset));
+  };
+  for (const PlannedGeom& g : plan.world_geoms) check(g);
+  for (const PlannedBody& b : plan.bodies)
+    for (const PlannedGeom& g : b.geoms) check(g);
+  return out;
+}
+
 PhysicsModel::PhysicsModel() : impl_(std::make_unique<Impl>()) {}
 PhysicsModel::~PhysicsModel() = default;
 

@@ -45,6 +45,11 @@ struct DifferentialInfo {
   bool active = false;                    // options.differential == PluginLaw
 };
 
+// The mesh geoms a model of `robot` would leave out, worded as build()'s warnings, without
+// compiling it (for `mechsim check`): plans the bodies and loads every mesh file. A mesh that
+// loads but that MuJoCo refuses shows up in build()'s warnings only. Throws as plan_bodies().
+std::vector<std::string> mesh_warnings(const description::RobotModel& robot);
+
 class PhysicsModel {
  public:
   // Plans the bodies, writes MJCF, compiles it with MuJoCo from memory. Throws PhysicsError with

@@ -178,5 +178,33 @@ TEST(CheckCli, CommandLineMistakes) {
   EXPECT_EQ(fine.err, "");
 }
 
+// A collision mesh the physics cannot find is left out: check says so once per mesh, naming the
+// link, the mesh as written and the path it tried (it used to say nothing about a missing file).
+TEST(CheckCli, ALeftOutCollisionMeshIsNamedOnceWithItsLinkAndThePathTried) {
+  const fs::path dir = fs::path(::testing::TempDir()) / ("mechsim_check_meshes_" + std::to_string(getpid()));
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() { fs::remove_all(dir); }
+  } cleanup{dir};
+  fs::create_directories(dir);
+  write_file((dir / "bot.urdf").string(), R"(<robot name="bot">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><mesh filename="meshes/base.stl"/></geometry></collision></link>
+  <joint name="j" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="10" velocity="1"/></joint>
+  <link name="arm"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><mesh filename="package://no_such_package_here/arm.stl"/></geometry></collision></link>
+</robot>)");
+  const ProcessResult r = check({(dir / "bot.urdf").string()});
+  ASSERT_FALSE(r.timed_out);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const std::string base = "link 'base': collision mesh 'meshes/base.stl'";
+  EXPECT_THAT(r.err, HasSubstr(base));
+  EXPECT_THAT(r.err, HasSubstr("no such file (path tried: " + (dir / "meshes" / "base.stl").string() + ")"));
+  EXPECT_EQ(r.err.find(base), r.err.rfind(base)) << "said once:\n" << r.err;
+  EXPECT_THAT(r.err, HasSubstr("link 'arm': collision mesh 'package://no_such_package_here/arm.stl'"));
+  EXPECT_THAT(r.out, HasSubstr("(3 warnings)")) << "the two meshes and the unknown package";
+}
+
 }  // namespace
 }  // namespace mechsim::apps::test

@@ -130,6 +130,7 @@ int run(int argc, char** argv) {
   bridge.controller_params = key.empty() ? root : root.child_or_create(key);
 
   mechsim::ros::SimNode node(pnh, std::move(bridge), options);
+  for (const std::string& w : node.bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
   ROS_INFO_STREAM("mechsim: " << node.bridge().robot().name << " in world '" << pnh.param<std::string>("world", "empty")
                               << "', controller manager at " << ns << (ns.back() == '/' ? "" : "/")
                               << "controller_manager" << (node.bridge().paused() ? " (paused)" : ""));

@@ -131,6 +131,9 @@ bool SimBridge::paused() const { return impl_->simulation->paused(); }
 void SimBridge::request_reset() { impl_->simulation->request_reset(); }
 const description::RobotModel& SimBridge::robot() const { return impl_->simulation->robot(); }
 control::Params SimBridge::controller_params() const { return impl_->params; }
+const std::vector<std::string>& SimBridge::physics_warnings() const {
+  return impl_->simulation->physics().model().warnings();
+}
 
 BridgeResult SimBridge::load_controller(const std::string& name) {
   control::ControllerManager& cm = impl_->simulation->controllers();

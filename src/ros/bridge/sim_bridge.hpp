@@ -189,6 +189,9 @@ class SimBridge {
   bool paused() const;
   void request_reset();
   const description::RobotModel& robot() const;
+  // What the physics left out or changed and why (meshes it could not use, with the link and the
+  // path tried; massless links; dropped joints), one line each.
+  const std::vector<std::string>& physics_warnings() const;
   // The controllers' parameter namespace (a handle on the tree the manager reads at load time).
   control::Params controller_params() const;
 
