@@ -1,22 +1,7 @@
 // mechsim_node: the simulation as a ROS 1 node (drop-in for gazebo_ros + gazebo_ros_control).
 //
-// Private parameters (~):
-//   model              xacro/URDF file to load (expanded by mechsim; xacro args in ~xacro_args,
-//                      a map). Without it the URDF comes from robot_description (searched
-//                      upwards from the node's namespace, like spawn_model -param).
-//   robot_description  the parameter name to read when ~model is absent (default robot_description)
-//   spawn_timeout      s (wall) to wait for that parameter to appear (default 60)
-//   lenient            description errors Gazebo tolerates become warnings (default false)
-//   world              empty | mars_yard_2024 | heightmap file (default empty)
-//   x y z R P Y        spawn pose (m, rad), as spawn_model's -x -y -z -R -P -Y
-//   paused             start paused (default false), as gazebo's paused arg
-//   real_time_factor   0: as fast as possible (default); 1: wall-clock pace
-//   robot_namespace    overrides the gazebo_ros_control plugin's robotNamespace (default "/")
-//   pr2                also serve /pr2_controller_manager/* (default: the PR2 gazebo plugin is present)
-//   publish_tf         built-in robot state publisher (default true); tf_rate (Hz, default 50)
-//   publish_odom_tf    odom -> root link from the physics (default false); odom_frame (default odom)
-//   state_publish_rate Hz of <controller>/state (default 50; 0: every tick)
-//   clock_publish_rate Hz (sim time) of /clock (default 100, Gazebo's pub_clock_frequency; 0: every tick)
+// Private parameters (~): ros/node_params.cpp lists them (`mechsim_node --params` prints the
+// list); the node reports at start which it took from the parameter server.
 // When ~model is used, the expanded URDF is also set as robot_description (for RViz).
 #include <csignal>
 #include <cstdio>
@@ -27,6 +12,7 @@
 
 #include "description/robot_loader.hpp"
 #include "description/urdf_parser.hpp"
+#include "ros/node_params.hpp"
 #include "ros/sim_node.hpp"
 
 namespace {
@@ -58,9 +44,16 @@ int run(int argc, char** argv) {
   // wait (for the master, for robot_description) ends and the loop thread stops cleanly.
   std::signal(SIGINT, request_shutdown);
   std::signal(SIGTERM, request_shutdown);
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--params") {
+      std::cout << mechsim::ros::describe_private_params();
+      return 0;
+    }
+  }
   ::ros::init(argc, argv, "mechsim", ::ros::init_options::NoSigintHandler);
   ::ros::NodeHandle pnh("~");
   ::ros::NodeHandle nh;
+  mechsim::ros::report_private_params(pnh);
 
   mechsim::ros::BridgeOptions bridge;
   std::string urdf, source = "robot_description";
@@ -68,7 +61,8 @@ int run(int argc, char** argv) {
   // Description errors that Gazebo tolerates (the PR2's sensor mounts break the inertia triangle
   // inequality) become warnings.
   const bool lenient = pnh.param("lenient", false);
-  if (pnh.getParam("model", model_path)) {
+  // An empty ~model is no model: a launch file that waits for robot_description sets it so.
+  if (pnh.getParam("model", model_path) && !model_path.empty()) {
     mechsim::description::LoadOptions load;
     pnh.getParam("xacro_args", load.xacro_args);
     load.lenient = lenient;
@@ -104,7 +98,7 @@ int run(int argc, char** argv) {
   bool pr2 = false;
   mechsim::ros::NodeOptions options;
   options.robot_namespace = plugin_namespace(bridge.robot, &pr2);
-  pnh.getParam("robot_namespace", options.robot_namespace);
+  if (std::string ns; pnh.getParam("robot_namespace", ns) && !ns.empty()) options.robot_namespace = ns;
   if (options.robot_namespace.empty()) options.robot_namespace = "/";
   options.pr2 = pnh.param("pr2", pr2);
   options.publish_tf = pnh.param("publish_tf", true);

@@ -1,0 +1,80 @@
+// mechsim_node's private parameters (node_params.hpp).
+#include "ros/node_params.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace mechsim::ros {
+
+const std::vector<PrivateParam>& private_params() {
+  static const std::vector<PrivateParam> params = {
+      {"model", "string", "", "xacro/URDF file to load; empty: the URDF in ~robot_description's parameter"},
+      {"xacro_args", "map", "{}", "xacro arguments for ~model (name: value)"},
+      {"robot_description", "string", "robot_description",
+       "the parameter holding the URDF when ~model is empty (searched upwards from the node's namespace)"},
+      {"spawn_timeout", "double", "60", "s (wall) to wait for that parameter"},
+      {"lenient", "bool", "false", "description errors Gazebo tolerates become warnings"},
+      {"world", "string", "empty", "empty | mars_yard_2024 | heightmap file"},
+      {"x", "double", "0", "spawn position (m), as spawn_model -x"},
+      {"y", "double", "0", "spawn position (m)"},
+      {"z", "double", "0", "spawn height (m) above the ground under x, y"},
+      {"R", "double", "0", "spawn roll (rad)"},
+      {"P", "double", "0", "spawn pitch (rad)"},
+      {"Y", "double", "0", "spawn yaw (rad)"},
+      {"paused", "bool", "false", "start paused, as gazebo's paused arg"},
+      {"real_time_factor", "double", "0", "0: as fast as possible; 1: wall-clock pace"},
+      {"robot_namespace", "string", "",
+       "where the controllers live; empty: the gazebo_ros_control plugin's robotNamespace, else /"},
+      {"pr2", "bool", "(plugin)",
+       "also serve /pr2_controller_manager/*; unset: when the PR2's gazebo plugin is in the URDF"},
+      {"publish_tf", "bool", "true", "built-in robot state publisher on /tf"},
+      {"tf_rate", "double", "50", "Hz (sim time) of /tf"},
+      {"publish_odom_tf", "bool", "false", "odom_frame -> root link from the physics on /tf"},
+      {"odom_frame", "string", "odom", "the frame of publish_odom_tf"},
+      {"state_publish_rate", "double", "50", "Hz (sim time) of <controller>/state; 0: every tick"},
+      {"clock_publish_rate", "double", "100", "Hz (sim time) of /clock (Gazebo's pub_clock_frequency); 0: every tick"},
+  };
+  return params;
+}
+
+std::string describe_private_params() {
+  std::ostringstream out;
+  for (const PrivateParam& p : private_params()) {
+    out << p.name << '\t' << p.type << '\t' << p.default_value << '\t' << p.meaning << '\n';
+  }
+  return out.str();
+}
+
+void report_private_params(const ::ros::NodeHandle& pnh) {
+  const std::string prefix = pnh.getNamespace() + "/";
+  std::vector<std::string> names;
+  ::ros::param::getParamNames(names);
+  std::ostringstream taken;
+  for (const PrivateParam& p : private_params()) {
+    XmlRpc::XmlRpcValue value;
+    if (!pnh.getParam(p.name, value)) continue;
+    std::ostringstream text;
+    if (value.getType() == XmlRpc::XmlRpcValue::TypeBoolean) {
+      text << (static_cast<bool>(value) ? "true" : "false");
+    } else {
+      text << value;
+    }
+    taken << (taken.tellp() > 0 ? ", " : "") << "~" << p.name << "=" << text.str();
+  }
+  if (taken.tellp() > 0) ROS_INFO_STREAM("mechsim: private parameters from the parameter server: " << taken.str());
+  std::vector<std::string> unknown;
+  for (const std::string& full : names) {
+    if (full.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string first = full.substr(prefix.size(), full.find('/', prefix.size()) - prefix.size());
+    const bool known = std::any_of(private_params().begin(), private_params().end(),
+                                   [&](const PrivateParam& p) { return first == p.name; });
+    if (!known && std::find(unknown.begin(), unknown.end(), first) == unknown.end()) unknown.push_back(first);
+  }
+  for (const std::string& u : unknown) {
+    ROS_WARN_STREAM("mechsim: ~" << u << " (" << prefix << u
+                                 << ") is not a mechsim_node parameter (left from another node, or misspelt?); "
+                                    "ignored. `mechsim_node --params` lists them");
+  }
+}
+
+}  // namespace mechsim::ros
