@@ -16,6 +16,7 @@
 #include "apps/cmd_common.hpp"
 #include "apps/commands.hpp"
 #include "control/controller_check.hpp"
+#include "controllers/builtin_controllers.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "physics/physics_model.hpp"
 #include "sim/simulation.hpp"
@@ -52,7 +53,8 @@ void controllers_step(const CheckOptions& options, CheckContext& context, std::o
   for (const std::string& key : root.keys()) {
     if (root.child(key).is_map() && !root.child(key).has("type")) sim::fill_description_params(root.child(key), context.robot.model);
   }
-  const std::vector<control::ControllerCheck> checks = control::check_controllers(mechanism, root);
+  const std::vector<control::ControllerCheck> checks =
+      control::check_controllers(mechanism, root, control::builtin_controller_registry());
   std::size_t loaded = 0;
   out << "controllers (" << options.controllers << "):\n";
   for (const control::ControllerCheck& c : checks) {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "apps/commands.hpp"
-#include "description/xacro.hpp"
+#include "description/xacro/xacro.hpp"
 
 namespace mechsim::apps {
 

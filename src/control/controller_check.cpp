@@ -44,7 +44,8 @@ std::string describe(const ControllerCheck& check) {
   return out;
 }
 
-std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root) {
+std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root,
+                                               const ControllerRegistry& registry) {
   std::vector<Found> found;
   find_controllers(root, root, "", found);
 
@@ -54,7 +55,7 @@ std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& 
   std::map<std::string, std::unique_ptr<ControllerManager>> managers;
   for (const Found& f : found) {
     auto& manager = managers[f.ns.path()];
-    if (!manager) manager = std::make_unique<ControllerManager>(model, state, f.ns);
+    if (!manager) manager = std::make_unique<ControllerManager>(model, state, f.ns, registry);
     ControllerCheck check;
     check.name = f.name;
     check.ns = f.ns.path();
@@ -76,8 +77,9 @@ std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& 
 }
 
 std::vector<ControllerCheck> check_controllers_file(const mechanism::MechanismModel& model,
-                                                    const std::string& yaml_path) {
-  return check_controllers(model, Params::from_yaml_file(yaml_path));
+                                                    const std::string& yaml_path,
+                                                    const ControllerRegistry& registry) {
+  return check_controllers(model, Params::from_yaml_file(yaml_path), registry);
 }
 
 }  // namespace mechsim::control

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "control/controller_registry.hpp"
 #include "control/hardware.hpp"
 #include "control/params.hpp"
 #include "mechanism/mechanism_model.hpp"
@@ -30,10 +31,13 @@ struct ControllerCheck {
 // or "/cc8/x (type): ERROR <message>".
 std::string describe(const ControllerCheck& check);
 
-// One entry per controller found, in document order.
-std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root);
+// One entry per controller found, in document order. `registry` holds the types a manager can
+// load (mechsim's: controllers/builtin_controllers.hpp).
+std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root,
+                                               const ControllerRegistry& registry);
 // Reads the file first; a malformed or unreadable file throws ParamsError naming file and line.
 std::vector<ControllerCheck> check_controllers_file(const mechanism::MechanismModel& model,
-                                                    const std::string& yaml_path);
+                                                    const std::string& yaml_path,
+                                                    const ControllerRegistry& registry);
 
 }  // namespace mechsim::control

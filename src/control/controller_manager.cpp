@@ -76,10 +76,8 @@ std::string join(const std::vector<std::string>& items) {
 }  // namespace
 
 ControllerManager::ControllerManager(const mechanism::MechanismModel& model, mechanism::MechanismState& state,
-                                     Params params)
-    : model_(model), state_(state), params_(std::move(params)) {
-  register_builtin_controllers(registry_);
-}
+                                     Params params, ControllerRegistry registry)
+    : model_(model), state_(state), params_(std::move(params)), registry_(std::move(registry)) {}
 
 ControllerManager::~ControllerManager() = default;
 

@@ -95,9 +95,10 @@ class ControllerManager {
  public:
   // `params` is the namespace the controllers live in (e.g. the `cc8` map of a controller
   // YAML, path /cc8). The model and state must outlive the manager; `state` must be sized
-  // like `model`. The registry starts with the built-in types.
+  // like `model`. `registry` holds the types it can load (mechsim's:
+  // controllers/builtin_controllers.hpp); more can be added through registry().
   ControllerManager(const mechanism::MechanismModel& model, mechanism::MechanismState& state,
-                    Params params = Params());
+                    Params params = Params(), ControllerRegistry registry = ControllerRegistry());
   ~ControllerManager();
   ControllerManager(const ControllerManager&) = delete;
   ControllerManager& operator=(const ControllerManager&) = delete;

@@ -1,7 +1,8 @@
 #pragma once
 // Maps the controller type names users have in their YAML ("effort_controllers/
 // JointPositionController") to implementations. A plain object, owned by each controller
-// manager: no global registry.
+// manager: no global registry. The core names no controller type: whoever builds a manager
+// fills its registry (mechsim's families: controllers/builtin_controllers.hpp).
 
 #include <functional>
 #include <map>
@@ -27,8 +28,5 @@ class ControllerRegistry {
  private:
   std::map<std::string, ControllerFactory> factories_;
 };
-
-// Adds mechsim's built-in controller types (control/builtin_controllers.cpp).
-void register_builtin_controllers(ControllerRegistry& registry);
 
 }  // namespace mechsim::control

@@ -28,13 +28,13 @@ enum class PortKind : std::uint8_t {
   JointGroupState,      // StatePort<JointGroupControllerState>
   JointStates,          // StatePort<JointStateSnapshot> (sensor_msgs/JointState)
   PidGains,             // PidGainsPort: runtime gain changes (dynamic_reconfigure)
-  DriveModeCommand,     // DriveModeCommandPort: a rover drive mode (control/rover_drive_ports.hpp)
+  DriveModeCommand,     // DriveModeCommandPort: a rover drive mode (controllers/drive/rover_drive_ports.hpp)
   Odometry,             // StatePort<OdometrySnapshot> (nav_msgs/Odometry)
   RoverDriveStatus,     // StatePort<RoverDriveStatus>
   TrajectoryCommand,    // TrajectoryCommandPort (trajectory_msgs/JointTrajectory), trajectory_goal.hpp
   TrajectoryGoal,       // TrajectoryGoalPort (control_msgs/FollowJointTrajectory action)
   JointTrajectoryState, // StatePort<JointTrajectoryControllerState>
-  Pr2BaseStatus,        // StatePort<Pr2BaseStatus> (control/pr2_base_controller.hpp)
+  Pr2BaseStatus,        // StatePort<Pr2BaseStatus> (controllers/drive/pr2_base_controller.hpp)
   GripperCommand,       // GripperCommandPort (pr2_controllers_msgs/Pr2GripperCommand), pr2_gripper_ports.hpp
   GripperGoal,          // GripperGoalPort (control_msgs/GripperCommand action), pr2_gripper_ports.hpp
   PeriodicCommand,      // PeriodicCommandPort (pr2_msgs/PeriodicCmd), laser_scanner_traj_controller.hpp

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "description/robot_model.hpp"
-#include "description/urdf_parser.hpp"
-#include "description/xacro.hpp"
+#include "description/urdf/urdf_parser.hpp"
+#include "description/xacro/xacro.hpp"
 
 namespace mechsim::description {
 

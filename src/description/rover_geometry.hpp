@@ -2,7 +2,7 @@
 // The drive geometry of a wheeled rover read from its description: where its wheels and
 // steering axes are in the body frame, which way each joint turns, and the wheel radius. The
 // sim and apps layers use it to fill a rover drive controller's geometry parameters when the
-// controller YAML leaves them out (control/rover_drive_params.hpp), the way a diff_drive user
+// controller YAML leaves them out (controllers/drive/rover_drive_params.hpp), the way a diff_drive user
 // would otherwise measure wheel_separation by hand.
 //
 // Everything is taken at zero joint angles: the pose of each joint frame in the base frame is

@@ -2,7 +2,7 @@
 // <controller>/follow_joint_trajectory: control_msgs/FollowJointTrajectoryAction over a trajectory
 // controller's goal port (PolledActionServer: goals submitted at once, rejected goals answered
 // with the controller's error code; feedback and results relayed at 20 Hz, wall; preempted ->
-// canceled). Conversions between the ROS messages and control/trajectory_msgs.hpp live here too.
+// canceled). Conversions between the ROS messages and controllers/trajectory/trajectory_msgs.hpp live here too.
 
 #include <cstdint>
 #include <optional>

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "control/ports.hpp"
-#include "control/rover_drive_ports.hpp"
-#include "control/trajectory_goal.hpp"
+#include "controllers/drive/rover_drive_ports.hpp"
+#include "controllers/trajectory/trajectory_goal.hpp"
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
 #include "sim/simulation.hpp"

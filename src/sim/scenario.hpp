@@ -92,8 +92,8 @@
 #include <vector>
 
 #include "control/ports.hpp"
-#include "control/pr2_gripper_ports.hpp"
-#include "control/trajectory_msgs.hpp"
+#include "controllers/gripper/pr2_gripper_ports.hpp"
+#include "controllers/trajectory/trajectory_msgs.hpp"
 #include "physics/physics_options.hpp"
 #include "sim/world.hpp"
 

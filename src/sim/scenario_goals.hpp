@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "control/controller_manager.hpp"
-#include "control/pr2_gripper_ports.hpp"
-#include "control/trajectory_goal.hpp"
+#include "controllers/gripper/pr2_gripper_ports.hpp"
+#include "controllers/trajectory/trajectory_goal.hpp"
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
 

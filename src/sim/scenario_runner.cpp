@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "control/params.hpp"
-#include "control/rover_drive_ports.hpp"
+#include "controllers/drive/rover_drive_ports.hpp"
 #include "description/robot_loader.hpp"
 #include "sim/report.hpp"
 #include "sim/pose_math.hpp"

@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "control/pr2_gripper_ports.hpp"
-#include "control/trajectory_msgs.hpp"
+#include "controllers/gripper/pr2_gripper_ports.hpp"
+#include "controllers/trajectory/trajectory_msgs.hpp"
 #include "sim/scenario.hpp"
 
 namespace mechsim::sim {

@@ -5,8 +5,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "control/pr2_base_params.hpp"
-#include "control/rover_drive_params.hpp"
+#include "controllers/builtin_controllers.hpp"
+#include "controllers/drive/pr2_base_params.hpp"
+#include "controllers/drive/rover_drive_params.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/pr2_gripper_transmission.hpp"
 #include "mechanism/propagation.hpp"
@@ -78,7 +79,8 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   fill_description_params(controller_params, robot_);
-  manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params));
+  manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
+                                                         control::builtin_controller_registry());
 
   const std::size_t n = mechanism_->joints.size();
   physics_joint_.assign(n, -1);

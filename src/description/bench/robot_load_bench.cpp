@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "description/robot_loader.hpp"
-#include "description/urdf_parser.hpp"
-#include "description/xacro.hpp"
+#include "description/urdf/urdf_parser.hpp"
+#include "description/xacro/xacro.hpp"
 
 namespace mechsim::description {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "description/xacro.hpp"
+#include "description/xacro/xacro.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "description/robot_loader.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::description {
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "description/robot_summary.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::description {
 namespace {

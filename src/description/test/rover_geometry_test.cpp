@@ -9,7 +9,7 @@
 
 #include "description/robot_loader.hpp"
 #include "description/rover_geometry.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::description {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/propagation.hpp"
 

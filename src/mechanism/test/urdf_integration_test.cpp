@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/differential_transmission.hpp"
 #include "mechanism/propagation.hpp"

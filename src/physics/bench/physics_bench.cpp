@@ -8,7 +8,7 @@
 #include <map>
 #include <memory>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "physics/mujoco_internal.hpp"
 #include "physics/physics.hpp"
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::physics::test {
 

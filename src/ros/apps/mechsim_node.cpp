@@ -11,7 +11,7 @@
 #include <ros/ros.h>
 
 #include "description/robot_loader.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "ros/node_params.hpp"
 #include "ros/sim_node.hpp"
 

@@ -1,5 +1,5 @@
 // The PR2 gripper's ports through the opaque PortRef (C++20 side of the bridge).
-#include "control/pr2_gripper_ports.hpp"
+#include "controllers/gripper/pr2_gripper_ports.hpp"
 #include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 

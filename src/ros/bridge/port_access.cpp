@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "control/ports.hpp"
-#include "control/rover_drive_ports.hpp"
+#include "controllers/drive/rover_drive_ports.hpp"
 #include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 

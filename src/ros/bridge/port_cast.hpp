@@ -7,7 +7,7 @@
 #include <string>
 
 #include "control/ports.hpp"
-#include "control/trajectory_msgs.hpp"  // GoalStatus
+#include "controllers/trajectory/trajectory_msgs.hpp"  // GoalStatus
 #include "ros/bridge/sim_bridge.hpp"
 
 namespace mechsim::ros::bridge_detail {

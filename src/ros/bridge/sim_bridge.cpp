@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "control/rover_drive_params.hpp"
+#include "controllers/drive/rover_drive_params.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world.hpp"

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "control/params.hpp"
-#include "control/trajectory_msgs.hpp"
+#include "controllers/trajectory/trajectory_msgs.hpp"
 #include "description/robot_model.hpp"
 
 namespace mechsim::ros {
@@ -222,7 +222,7 @@ bool read_joint_controller_state(const PortRef& port, JointControllerStateData& 
 bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t* sequence);
 bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequence);
 
-// Trajectory controllers (control/trajectory_goal.hpp explains the goal life).
+// Trajectory controllers (controllers/trajectory/trajectory_goal.hpp explains the goal life).
 bool write_trajectory(const PortRef& port, const control::JointTrajectory& trajectory, std::string* error);
 bool read_trajectory_state(const PortRef& port, control::JointTrajectoryControllerState& out,
                            std::uint64_t* sequence);
@@ -238,7 +238,7 @@ std::optional<control::GoalStatus> goal_status(const PortRef& port, std::uint64_
 std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::uint64_t id);
 bool read_goal_feedback(const PortRef& port, control::FollowJointTrajectoryFeedback& out, std::uint64_t* sequence);
 
-// The PR2 gripper (control/pr2_gripper_controller.hpp explains the goal life: Succeeded when
+// The PR2 gripper (controllers/gripper/pr2_gripper_controller.hpp explains the goal life: Succeeded when
 // reached, Aborted with stalled = true when it stalls first, Preempted by a cancel, a newer
 // goal or a plain command).
 bool write_gripper_command(const PortRef& port, double position, double max_effort, std::string* error);

@@ -1,5 +1,5 @@
 // Trajectory ports through the opaque PortRef (C++20 side of the bridge).
-#include "control/trajectory_goal.hpp"
+#include "controllers/trajectory/trajectory_goal.hpp"
 #include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 
 namespace mechsim::ros {

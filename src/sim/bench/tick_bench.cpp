@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "control/params.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "sim/simulation.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "sim/simulation.hpp"
 
 namespace mechsim::sim {

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "control/ports.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "sim/simulation.hpp"
 
 namespace mechsim::sim {

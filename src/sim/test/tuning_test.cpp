@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "sim/tuning.hpp"
 #include "sim/test/tuning_pendulum.hpp"
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::description {
 namespace {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <sstream>
 
-#include "description/xacro.hpp"
+#include "description/xacro/xacro.hpp"
 #include "xml_compare_util.hpp"
 
 namespace mechsim::description {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "description/xacro.hpp"
+#include "description/xacro/xacro.hpp"
 #include "xml_compare_util.hpp"
 
 namespace mechsim::description {

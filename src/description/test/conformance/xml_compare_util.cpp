@@ -8,8 +8,8 @@
 #include <sstream>
 #include <vector>
 
-#include "description/pyexpr_ast.hpp"
-#include "description/pyexpr_eval.hpp"
+#include "description/pyexpr/pyexpr_ast.hpp"
+#include "description/pyexpr/pyexpr_eval.hpp"
 
 namespace mechsim::description::test {
 namespace {

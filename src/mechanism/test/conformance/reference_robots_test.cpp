@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/pr2_gripper_transmission.hpp"
 #include "mechanism/propagation.hpp"

@@ -10,7 +10,7 @@
 #include <optional>
 #include <set>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "physics/physics.hpp"
 
 namespace mechsim::physics {

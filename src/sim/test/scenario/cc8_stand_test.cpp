@@ -9,7 +9,7 @@
 #include <iostream>
 
 #include "control/params.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "physics/heightmap_io.hpp"
 #include "sim/simulation.hpp"
 #include "sim/test/scenario/scenario_util.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "control/trajectory_controller.hpp"
+#include "controllers/trajectory/trajectory_controller.hpp"
 #include "sim/test/scenario/pr2_util.hpp"
 
 namespace mechsim::sim {

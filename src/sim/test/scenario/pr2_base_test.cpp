@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "control/pr2_base_controller.hpp"
-#include "control/pr2_odometry.hpp"
+#include "controllers/drive/pr2_base_controller.hpp"
+#include "controllers/drive/pr2_odometry.hpp"
 #include "sim/pose_math.hpp"
 #include "sim/test/scenario/pr2_util.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "control/pr2_gripper_controller.hpp"
+#include "controllers/gripper/pr2_gripper_controller.hpp"
 #include "mechanism/pr2_gripper_transmission.hpp"
 #include "sim/test/scenario/pr2_util.hpp"
 

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "control/params.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "sim/simulation.hpp"
 #include "sim/test/scenario/pr2_util.hpp"
 #include "sim/test/scenario/scenario_util.hpp"

@@ -16,7 +16,7 @@
 
 #include "control/params.hpp"
 #include "description/robot_loader.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "sim/pose_math.hpp"
 #include "sim/simulation.hpp"
 #include "sim/test/scenario/pr2_util.hpp"

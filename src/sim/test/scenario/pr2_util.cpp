@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "control/params.hpp"
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::sim {
 

@@ -6,7 +6,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "description/urdf_parser.hpp"
+#include "description/urdf/urdf_parser.hpp"
 
 namespace mechsim::sim {
 
