@@ -1,7 +1,11 @@
-// `mechsim bench ROBOT --controllers FILE`: the speed of the full tick (transmissions, controller
-// manager, safety limits, physics) against the bare physics step of the same model, and the
-// real-time factor, on one core.
+// `mechsim bench ROBOT --controllers FILE`: start-up (each stage from the description to the first
+// tick, and peak memory), then the speed of the full tick (transmissions, controller manager,
+// safety limits, physics) against the bare physics step of the same model, and the real-time
+// factor, on one core.
 
+#include <sys/resource.h>
+
+#include <chrono>
 #include <ctime>
 #include <cstdio>
 #include <iostream>
@@ -26,8 +30,48 @@ struct BenchArgs {
   std::string integrator = physics::integrator_name(physics::BuildOptions{}.integrator);
 };
 
+using Clock = std::chrono::steady_clock;
+
+double ms_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+// Peak resident memory of this process so far (MB).
+double peak_memory_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;  // ru_maxrss: kB on Linux
+}
+
+void print_startup(const sim::Simulation& sim, double description_ms, double world_ms, double controllers_ms,
+                   double first_tick_ms, double total_ms) {
+  const sim::Simulation::StartupTimes& t = sim.startup_times();
+  const physics::ArenaEstimate& a = sim.physics().model().arena();
+  std::printf("start-up, wall-clock ms (description -> first tick):\n");
+  std::printf("  description %8.1f  (xacro, URDF)\n", description_ms);
+  std::printf("  world       %8.1f  (terrain: generated or read)\n", world_ms);
+  std::printf("  MJCF        %8.1f  (body plan, meshes, MJCF)\n", t.mjcf_ms);
+  std::printf("  compile     %8.1f  (MuJoCo compiler, arena estimate)\n", t.compile_ms);
+  std::printf("  data        %8.1f  (MuJoCo data: arena of %d contacts, %d constraint rows)\n", t.data_ms,
+              a.size.contacts, a.size.constraints);
+  std::printf("  controllers %8.1f  (mechanism, controller manager; controllers loaded and started)\n",
+              t.mechanism_ms + controllers_ms);
+  std::printf("  first tick  %8.1f\n", first_tick_ms);
+  std::printf("  total       %8.1f\n", total_ms);
+  std::printf("peak memory at the first tick: %.1f MB (getrusage maxrss)\n", peak_memory_mb());
+  if (a.from_options) {
+    std::printf("arena: %d contacts, %d constraint rows (given)\n", a.size.contacts, a.size.constraints);
+  } else {
+    std::printf("arena: %d contacts, %d constraint rows: %d geom pairs can touch, %d of them a geom resting on the "
+                "ground; %d contacts (%d rows) and %d rows of limits, equalities and friction loss estimated, a quarter "
+                "more\n",
+                a.size.contacts, a.size.constraints, a.candidate_pairs, a.support_geoms, a.contacts, a.contact_rows,
+                a.other_rows);
+  }
+}
+
 void run(const BenchArgs& args) {
+  const Clock::time_point t_start = Clock::now();
   description::RobotModel robot = description::load_robot(args.robot.file, load_options(args.robot)).model;
+  const Clock::time_point t_description = Clock::now();
   control::Params params;
   std::vector<std::string> start = args.start;
   const bool usual_set = start.empty();
@@ -39,13 +83,17 @@ void run(const BenchArgs& args) {
       }
     }
   }
-  sim::WorldConfig world;
-  world.name = args.world;
+  sim::WorldConfig world_config;
+  world_config.name = args.world;
   sim::SimulationOptions options;
   options.spawn.z = args.spawn_z;
   options.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
-  sim::Simulation sim(std::move(robot), sim::make_world(world), params, options);
-  // Load everything asked for; start what does not conflict, first come first served.
+  const Clock::time_point t_world_start = Clock::now();
+  const sim::World world = sim::make_world(world_config);
+  const Clock::time_point t_world = Clock::now();
+  sim::Simulation sim(std::move(robot), world, params, options);
+  const Clock::time_point t_sim = Clock::now();
+  // Load everything asked for; start what does not conflict first come first served.
   std::vector<std::string> loaded;
   for (const std::string& name : start) {
     if (control::ControlResult r = sim.load_controller(name); r) {
@@ -62,6 +110,14 @@ void run(const BenchArgs& args) {
   std::printf("controllers running (%s):", usual_set ? "default: the widest conflict-free set" : "--start");
   for (const std::string& name : s.starting) std::printf(" %s", name.c_str());
   std::printf("\n");
+  const Clock::time_point t_controllers = Clock::now();
+  const sim::TickResult first = sim.step();
+  const Clock::time_point t_first = Clock::now();
+  if (!first) throw UserError("the first tick failed: " + first.error);
+  // The controllers' YAML is read between the description and the world: counted with the controllers.
+  print_startup(sim, ms_between(t_start, t_description), ms_between(t_world_start, t_world),
+                ms_between(t_description, t_world_start) + ms_between(t_sim, t_controllers), ms_between(t_controllers, t_first),
+                ms_between(t_start, t_first));
   sim.run_for(0.2);
 
   const auto ticks = static_cast<long>(args.seconds / sim.period());
@@ -86,6 +142,11 @@ void run(const BenchArgs& args) {
   std::printf("tick overhead:     %+.1f %% over the bare step\n", 100.0 * (bare_rate / full_rate - 1.0));
   std::printf("real-time factor:  %.2f (full tick, as fast as possible, one core)\n", full_rate * sim.period());
   std::printf("(thread CPU time; wall time is longer when other processes share the core)\n");
+  const physics::ArenaUse use = sim.physics().arena_use();
+  std::printf("arena use: at most %d contacts, %d constraint rows in a step (arena %d, %d; grew %d times)\n",
+              use.peak.contacts, use.peak.constraints, use.size.contacts, use.size.constraints, use.growths);
+  for (const std::string& w : sim.physics_warnings()) std::cerr << "warning: " << w << "\n";
+  std::printf("peak memory: %.1f MB (getrusage maxrss)\n", peak_memory_mb());
 }
 
 }  // namespace

@@ -88,8 +88,8 @@ namespace {
 class Writer {
  public:
   Writer(const BodyPlan& plan, const std::vector<MeshAsset>& meshes, const BuildOptions& options,
-         const std::set<std::string>& skip)
-      : plan_(plan), options_(options) {
+         const std::set<std::string>& skip, const ArenaSize& arena)
+      : plan_(plan), options_(options), arena_(arena) {
     for (const MeshAsset& m : meshes) {
       if (!m.error.empty() || skip.count(m.name)) continue;
       usable_[mesh_key(m.path, m.scale)] = &m;
@@ -110,7 +110,7 @@ class Writer {
     x_ << "  <option timestep=\"" << num(options_.timestep) << "\" integrator=\"" << integrator
        << "\" gravity=\"0 0 " << num(-options_.world.gravity) << "\" cone=\""
        << (c.elliptic_cone ? "elliptic" : "pyramidal") << "\"/>\n";
-    x_ << "  <size njmax=\"4000\" nconmax=\"1000\"/>\n";
+    x_ << "  " << mjcf_size_element(arena_) << "\n";
     x_ << "  <default>\n    <geom condim=\"" << c.condim << "\" friction=\"" << num(c.sliding_friction) << " "
        << num(c.torsional_friction) << " " << num(c.rolling_friction) << "\" solref=\"" << num(c.solref[0]) << " "
        << num(c.solref[1]) << "\" solimp=\"" << num(c.solimp[0]) << " " << num(c.solimp[1]) << " "
@@ -303,6 +303,7 @@ class Writer {
 
   const BodyPlan& plan_;
   const BuildOptions& options_;
+  ArenaSize arena_;
   std::map<std::string, const MeshAsset*> usable_, all_;
   std::vector<std::vector<std::size_t>> children_;
   std::ostringstream x_;
@@ -354,9 +355,13 @@ std::vector<MeshAsset> collect_meshes(const BodyPlan& plan) {
   return out;
 }
 
+std::string mjcf_size_element(const ArenaSize& arena) {
+  return "<size njmax=\"" + std::to_string(arena.constraints) + "\" nconmax=\"" + std::to_string(arena.contacts) + "\"/>";
+}
+
 MjcfDocument write_mjcf(const std::string& model_name, const BodyPlan& plan, const std::vector<MeshAsset>& meshes,
-                        const BuildOptions& options, const std::set<std::string>& skip_meshes) {
-  return Writer(plan, meshes, options, skip_meshes).write(model_name);
+                        const BuildOptions& options, const std::set<std::string>& skip_meshes, const ArenaSize& arena) {
+  return Writer(plan, meshes, options, skip_meshes, arena).write(model_name);
 }
 
 }  // namespace mechsim::physics

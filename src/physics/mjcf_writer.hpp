@@ -37,8 +37,12 @@ struct MjcfDocument {
 };
 
 // `skip_meshes`: asset names whose geoms are left out (e.g. ones MuJoCo refused to compile).
+// `arena`: the <size> element's contacts and constraints.
 MjcfDocument write_mjcf(const std::string& model_name, const BodyPlan& plan, const std::vector<MeshAsset>& meshes,
-                        const BuildOptions& options, const std::set<std::string>& skip_meshes);
+                        const BuildOptions& options, const std::set<std::string>& skip_meshes, const ArenaSize& arena);
+
+// The <size> element write_mjcf writes for `arena` (MuJoCo computes the stack from it).
+std::string mjcf_size_element(const ArenaSize& arena);
 
 // Name of the MuJoCo hfield asset and geom of a heightmap world.
 inline constexpr const char* kTerrainName = "terrain";

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/arena_estimate.hpp"
 #include "physics/mujoco_internal.hpp"
 #include "physics/transform.hpp"
 
@@ -26,6 +27,10 @@ struct Physics::Data {
   double saved_time = 0.0;
   std::vector<mjtNum> saved_qpos, saved_qvel, saved_act, saved_warm;
   int saved_warnings[mjNWARNING] = {};
+  // Arena use before the last reset or growth (mj_resetData and a new mjData start from 0).
+  ArenaSize peak;
+  int growths = 0;
+  int warning_notice[mjNWARNING] = {};  // index + 1 into Physics::notices_ of each MuJoCo warning
 
   ~Data() {
     if (d != nullptr) mj_deleteData(d);
@@ -42,6 +47,7 @@ const char* code_text(StepCode c) {
     case StepCode::NonFiniteState: return "non-finite state";
     case StepCode::RunawayAcceleration: return "runaway acceleration";
     case StepCode::SolverFailure: return "MuJoCo flagged an unstable state";
+    case StepCode::ArenaFull: return "MuJoCo's arena is full";
   }
   return "?";
 }
@@ -61,6 +67,13 @@ std::string_view joint_of_qpos(const mjModel* m, int qpos) {
   return "?";
 }
 
+// MuJoCo prints a warning, and appends it to MUJOCO_LOG.TXT in the working directory, the first
+// time its count leaves 0. Physics reports every arena overflow itself (it grows or fails the
+// step), so these two counts start at 1: the steps compare counts, never read them as totals.
+void start_arena_warning_counts(mjData* d) {
+  for (int w : {mjWARN_CONTACTFULL, mjWARN_CNSTRFULL}) d->warning[w].number = std::max(d->warning[w].number, 1);
+}
+
 template <typename T>
 void copy_n(T* dst, const T* src, int n) {
   if (n > 0) std::memcpy(dst, src, sizeof(T) * static_cast<std::size_t>(n));
@@ -70,6 +83,9 @@ void copy_n(T* dst, const T* src, int n) {
 
 std::string StepStatus::message() const {
   if (ok()) return "ok";
+  if (code == StepCode::ArenaFull)
+    return std::string(code_text(code)) + ": the step needs more than " + std::to_string(static_cast<long>(value)) + " " +
+           std::string(element) + " (BuildOptions::max_arena; MuJoCo would drop the rest, changing the physics)";
   return std::string(code_text(code)) + " at '" + std::string(element) + "' (value " + std::to_string(value) + ")";
 }
 
@@ -77,6 +93,7 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
   const mjModel* shared = model_->impl().model;
   data_->m = mj_copyModel(nullptr, shared);
   data_->d = mj_makeData(data_->m);
+  start_arena_warning_counts(data_->d);
   const std::size_t nj = model_->joints().size();
   data_->modes.assign(nj, JointMode::Effort);
   data_->gains.assign(nj, ServoGains{});
@@ -93,7 +110,7 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
     if (cut == std::string::npos) cut = name.rfind("/visual/");
     data_->geom_links.push_back(cut == std::string::npos ? (name.empty() ? "world" : name) : name.substr(0, cut));
   }
-  reset();
+  spawn_state();  // mj_makeData has reset the data already
 }
 
 Physics::~Physics() = default;
@@ -105,37 +122,47 @@ void Physics::reset() {
   copy_n(m->actuator_biasprm, shared->actuator_biasprm, shared->nu * mjNBIAS);
   std::fill(data_->modes.begin(), data_->modes.end(), JointMode::Effort);
   std::fill(data_->gains.begin(), data_->gains.end(), ServoGains{});
+  const ArenaUse use = arena_use();
+  data_->peak = use.peak;
   mj_resetData(m, data_->d);
+  start_arena_warning_counts(data_->d);
+  spawn_state();
+}
+
+void Physics::spawn_state() {
+  mjModel* m = data_->m;
   // Cancel gravity on the links Gazebo exempts from it: a constant world-frame force at the
   // body's centre of mass (xfrc_applied persists across steps).
   const double g = model_->options().world.gravity;
   for (int b : model_->gravity_off_bodies()) data_->d->xfrc_applied[6 * b + 2] = m->body_mass[b] * g;
-  mj_forward(m, data_->d);
-  data_->stale = false;
+  forward();
   diff_tau_a_ = diff_tau_b_ = 0.0;
 }
 
 double Physics::time() const { return data_->d->time; }
 
 StepStatus Physics::step() {
-  mjModel* m = data_->m;
-  mjData* d = data_->d;
   const std::vector<JointInfo>& joints = model_->joints();
-  for (const JointInfo& j : joints)
-    if (j.actuator >= 0 && !std::isfinite(d->ctrl[j.actuator]))
-      return {StepCode::NonFiniteCommand, j.name, d->ctrl[j.actuator]};
+  {
+    const mjModel* m = data_->m;
+    const mjData* d = data_->d;
+    for (const JointInfo& j : joints)
+      if (j.actuator >= 0 && !std::isfinite(d->ctrl[j.actuator]))
+        return {StepCode::NonFiniteCommand, j.name, d->ctrl[j.actuator]};
 
-  // A non-finite state (e.g. written as an initial condition) is reported before MuJoCo sees
-  // it: MuJoCo would reset the data and append to MUJOCO_LOG.TXT in the working directory.
-  for (int i = 0; i < m->nq; ++i)
-    if (!std::isfinite(d->qpos[i])) return {StepCode::NonFiniteState, joint_of_qpos(m, i), d->qpos[i]};
-  for (int i = 0; i < m->nv; ++i)
-    if (!std::isfinite(d->qvel[i])) return {StepCode::NonFiniteState, joint_of_dof(m, i), d->qvel[i]};
+    // A non-finite state (e.g. written as an initial condition) is reported before MuJoCo sees
+    // it: MuJoCo would reset the data and append to MUJOCO_LOG.TXT in the working directory.
+    for (int i = 0; i < m->nq; ++i)
+      if (!std::isfinite(d->qpos[i])) return {StepCode::NonFiniteState, joint_of_qpos(m, i), d->qpos[i]};
+    for (int i = 0; i < m->nv; ++i)
+      if (!std::isfinite(d->qvel[i])) return {StepCode::NonFiniteState, joint_of_dof(m, i), d->qvel[i]};
+  }
 
   const auto& diff = model_->differential();
   if (diff && diff->active) {
     const JointInfo& a = joints[diff->joint_a];
     const JointInfo& b = joints[diff->joint_b];
+    mjData* d = data_->d;
     const double spread = d->qpos[a.qpos_adr] - d->qpos[b.qpos_adr];
     diff_tau_a_ = -diff->force_constant * spread;
     diff_tau_b_ = diff->force_constant * spread;
@@ -143,22 +170,21 @@ StepStatus Physics::step() {
     d->qfrc_applied[b.dof_adr] = diff_tau_b_;
   }
 
-  data_->saved_time = d->time;
-  copy_n(data_->saved_qpos.data(), d->qpos, m->nq);
-  copy_n(data_->saved_qvel.data(), d->qvel, m->nv);
-  copy_n(data_->saved_act.data(), d->act, m->na);
-  copy_n(data_->saved_warm.data(), d->qacc_warmstart, m->nv);
-  for (int w = 0; w < mjNWARNING; ++w) data_->saved_warnings[w] = d->warning[w].number;
-
-  mj_step(m, d);
+  save_state();
+  StepStatus status;
+  if (!compute_in_arena(true)) {
+    const bool contacts = data_->d->warning[mjWARN_CONTACTFULL].number != data_->saved_warnings[mjWARN_CONTACTFULL];
+    status = contacts ? StepStatus{StepCode::ArenaFull, "contacts", static_cast<double>(data_->m->nconmax)}
+                      : StepStatus{StepCode::ArenaFull, "constraints", static_cast<double>(data_->m->njmax)};
+  }
   data_->stale = true;
 
-  StepStatus status;
+  mjModel* m = data_->m;
+  mjData* d = data_->d;
   for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
-    if (d->warning[w].number == data_->saved_warnings[w]) continue;
+    if (!status.ok() || d->warning[w].number == data_->saved_warnings[w]) continue;
     const int info = d->warning[w].lastinfo;
     status = {StepCode::SolverFailure, w == mjWARN_BADQPOS ? joint_of_qpos(m, info) : joint_of_dof(m, info), 0.0};
-    break;
   }
   if (status.ok()) {
     for (int i = 0; i < m->nq && status.ok(); ++i)
@@ -170,16 +196,133 @@ StepStatus Physics::step() {
       else if (std::fabs(d->qacc[i]) > limit) status = {StepCode::RunawayAcceleration, joint_of_dof(m, i), d->qacc[i]};
     }
   }
-  if (!status.ok()) {
-    d->time = data_->saved_time;
-    copy_n(d->qpos, data_->saved_qpos.data(), m->nq);
-    copy_n(d->qvel, data_->saved_qvel.data(), m->nv);
-    copy_n(d->act, data_->saved_act.data(), m->na);
-    copy_n(d->qacc_warmstart, data_->saved_warm.data(), m->nv);
-    mj_forward(m, d);
-    data_->stale = false;
+  if (status.ok()) {
+    note_mujoco_warnings();
+  } else {
+    restore_saved_state();
+    forward();
   }
   return status;
+}
+
+void Physics::save_state() {
+  const mjModel* m = data_->m;
+  const mjData* d = data_->d;
+  data_->saved_time = d->time;
+  copy_n(data_->saved_qpos.data(), d->qpos, m->nq);
+  copy_n(data_->saved_qvel.data(), d->qvel, m->nv);
+  copy_n(data_->saved_act.data(), d->act, m->na);
+  copy_n(data_->saved_warm.data(), d->qacc_warmstart, m->nv);
+  for (int w = 0; w < mjNWARNING; ++w) data_->saved_warnings[w] = d->warning[w].number;
+}
+
+bool Physics::compute_in_arena(bool step) {
+  for (;;) {
+    if (step) mj_step(data_->m, data_->d);
+    else mj_forward(data_->m, data_->d);
+    const mjData* d = data_->d;
+    const bool contacts_full = d->warning[mjWARN_CONTACTFULL].number != data_->saved_warnings[mjWARN_CONTACTFULL];
+    const bool constraints_full = d->warning[mjWARN_CNSTRFULL].number != data_->saved_warnings[mjWARN_CNSTRFULL];
+    if (!contacts_full && !constraints_full) return true;
+    // MuJoCo dropped contacts or constraints: that is not the physics. Grow and compute again
+    // from the saved state, or fail.
+    if (model_->options().arena_overflow == ArenaOverflow::Fail || !grow_arena(contacts_full, constraints_full, step ? "step" : "state"))
+      return false;
+  }
+}
+
+void Physics::forward() {
+  // mj_forward also leaves the solver's warm start for the next step (qacc_warmstart): computed
+  // with dropped contacts, it would start that step elsewhere. So it too grows the arena.
+  save_state();
+  compute_in_arena(false);
+  data_->stale = false;
+}
+
+void Physics::restore_saved_state() {
+  const mjModel* m = data_->m;
+  mjData* d = data_->d;
+  d->time = data_->saved_time;
+  copy_n(d->qpos, data_->saved_qpos.data(), m->nq);
+  copy_n(d->qvel, data_->saved_qvel.data(), m->nv);
+  copy_n(d->act, data_->saved_act.data(), m->na);
+  copy_n(d->qacc_warmstart, data_->saved_warm.data(), m->nv);
+}
+
+bool Physics::grow_arena(bool contacts_full, bool constraints_full, const char* what) {
+  mjModel* m = data_->m;
+  const ArenaSize before = arena_of(*m);
+  const ArenaSize most = model_->options().max_arena;
+  ArenaSize next = before;
+  if (contacts_full) next.contacts = std::min(most.contacts, 2 * before.contacts);
+  if (constraints_full) next.constraints = std::min(most.constraints, 2 * before.constraints);
+  if ((contacts_full && next.contacts == before.contacts) || (constraints_full && next.constraints == before.constraints))
+    return false;
+
+  // A new mjData of the new size (MuJoCo 2.2.2 sizes its arrays from the model's nconmax/njmax at
+  // mj_makeData), holding the state from before the step: what mj_step reads.
+  mjData* old = data_->d;
+  const ArenaUse use = arena_use();
+  set_arena(*m, next, model_->impl().stack_residual);
+  mjData* d = mj_makeData(m);
+  data_->d = d;
+  restore_saved_state();
+  copy_n(d->ctrl, old->ctrl, m->nu);
+  copy_n(d->qfrc_applied, old->qfrc_applied, m->nv);
+  copy_n(d->xfrc_applied, old->xfrc_applied, 6 * m->nbody);
+  copy_n(d->mocap_pos, old->mocap_pos, 3 * m->nmocap);
+  copy_n(d->mocap_quat, old->mocap_quat, 4 * m->nmocap);
+  copy_n(d->userdata, old->userdata, m->nuserdata);
+  for (int w = 0; w < mjNWARNING; ++w) {
+    d->warning[w] = old->warning[w];
+    d->warning[w].number = data_->saved_warnings[w];
+  }
+  mj_deleteData(old);
+  data_->peak = use.peak;
+  ++data_->growths;
+
+  PhysicsNotice n;
+  n.kind = PhysicsNotice::Kind::ArenaGrown;
+  n.time = data_->saved_time;
+  n.text = std::string("MuJoCo's ") + (contacts_full ? "contact list" : "constraint arena") + " was full (" +
+           std::to_string(contacts_full ? before.contacts : before.constraints) +
+           (contacts_full ? " contacts" : " constraint rows") + "): the arena grew from " +
+           std::to_string(before.contacts) + " contacts / " + std::to_string(before.constraints) + " rows to " +
+           std::to_string(next.contacts) + " / " + std::to_string(next.constraints) + " and the " + what +
+           " was computed again";
+  notices_.push_back(std::move(n));
+  return true;
+}
+
+void Physics::note_mujoco_warnings() {
+  const mjModel* m = data_->m;
+  const mjData* d = data_->d;
+  for (int w = 0; w < mjNWARNING; ++w) {
+    // Bad state fails the step and a full arena grows it (above); the rest are reported.
+    if (w == mjWARN_BADQPOS || w == mjWARN_BADQVEL || w == mjWARN_BADQACC || w == mjWARN_CONTACTFULL ||
+        w == mjWARN_CNSTRFULL || d->warning[w].number == data_->saved_warnings[w])
+      continue;
+    int& index = data_->warning_notice[w];
+    if (index > 0) {
+      ++notices_[static_cast<std::size_t>(index - 1)].count;
+      continue;
+    }
+    PhysicsNotice n;
+    n.time = data_->saved_time;
+    n.text = std::string("MuJoCo warning: ") + mju_warningText(w, d->warning[w].lastinfo);
+    if (w == mjWARN_INERTIA) n.text += " (joint '" + std::string(joint_of_dof(m, d->warning[w].lastinfo)) + "')";
+    notices_.push_back(std::move(n));
+    index = static_cast<int>(notices_.size());
+  }
+}
+
+ArenaUse Physics::arena_use() const {
+  const mjData* d = data_->d;
+  ArenaUse u;
+  u.size = arena_of(*data_->m);
+  u.peak = {std::max(data_->peak.contacts, d->maxuse_con), std::max(data_->peak.constraints, d->maxuse_efc)};
+  u.growths = data_->growths;
+  return u;
 }
 
 double Physics::position(std::size_t j) const { return data_->d->qpos[model_->joints()[j].qpos_adr]; }

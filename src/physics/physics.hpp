@@ -34,10 +34,13 @@ enum class StepCode {
   NonFiniteState,       // position, velocity or acceleration became NaN or infinite
   RunawayAcceleration,  // |acceleration| exceeded BuildOptions::max_joint_acceleration
   SolverFailure,        // MuJoCo itself flagged a bad state (and would have reset it)
+  ArenaFull,            // the step's contacts or constraints did not fit the arena (element says
+                        // which; value: the most it holds), and it could not grow (ArenaOverflow)
 };
 
 // The outcome of step(). On failure the state is left as it was before the step and `element`
-// names the offending joint (or, for a floating base, the body).
+// names the offending joint (or, for a floating base, the body; for ArenaFull "contacts" or
+// "constraints").
 struct StepStatus {
   StepCode code = StepCode::Ok;
   std::string_view element;  // joint or body name; valid while the PhysicsModel lives
@@ -56,6 +59,26 @@ struct Twist {
 struct Bounds {
   description::Vec3 min{1e300, 1e300, 1e300}, max{-1e300, -1e300, -1e300};
   bool empty() const { return min.x > max.x; }
+};
+
+// Something MuJoCo reported in a step that did not fail it, kept for the user: the arena grew (the
+// step was computed again in the larger one, so the physics is unchanged), or a MuJoCo warning
+// such as a singular inertia matrix. One notice per growth; one per kind of MuJoCo warning, whose
+// `count` goes on counting.
+struct PhysicsNotice {
+  enum class Kind { ArenaGrown, MujocoWarning };
+  Kind kind = Kind::MujocoWarning;
+  double time = 0.0;  // s, Physics::time() at the start of the step that first raised it
+  std::string text;   // what happened and the counts (contacts, constraints, the DOF)
+  long count = 1;     // steps that raised it
+};
+
+// How full the arena has been: the most contacts and constraint rows one step has needed since
+// construction (MuJoCo's maxuse_con and maxuse_efc), against the arena's current size.
+struct ArenaUse {
+  ArenaSize size;           // now (grown or as built)
+  ArenaSize peak;           // the most one step used
+  int growths = 0;          // times the arena grew
 };
 
 struct Contact {
@@ -81,8 +104,12 @@ class Physics {
   double time() const;  // s since reset
 
   // Back to the spawn state: spawn pose, zero joint positions and velocities, all joints in
-  // effort mode with zero command, time 0.
+  // effort mode with zero command, time 0. Reuses the arena (a grown one stays grown); no allocation.
   void reset();
+
+  // See PhysicsNotice; kept over reset(). Grows only when something new happens (allocates then).
+  const std::vector<PhysicsNotice>& notices() const { return notices_; }
+  ArenaUse arena_use() const;
 
   std::size_t joint_count() const { return model_->joints().size(); }
   double position(std::size_t joint) const;  // rad or m
@@ -165,7 +192,17 @@ class Physics {
 
  private:
   void refresh_kinematics() const;
+  void save_state();
+  void restore_saved_state();
+  void spawn_state();
+  void forward();
+  // Runs mj_step (step) or mj_forward from the saved state until it fits the arena, growing it
+  // as ArenaOverflow allows; false when it did not fit.
+  bool compute_in_arena(bool step);
+  bool grow_arena(bool contacts_full, bool constraints_full, const char* what);
+  void note_mujoco_warnings();
   std::shared_ptr<const PhysicsModel> model_;
+  std::vector<PhysicsNotice> notices_;
   std::unique_ptr<Data> data_;
   double diff_tau_a_ = 0.0, diff_tau_b_ = 0.0;
 };

@@ -1,10 +1,12 @@
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <memory>
 #include <mutex>
 #include <set>
 
+#include "physics/arena_estimate.hpp"
 #include "physics/body_plan.hpp"
 #include "physics/mjcf_writer.hpp"
 #include "physics/mujoco_internal.hpp"
@@ -86,6 +88,21 @@ void validate_options(const BuildOptions& o) {
     for (std::size_t i = 0; i < h.heights.size(); ++i)
       if (!std::isfinite(h.heights[i])) throw PhysicsError(where + ": height " + std::to_string(i) + " is not finite");
   }
+  const auto bad_arena = [](const ArenaSize& a) { return a.contacts < 1 || a.constraints < 1; };
+  if (bad_arena(o.max_arena) || o.max_arena.constraints > kMaxArenaConstraints)
+    throw PhysicsError("physics option max_arena: contacts and constraints must be in [1, " +
+                       std::to_string(kMaxArenaConstraints) + "] (constraints), got " +
+                       std::to_string(o.max_arena.contacts) + " contacts, " + std::to_string(o.max_arena.constraints) +
+                       " constraints");
+  if (o.arena && (bad_arena(*o.arena) || o.arena->contacts > o.max_arena.contacts ||
+                  o.arena->constraints > o.max_arena.constraints))
+    throw PhysicsError("physics option arena: contacts and constraints must be >= 1 and within max_arena, got " +
+                       std::to_string(o.arena->contacts) + " contacts, " + std::to_string(o.arena->constraints) +
+                       " constraints");
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // MuJoCo hfield data are normalised to [0, 1]; elevation = data * size[2] above the geom.
@@ -129,18 +146,26 @@ PhysicsModel::~PhysicsModel() = default;
 std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::RobotModel& robot,
                                                         const BuildOptions& options) {
   validate_options(options);
+  const auto t_start = std::chrono::steady_clock::now();
+  double compile_ms = 0.0;
   const std::string who = "robot '" + robot.name + "' (" + robot.source + ")";
   BodyPlan plan = plan_bodies(robot, options);
   std::vector<MeshAsset> meshes = collect_meshes(plan);
+  // The arena is sized from the compiled model, so the compiler gets a small one (its own
+  // mj_makeData allocates and zeroes it) and the model its real size afterwards. 20 rows keep
+  // MuJoCo's stack formula above its floor, so that its model-dependent term can be read back.
+  const ArenaSize compile_arena{1, 20};
 
   std::set<std::string> skip;
   std::vector<std::string> compile_warnings;
   mjModel* m = nullptr;
   MjcfDocument doc;
   for (;;) {
-    doc = write_mjcf(robot.name, plan, meshes, options, skip);
+    doc = write_mjcf(robot.name, plan, meshes, options, skip, compile_arena);
     std::string error;
+    const auto t_compile = std::chrono::steady_clock::now();
     m = compile(doc.xml, meshes, error);
+    compile_ms += ms_since(t_compile);
     if (m != nullptr) break;
     const std::string object = error_object(error);
     auto bad = std::find_if(meshes.begin(), meshes.end(), [&](const MeshAsset& a) { return a.name == object; });
@@ -155,10 +180,23 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
 
   std::shared_ptr<PhysicsModel> pm(new PhysicsModel());
   pm->impl_->model = m;
+  const auto t_after = std::chrono::steady_clock::now();
+  const long side = static_cast<long>(compile_arena.constraints) + m->nv;
+  pm->impl_->stack_residual = static_cast<long>(m->nstack) - 5 * side * side;
+  pm->arena_ = estimate_arena(*m);
+  if (options.arena) {
+    pm->arena_.size = *options.arena;
+    pm->arena_.from_options = true;
+  }
+  pm->arena_.size.contacts = std::min(pm->arena_.size.contacts, options.max_arena.contacts);
+  pm->arena_.size.constraints = std::min(pm->arena_.size.constraints, options.max_arena.constraints);
+  set_arena(*m, pm->arena_.size, pm->impl_->stack_residual);
+  const std::string placeholder = mjcf_size_element(compile_arena);
+  doc.xml.replace(doc.xml.find(placeholder), placeholder.size(), mjcf_size_element(pm->arena_.size));
   pm->robot_name_ = robot.name;
   pm->root_link_ = robot.root_link;
   pm->options_ = options;
-  pm->mjcf_ = doc.xml;
+  pm->mjcf_ = std::move(doc.xml);
   pm->fixed_to_world_ = plan.fixed_to_world;
   pm->dropped_joints_ = plan.dropped_joints;
   pm->warnings_ = plan.warnings;
@@ -216,6 +254,9 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     d.active = options.differential == DifferentialMode::PluginLaw;
     pm->differential_ = d;
   }
+  compile_ms += ms_since(t_after);
+  pm->build_times_.compile_ms = compile_ms;
+  pm->build_times_.mjcf_ms = ms_since(t_start) - compile_ms;
   return pm;
 }
 

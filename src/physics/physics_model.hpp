@@ -50,6 +50,29 @@ struct DifferentialInfo {
 // loads but that MuJoCo refuses shows up in build()'s warnings only. Throws as plan_bodies().
 std::vector<std::string> mesh_warnings(const description::RobotModel& robot);
 
+// How the arena of the model's Physics instances was sized (physics/arena_estimate.cpp): from the
+// geom pairs that can touch (MuJoCo's own filters: contype/conaffinity, same or parent body,
+// excluded pairs). Each movable body tree rests on the ground with its lowest geoms at the spawn
+// pose, which make what their shapes make on the ground (a box 4 contacts on a plane, about half
+// the prisms under it on a height field); every other pair counts one contact. Each contact takes
+// as many constraint rows as its friction cone has; joint limits, equalities and friction loss
+// add theirs; then a quarter more. A run that needs more grows the arena (ArenaOverflow).
+struct ArenaEstimate {
+  int candidate_pairs = 0;   // geom pairs that can touch
+  int support_geoms = 0;     // pairs of a ground geom and a geom a body tree rests on
+  int contacts = 0;          // contacts estimated
+  int contact_rows = 0;      // constraint rows of those contacts
+  int other_rows = 0;        // limits, equality constraints, friction loss
+  ArenaSize size;            // what instances start with: the above with margin, or BuildOptions::arena
+  bool from_options = false;  // size was given by BuildOptions::arena
+};
+
+// Wall-clock time of PhysicsModel::build's stages (ms).
+struct BuildTimes {
+  double mjcf_ms = 0.0;     // body plan, meshes read and converted, MJCF written
+  double compile_ms = 0.0;  // MuJoCo's compiler (mj_loadXML from memory), terrain, arena estimate
+};
+
 class PhysicsModel {
  public:
   // Plans the bodies, writes MJCF, compiles it with MuJoCo from memory. Throws PhysicsError with
@@ -79,7 +102,9 @@ class PhysicsModel {
   // URDF joints that are not simulated (massless child link merged into its parent).
   const std::vector<std::string>& dropped_joints() const { return dropped_joints_; }
 
-  const std::string& mjcf() const { return mjcf_; }  // the generated document
+  const std::string& mjcf() const { return mjcf_; }  // the generated document (arena size included)
+  const ArenaEstimate& arena() const { return arena_; }
+  const BuildTimes& build_times() const { return build_times_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
 
   // Counts of the compiled model (bodies include the world body).
@@ -96,6 +121,8 @@ class PhysicsModel {
   std::unique_ptr<Impl> impl_;
   std::string robot_name_, root_link_, mjcf_;
   BuildOptions options_;
+  ArenaEstimate arena_;
+  BuildTimes build_times_;
   std::vector<JointInfo> joints_;
   std::vector<LinkInfo> links_;
   std::optional<DifferentialInfo> differential_;

@@ -70,6 +70,29 @@ struct SpawnPose {
   double roll = 0.0, pitch = 0.0, yaw = 0.0;  // rad, fixed axes, URDF convention
 };
 
+// The size of MuJoCo 2.2.2's per-instance contact and constraint arena (its <size nconmax njmax>).
+// Memory: about 12 bytes x constraints^2 (the constraint solver's dense matrices), allocated and
+// zeroed by every mj_makeData; MuJoCo adds a stack of 40 (constraints + dofs)^2 bytes of address
+// space, touched only as used.
+struct ArenaSize {
+  int contacts = 0;     // contacts one step can hold (nconmax)
+  int constraints = 0;  // scalar constraint rows one step can hold (njmax): contacts, limits, ...
+  bool operator==(const ArenaSize& o) const { return contacts == o.contacts && constraints == o.constraints; }
+};
+
+// What a step does when its contacts or constraints do not fit the arena (MuJoCo would drop the
+// surplus, which changes the physics).
+enum class ArenaOverflow {
+  // Double what overflowed (up to BuildOptions::max_arena), rebuild the instance's data with its
+  // state, and compute the step again: the physics is exactly that of a large enough arena.
+  // Each growth is reported (Physics::notices()).
+  Grow,
+  Fail,  // the step fails with StepCode::ArenaFull and the state stays as before it
+};
+
+// The most constraints an arena may have: MuJoCo 2.2.2 sizes its stack 5 (njmax + nv)^2 in an int.
+inline constexpr int kMaxArenaConstraints = 16000;
+
 struct BuildOptions {
   double timestep = 0.001;  // s (1 kHz)
   // Euler is the default, measured against Implicit on every acceptance test (PR2 and CC8, 1 ms):
@@ -84,6 +107,11 @@ struct BuildOptions {
   bool visuals = true;  // build visual geoms (group 1, never collide) for rendering
   // Runaway detector: |joint acceleration| above this (rad/s^2 or m/s^2) fails the step.
   double max_joint_acceleration = 1e6;
+  // Initial arena of each Physics instance; nullopt: sized from what can touch what in the model
+  // (PhysicsModel::arena()). Growth never goes past max_arena (8000 constraints: ~0.8 GB).
+  std::optional<ArenaSize> arena;
+  ArenaOverflow arena_overflow = ArenaOverflow::Grow;
+  ArenaSize max_arena{16000, 8000};
 };
 
 }  // namespace mechsim::physics

@@ -300,6 +300,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   result.sim_time = sim->time();
   result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   result.real_time_factor = rtf_now();
+  for (std::string& w : sim->physics_warnings()) result.warnings.push_back(std::move(w));
   const description::Pose X_WB = sim->physics().base_pose();
   result.final_x = X_WB.position.x;
   result.final_y = X_WB.position.y;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <thread>
 
@@ -36,6 +37,8 @@ physics::BuildOptions build_options(const World& world, const SimulationOptions&
   b.differential = options.differential;
   b.world = world.spec;
   b.spawn = options.spawn;
+  b.arena = options.arena;
+  b.arena_overflow = options.arena_overflow;
   if (world.spec.terrain) b.spawn.z += physics::height_at(*world.spec.terrain, b.spawn.x, b.spawn.y);
   return b;
 }
@@ -72,8 +75,17 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   if (!(options_.real_time_factor >= 0.0)) {
     throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
   }
+  using Clock = std::chrono::steady_clock;
+  const auto ms_since = [](Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  };
   physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
+  startup_times_.mjcf_ms = physics_model_->build_times().mjcf_ms;
+  startup_times_.compile_ms = physics_model_->build_times().compile_ms;
+  auto t0 = Clock::now();
   physics_ = std::make_unique<physics::Physics>(physics_model_);
+  startup_times_.data_ms = ms_since(t0);
+  t0 = Clock::now();
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
   spawn_pose_ = physics_->base_pose();
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
@@ -156,6 +168,8 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   apply_initial_joints();
   paused_.store(options_.start_paused);
   read_physics();
+  notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
+  startup_times_.mechanism_ms = ms_since(t0);
 }
 
 namespace {
@@ -286,9 +300,12 @@ TickResult Simulation::step() {
   for (const Observer& observer : control_observers_) observer(*this);
   const physics::StepStatus status = physics_->step();
   ++ticks_;
+  while (notice_ticks_.size() < physics_->notices().size()) notice_ticks_.push_back(ticks_);
   if (!status.ok()) {
     ++divergences_;
-    TickResult result{false, "physics diverged at t=" + std::to_string(time()) + " s: " + status.message()};
+    const char* what = status.code == physics::StepCode::ArenaFull ? "physics failed" : "physics diverged";
+    TickResult result{false, std::string(what) + " at tick " + std::to_string(ticks_) + " (t=" + std::to_string(time()) +
+                                 " s): " + status.message()};
     if (options_.on_divergence == DivergencePolicy::Reset) {
       reset();
       result.error += " (simulation reset to the spawn state)";
@@ -362,6 +379,22 @@ void Simulation::reset() {
   // the next tick applies it.
   if (!running.empty()) manager_->switch_controllers(running, running, control::SwitchStrictness::BestEffort);
   ++resets_;
+}
+
+std::vector<std::string> Simulation::physics_warnings() const {
+  std::vector<std::string> out;
+  const std::vector<physics::PhysicsNotice>& notices = physics_->notices();
+  for (std::size_t i = 0; i < notices.size() && i < notice_ticks_.size(); ++i) {
+    const std::uint64_t tick = notice_ticks_[i];
+    char when[64];
+    if (tick == 0) std::snprintf(when, sizeof when, "spawn (t = 0 s): ");
+    else std::snprintf(when, sizeof when, "tick %llu (t = %.3f s): ", static_cast<unsigned long long>(tick),
+                       static_cast<double>(tick - 1) * options_.period);
+    std::string text = when + notices[i].text;
+    if (notices[i].count > 1) text += " (in " + std::to_string(notices[i].count) + " steps in all)";
+    out.push_back(std::move(text));
+  }
+  return out;
 }
 
 void Simulation::load_and_start(const std::vector<std::string>& controllers) {

@@ -31,6 +31,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,10 @@ struct SimulationOptions {
   // Servo gains of joints commanded through position/velocity interfaces, by joint name
   // (gazebo_ros_control's pid_gains/<joint>: p -> kp, d -> kv). Missing: the physics default.
   std::map<std::string, physics::ServoGains> servo_gains;
+  // MuJoCo's contact and constraint arena (physics::BuildOptions): nullopt sizes it from the model;
+  // a tick that needs more grows it (reported in physics_warnings()) or, with Fail, stops the run.
+  std::optional<physics::ArenaSize> arena;
+  physics::ArenaOverflow arena_overflow = physics::ArenaOverflow::Grow;
 };
 
 // Wall-clock seconds the paced simulation may fall behind its anchor before it gives up
@@ -83,7 +88,7 @@ inline constexpr double kMaxPaceLag = 0.25;
 
 struct TickResult {
   bool ok = true;
-  std::string error;  // set when the physics diverged: what, where, when
+  std::string error;  // set when the physics diverged or its arena was full: what, where, when
   explicit operator bool() const { return ok; }
 };
 
@@ -141,6 +146,20 @@ class Simulation {
   const mechanism::MechanismState& mechanism_state() const { return *mechanism_state_; }
   control::ControllerManager& controllers() { return *manager_; }
   const control::ControllerManager& controllers() const { return *manager_; }
+
+  // What the physics reported without failing a tick (physics::PhysicsNotice: its arena grew, a
+  // MuJoCo warning), each as "tick N (t = T s): what" ("spawn (t = 0 s): " for the spawn state),
+  // with how often it recurred.
+  std::vector<std::string> physics_warnings() const;
+
+  // Wall-clock time (ms) of the constructor's stages.
+  struct StartupTimes {
+    double mjcf_ms = 0.0;       // physics model: body plan, meshes, MJCF (physics::BuildTimes)
+    double compile_ms = 0.0;    // physics model: MuJoCo's compiler, terrain, arena estimate
+    double data_ms = 0.0;       // the physics instance: model copy and MuJoCo data (the arena)
+    double mechanism_ms = 0.0;  // mechanism, controller manager, reflected inertia
+  };
+  const StartupTimes& startup_times() const { return startup_times_; }
 
   // Rotor inertia the simulation added to joints whose safety controller would be unstable at
   // this period (see add_reflected_inertia_for_safety_limits): joint name and the joint's
@@ -215,6 +234,8 @@ class Simulation {
   bool pace_anchored_ = false;
   std::chrono::steady_clock::time_point pace_wall_{};
   double pace_sim_ = 0.0;
+  std::vector<std::uint64_t> notice_ticks_;  // the tick that raised each physics notice
+  StartupTimes startup_times_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
   double measured_rtf_ = 0.0;
   std::atomic<bool> paused_{false};
