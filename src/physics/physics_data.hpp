@@ -1,0 +1,63 @@
+#pragma once
+// Private to src/physics/*.cpp: the MuJoCo objects behind one Physics instance, and helpers its
+// files share (physics.cpp: state, I/O, queries; physics_arena.cpp: the arena and MuJoCo's warnings).
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/mujoco_internal.hpp"
+#include "physics/physics.hpp"
+
+namespace mechsim::physics {
+
+struct Physics::Data {
+  mjModel* m = nullptr;  // private copy: actuator gains are per instance
+  mjData* d = nullptr;
+  mutable bool stale = true;  // kinematics lag the state (after a step or a state write)
+  std::vector<JointMode> modes;
+  std::vector<ServoGains> gains;
+  std::vector<std::string> geom_links;  // URDF link (or world geom) per MuJoCo geom
+  std::vector<int> robot_collision_geoms;
+  // State before the current step, restored when a step fails.
+  double saved_time = 0.0;
+  std::vector<mjtNum> saved_qpos, saved_qvel, saved_act, saved_warm;
+  int saved_warnings[mjNWARNING] = {};
+  // Arena use before the last reset or growth (mj_resetData and a new mjData start from 0).
+  ArenaSize peak;
+  int growths = 0;
+  int warning_notice[mjNWARNING] = {};  // index + 1 into Physics::notices_ of each MuJoCo warning
+
+  ~Data() {
+    if (d != nullptr) mj_deleteData(d);
+    if (m != nullptr) mj_deleteModel(m);
+  }
+};
+
+namespace detail {
+
+inline std::string_view joint_of_dof(const mjModel* m, int dof) {
+  if (dof < 0 || dof >= m->nv) return "?";
+  const int j = m->dof_jntid[dof];
+  const char* n = mj_id2name(m, mjOBJ_JOINT, j);
+  if (n != nullptr && m->jnt_type[j] != mjJNT_FREE) return n;
+  const char* b = mj_id2name(m, mjOBJ_BODY, m->jnt_bodyid[j]);
+  return b != nullptr ? b : "?";
+}
+
+// MuJoCo prints a warning, and appends it to MUJOCO_LOG.TXT in the working directory, the first
+// time its count leaves 0. Physics reports every arena overflow itself (it grows or fails the
+// step), so these two counts start at 1: the steps compare counts, never read them as totals.
+inline void start_arena_warning_counts(mjData* d) {
+  for (int w : {mjWARN_CONTACTFULL, mjWARN_CNSTRFULL}) d->warning[w].number = std::max(d->warning[w].number, 1);
+}
+
+template <typename T>
+inline void copy_n(T* dst, const T* src, int n) {
+  if (n > 0) std::memcpy(dst, src, sizeof(T) * static_cast<std::size_t>(n));
+}
+
+}  // namespace detail
+}  // namespace mechsim::physics
