@@ -263,9 +263,17 @@ function(mechsim_ros_write_md5_table)
     list(GET parts 1 kind)
     string(REPLACE "/" "::" cxx "${type}")
     string(APPEND includes "#include <${type}.h>\n")
+    # A service's own row uses service_traits, its Request/Response parts message_traits. The
+    # name alone cannot tell them apart (gazebo_msgs/JointRequest is a service): a part is a
+    # name whose stem without the suffix is itself a listed service.
     set(traits "message_traits")
-    if(kind STREQUAL "srv" AND NOT type MATCHES "(Request|Response)$")
+    if(kind STREQUAL "srv")
       set(traits "service_traits")
+      if(type MATCHES "^(.*)(Request|Response)$")
+        if("${CMAKE_MATCH_1}:srv" IN_LIST ARG_TYPES)
+          set(traits "message_traits")
+        endif()
+      endif()
     endif()
     string(APPEND rows "      {\"${type}\", \"${kind}\", ::ros::${traits}::DataType< ::${cxx}>::value(),\n"
                        "       ::ros::${traits}::MD5Sum< ::${cxx}>::value()},\n")
