@@ -10,6 +10,7 @@
 
 #include "physics/mesh_loader.hpp"
 #include "physics/physics_error.hpp"
+#include "physics/terrain_tiles.hpp"
 #include "physics/transform.hpp"
 
 namespace mechsim::physics {
@@ -164,6 +165,11 @@ class Writer {
       x_ << "    <hfield name=\"" << kTerrainName << "\" nrow=\"" << h.rows << "\" ncol=\"" << h.cols
          << "\" size=\"" << num(h.size_x / 2) << " " << num(h.size_y / 2) << " " << num(range) << " "
          << num(std::max(1.0, 0.1 * range)) << "\"/>\n";
+      if (options_.render_terrain)
+        for (const TerrainTile& t : plan_terrain_tiles(h))
+          x_ << "    <hfield name=\"" << t.name << "\" nrow=\"" << t.nrow << "\" ncol=\"" << t.ncol << "\" size=\""
+             << num((t.x1 - t.x0) / 2) << " " << num((t.y1 - t.y0) / 2) << " " << num(range) << " "
+             << num(std::max(1.0, 0.1 * range)) << "\"/>\n";
     }
     x_ << "  </asset>\n";
   }
@@ -177,6 +183,11 @@ class Writer {
       const double lo = static_cast<double>(*std::min_element(h.heights.begin(), h.heights.end()));
       x_ << "    <geom name=\"" << kTerrainName << "\" type=\"hfield\" hfield=\"" << kTerrainName << "\" pos=\"0 0 "
          << num(lo) << "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";
+      if (options_.render_terrain)
+        for (const TerrainTile& t : plan_terrain_tiles(h))
+          x_ << "    <geom name=\"" << t.name << "\" type=\"hfield\" hfield=\"" << t.name << "\" pos=\""
+             << num((t.x0 + t.x1) / 2) << " " << num((t.y0 + t.y1) / 2) << " " << num(lo) << "\" contype=\"0\""
+             << " conaffinity=\"0\" group=\"" << kTileGroup << "\"/>\n";
     } else if (options_.world.ground_plane) {
       x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""
          << " group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";

@@ -189,6 +189,7 @@ class Physics {
   double energy() const;
 
   struct Data;  // MuJoCo objects; physics.cpp only
+  const Data& data() const { return *data_; }  // for physics/ (mujoco_internal.hpp: mujoco_data)
 
  private:
   void refresh_kinematics() const;

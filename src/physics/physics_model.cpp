@@ -11,6 +11,7 @@
 #include "physics/mjcf_writer.hpp"
 #include "physics/mujoco_internal.hpp"
 #include "physics/physics_error.hpp"
+#include "physics/terrain_tiles.hpp"
 
 namespace mechsim::physics {
 namespace {
@@ -116,6 +117,15 @@ void fill_hfield(mjModel& m, const Heightmap& h) {
     data[i] = range > 0.0 ? static_cast<float>((static_cast<double>(h.heights[i] - *lo)) / range) : 0.0f;
 }
 
+void fill_terrain_tiles(mjModel& m, const Heightmap& h) {
+  const auto [lo, hi] = std::minmax_element(h.heights.begin(), h.heights.end());
+  for (const TerrainTile& t : plan_terrain_tiles(h)) {
+    const int id = mj_name2id(&m, mjOBJ_HFIELD, t.name.c_str());
+    if (id < 0) throw PhysicsError("internal: terrain tile '" + t.name + "' missing from the compiled model");
+    fill_terrain_tile(h, t, *lo, *hi, m.hfield_data + m.hfield_adr[id]);
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> mesh_warnings(const description::RobotModel& robot) {
@@ -202,7 +212,10 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
   pm->warnings_ = plan.warnings;
   pm->warnings_.insert(pm->warnings_.end(), compile_warnings.begin(), compile_warnings.end());
   pm->warnings_.insert(pm->warnings_.end(), doc.warnings.begin(), doc.warnings.end());
-  if (options.world.kind == WorldSpec::Kind::Heightmap) fill_hfield(*m, *options.world.terrain);
+  if (options.world.kind == WorldSpec::Kind::Heightmap) {
+    fill_hfield(*m, *options.world.terrain);
+    if (options.render_terrain) fill_terrain_tiles(*m, *options.world.terrain);
+  }
 
   // Joint table: every 1-DOF MuJoCo joint, in MuJoCo order.
   std::set<std::string> one_dof;

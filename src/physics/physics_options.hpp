@@ -105,6 +105,9 @@ struct BuildOptions {
   WorldSpec world;
   SpawnPose spawn;
   bool visuals = true;  // build visual geoms (group 1, never collide) for rendering
+  // Also build render-only tiles of a height field at several levels of detail (group 3, never
+  // collide; physics/terrain_tiles.hpp), for cameras. No effect on an empty world.
+  bool render_terrain = false;
   // Runaway detector: |joint acceleration| above this (rad/s^2 or m/s^2) fails the step.
   double max_joint_acceleration = 1e6;
   // Initial arena of each Physics instance; nullopt: sized from what can touch what in the model

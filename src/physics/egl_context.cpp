@@ -1,0 +1,160 @@
+#include "physics/egl_context.hpp"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <dlfcn.h>
+
+#include <cstdio>
+#include <string>
+
+#include "physics/render_error.hpp"
+
+namespace mechsim::physics {
+
+namespace {
+
+constexpr const char* kInstallHint =
+    "; cameras need EGL with Mesa's software renderer (Debian: libegl1 libegl-mesa0 libgl1-mesa-dri) "
+    "or a GPU driver with EGL";
+
+// libEGL is opened at run time, not linked: a machine without it still runs everything but
+// cameras.
+struct EglApi {
+  void* lib = nullptr;
+  PFNEGLGETPROCADDRESSPROC get_proc = nullptr;
+  PFNEGLGETERRORPROC get_error = nullptr;
+  PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display = nullptr;
+  PFNEGLQUERYDEVICESEXTPROC query_devices = nullptr;
+  PFNEGLINITIALIZEPROC initialize = nullptr;
+  PFNEGLBINDAPIPROC bind_api = nullptr;
+  PFNEGLCHOOSECONFIGPROC choose_config = nullptr;
+  PFNEGLCREATECONTEXTPROC create_context = nullptr;
+  PFNEGLDESTROYCONTEXTPROC destroy_context = nullptr;
+  PFNEGLMAKECURRENTPROC make_current = nullptr;
+  PFNEGLQUERYSTRINGPROC query_string = nullptr;
+};
+
+// The library and its entry points are the same for every context of the process; resolving them
+// again per context costs microseconds and keeps no process-wide mutable state of ours.
+EglApi load_api() {
+  EglApi api;
+  api.lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+  if (api.lib == nullptr) throw RenderUnavailable(std::string("cannot load libEGL.so.1 (") + dlerror() + ")" + kInstallHint);
+  api.get_proc = reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(dlsym(api.lib, "eglGetProcAddress"));
+  if (api.get_proc == nullptr) throw RenderUnavailable(std::string("libEGL.so.1 has no eglGetProcAddress") + kInstallHint);
+  auto get = [&](const char* name) {
+    void* f = dlsym(api.lib, name);
+    if (f == nullptr) f = reinterpret_cast<void*>(api.get_proc(name));
+    return f;
+  };
+  api.get_error = reinterpret_cast<PFNEGLGETERRORPROC>(get("eglGetError"));
+  api.get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(get("eglGetPlatformDisplayEXT"));
+  api.query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(get("eglQueryDevicesEXT"));
+  api.initialize = reinterpret_cast<PFNEGLINITIALIZEPROC>(get("eglInitialize"));
+  api.bind_api = reinterpret_cast<PFNEGLBINDAPIPROC>(get("eglBindAPI"));
+  api.choose_config = reinterpret_cast<PFNEGLCHOOSECONFIGPROC>(get("eglChooseConfig"));
+  api.create_context = reinterpret_cast<PFNEGLCREATECONTEXTPROC>(get("eglCreateContext"));
+  api.destroy_context = reinterpret_cast<PFNEGLDESTROYCONTEXTPROC>(get("eglDestroyContext"));
+  api.make_current = reinterpret_cast<PFNEGLMAKECURRENTPROC>(get("eglMakeCurrent"));
+  api.query_string = reinterpret_cast<PFNEGLQUERYSTRINGPROC>(get("eglQueryString"));
+  if (!api.get_error || !api.get_platform_display || !api.initialize || !api.bind_api || !api.choose_config ||
+      !api.create_context || !api.destroy_context || !api.make_current || !api.query_string)
+    throw RenderUnavailable(std::string("libEGL.so.1 lacks EGL 1.4 functions or EGL_EXT_platform_base") + kInstallHint);
+  return api;
+}
+
+std::string hex(EGLint code) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%04x", static_cast<unsigned>(code));
+  return buf;
+}
+
+struct Display {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  std::string platform;
+};
+
+// Surfaceless first (Mesa: a GPU render node, else llvmpipe), then the device platform.
+Display open_display(const EglApi& api, std::string& tried) {
+  EGLDisplay d = api.get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (d != EGL_NO_DISPLAY && api.initialize(d, &major, &minor) == EGL_TRUE)
+    return {d, "EGL " + std::to_string(major) + "." + std::to_string(minor) + " surfaceless"};
+  tried += "surfaceless platform: EGL error " + hex(api.get_error());
+  if (api.query_devices != nullptr) {
+    EGLDeviceEXT devices[8];
+    EGLint n = 0;
+    if (api.query_devices(8, devices, &n) == EGL_TRUE) {
+      for (EGLint i = 0; i < n; ++i) {
+        d = api.get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (d != EGL_NO_DISPLAY && api.initialize(d, &major, &minor) == EGL_TRUE)
+          return {d, "EGL " + std::to_string(major) + "." + std::to_string(minor) + " device " + std::to_string(i)};
+      }
+      tried += "; device platform: " + std::to_string(n) + " device(s), none initialised";
+    } else {
+      tried += "; device platform: EGL error " + hex(api.get_error());
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+struct EglState {
+  EglApi api;
+};
+
+EglContext::EglContext() {
+  // The API table lives as long as the context: keep it beside the handles.
+  static_assert(sizeof(void*) == sizeof(EGLDisplay));
+  const EglApi api = load_api();
+  std::string tried;
+  const Display disp = open_display(api, tried);
+  if (disp.display == EGL_NO_DISPLAY) throw RenderUnavailable("no EGL display (" + tried + ")" + kInstallHint);
+  if (api.bind_api(EGL_OPENGL_API) != EGL_TRUE)
+    throw RenderUnavailable("EGL display offers no desktop OpenGL (EGL error " + hex(api.get_error()) + ")" + kInstallHint);
+  const EGLint attributes[] = {EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
+                               EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_COLOR_BUFFER_TYPE, EGL_RGB_BUFFER,
+                               EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint count = 0;
+  if (api.choose_config(disp.display, attributes, &config, 1, &count) != EGL_TRUE || count < 1)
+    throw RenderUnavailable("EGL has no 8-bit RGBA + 24-bit depth OpenGL configuration (EGL error " +
+                            hex(api.get_error()) + ")" + kInstallHint);
+  EGLContext ctx = api.create_context(disp.display, config, EGL_NO_CONTEXT, nullptr);
+  if (ctx == EGL_NO_CONTEXT)
+    throw RenderUnavailable("eglCreateContext failed (EGL error " + hex(api.get_error()) + ")" + kInstallHint);
+  display_ = disp.display;
+  context_ = ctx;
+  api_ = std::make_unique<EglState>(EglState{api});
+  make_current();
+  using GetString = const unsigned char* (*)(unsigned);
+  auto get_string = reinterpret_cast<GetString>(api.get_proc("glGetString"));
+  auto text = [&](unsigned name) {
+    const unsigned char* s = get_string != nullptr ? get_string(name) : nullptr;
+    return s != nullptr ? std::string(reinterpret_cast<const char*>(s)) : std::string();
+  };
+  const std::string renderer = text(0x1F01 /* GL_RENDERER */), version = text(0x1F02 /* GL_VERSION */);
+  if (version.empty()) throw RenderUnavailable("the EGL context answers no OpenGL version" + std::string(kInstallHint));
+  description_ = disp.platform + ": " + renderer + ", OpenGL " + version;
+  // MuJoCo's renderer needs OpenGL 1.5 with framebuffer objects; its own check would exit().
+  const int major = version[0] - '0', minor = version.size() > 2 ? version[2] - '0' : 0;
+  if (major < 1 || (major == 1 && minor < 5) || major > 9)
+    throw RenderUnavailable("OpenGL " + version + " is older than MuJoCo's renderer needs (1.5)");
+}
+
+EglContext::~EglContext() {
+  if (api_ == nullptr) return;
+  const EglApi& api = api_->api;
+  api.make_current(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  api.destroy_context(display_, context_);
+  // The display is left initialised: EGL displays are per process, other renderers may use it.
+}
+
+void EglContext::make_current() const {
+  const EglApi& api = api_->api;
+  if (api.make_current(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
+    throw RenderUnavailable("eglMakeCurrent failed (EGL error " + hex(api.get_error()) + ")");
+}
+
+}  // namespace mechsim::physics

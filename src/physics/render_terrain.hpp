@@ -1,0 +1,45 @@
+#pragma once
+// Private to src/physics: which terrain render tiles (terrain_tiles.hpp) a camera draws, and at
+// which level of detail. A tile outside the view's frustum is not drawn; a visible one is drawn
+// at the coarsest level whose cells project to at most `pixels_per_cell` pixels at the tile's
+// nearest point.
+
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "physics/renderer.hpp"
+
+namespace mechsim::physics {
+
+class TerrainLod {
+ public:
+  TerrainLod() = default;
+  explicit TerrainLod(const mjModel* m);  // finds the model's tiles (none: empty())
+  bool empty() const { return tiles_.empty(); }
+
+  // The level to draw per tile (-1: culled); adds the tiles and cells drawn to `stats`.
+  std::vector<int> choose(const CameraView& view, double pixels_per_cell, RenderStats& stats) const;
+  // Whether tile geom `geom` is drawn under `levels` (from choose()).
+  bool drawn(int geom, const std::vector<int>& levels) const {
+    const Entry& e = by_geom_[static_cast<std::size_t>(geom)];
+    return e.tile >= 0 && levels[static_cast<std::size_t>(e.tile)] == e.level;
+  }
+
+ private:
+  struct Level {
+    double cell = 0.0;  // m
+    long cells = 0;
+  };
+  struct Tile {
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // world box (m)
+    std::vector<Level> levels;
+  };
+  struct Entry {
+    int tile = -1, level = -1;
+  };
+  std::vector<Tile> tiles_;
+  std::vector<Entry> by_geom_;
+};
+
+}  // namespace mechsim::physics

@@ -1,0 +1,258 @@
+#include "physics/renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "physics/egl_context.hpp"
+#include "physics/mjcf_writer.hpp"
+#include "physics/mujoco_internal.hpp"
+#include "physics/render_terrain.hpp"
+#include "physics/terrain_tiles.hpp"
+#include "physics/transform.hpp"
+
+namespace mechsim::physics {
+
+namespace {
+
+// Gazebo's default sun (direction -0.5 0.1 -0.9, diffuse 0.8, specular 0.2) over an ambient of
+// 0.4, carried by MuJoCo's headlight (ambient only): images lit as a Gazebo world's default.
+constexpr float kSunDirection[3] = {-0.5f, 0.1f, -0.9f};
+constexpr float kSunDiffuse = 0.8f, kSunSpecular = 0.2f, kAmbient = 0.4f;
+
+bool is_ground(const mjModel* m, int geom, int terrain_geom, int ground_geom) {
+  return geom == terrain_geom || geom == ground_geom || (geom >= 0 && m->geom_group[geom] == kTileGroup);
+}
+
+}  // namespace
+
+std::string check_view(const CameraView& v) {
+  if (v.width <= 0 || v.height <= 0)
+    return "image size " + std::to_string(v.width) + " x " + std::to_string(v.height) + ": width and height must be > 0";
+  if (!(v.fx > 0.0) || !(v.fy > 0.0) || !std::isfinite(v.fx) || !std::isfinite(v.fy))
+    return "focal lengths must be finite and > 0 (fx " + std::to_string(v.fx) + ", fy " + std::to_string(v.fy) + ")";
+  if (std::abs(v.fx - v.fy) > 1e-6 * v.fx) return "the renderer needs square pixels (fx == fy)";
+  if (!std::isfinite(v.cx) || !std::isfinite(v.cy)) return "principal point must be finite";
+  if (!(v.near > 0.0) || !(v.far > v.near) || !std::isfinite(v.far))
+    return "clip distances must satisfy 0 < near < far < inf (near " + std::to_string(v.near) + ", far " +
+           std::to_string(v.far) + ")";
+  return "";
+}
+
+struct Renderer::Impl {
+  EglContext egl;
+  const mjModel* m = nullptr;
+  mjData* d = nullptr;
+  mjvScene scn{};
+  mjvOption opt{};
+  mjvCamera cam{};
+  mjvPerturb pert{};
+  mjrContext con{};
+  std::vector<mjvGeom> geoms;  // the scene of the last update_scene(), every geom
+  int nlight = 0;
+  std::array<mjvLight, mjMAXLIGHT> lights{};
+  int terrain_geom = -1, ground_geom = -1;
+  TerrainLod lod;
+  bool scene_ready = false;
+
+  ~Impl() {
+    try {
+      egl.make_current();
+    } catch (const RenderUnavailable&) {
+      // The context is going anyway; freeing GL objects of a lost context is harmless.
+    }
+    mjr_freeContext(&con);
+    mjv_freeScene(&scn);
+    if (d != nullptr) mj_deleteData(d);
+  }
+};
+
+Renderer::Renderer(std::shared_ptr<const PhysicsModel> model, const RenderSettings& settings)
+    : model_(std::move(model)), settings_(settings) {
+  if (settings_.max_width <= 0 || settings_.max_height <= 0 || settings_.max_width > 8192 || settings_.max_height > 8192)
+    throw std::invalid_argument("render settings: the largest view must be 1..8192 pixels each way (got " +
+                                std::to_string(settings_.max_width) + " x " + std::to_string(settings_.max_height) + ")");
+  if (settings_.multisamples < 0 || settings_.multisamples > 16)
+    throw std::invalid_argument("render settings: multisamples must be 0..16");
+  if (!(settings_.terrain_pixels_per_cell > 0.0))
+    throw std::invalid_argument("render settings: terrain_pixels_per_cell must be > 0");
+  impl_ = std::make_unique<Impl>();
+  Impl& r = *impl_;
+  r.m = model_->impl().model;
+  r.d = mj_makeData(r.m);
+  // MuJoCo sizes the offscreen buffer from the model's visual options: a shallow copy carries
+  // ours without touching the shared model.
+  mjModel sized = *r.m;
+  sized.vis.global.offwidth = settings_.max_width;
+  sized.vis.global.offheight = settings_.max_height;
+  sized.vis.quality.offsamples = settings_.multisamples;
+  sized.vis.quality.shadowsize = settings_.shadows ? 4096 : 1024;
+  mjr_defaultContext(&r.con);
+  mjr_makeContext(&sized, &r.con, mjFONTSCALE_50);
+  if (r.con.offWidth < settings_.max_width || r.con.offHeight < settings_.max_height)
+    throw RenderUnavailable("the OpenGL context offers an offscreen buffer of " + std::to_string(r.con.offWidth) +
+                            " x " + std::to_string(r.con.offHeight) + " pixels only");
+  mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
+  mjv_defaultScene(&r.scn);
+  mjv_makeScene(r.m, &r.scn, r.m->ngeom + 64);
+  mjv_defaultOption(&r.opt);
+  std::fill(std::begin(r.opt.flags), std::end(r.opt.flags), mjtByte{0});
+  r.opt.flags[mjVIS_STATIC] = 1;
+  std::fill(std::begin(r.opt.geomgroup), std::end(r.opt.geomgroup), mjtByte{0});
+  std::fill(std::begin(r.opt.sitegroup), std::end(r.opt.sitegroup), mjtByte{0});
+  r.opt.geomgroup[1] = 1;  // robot visuals
+  r.opt.geomgroup[2] = 1;  // ground, terrain, world boxes
+  r.lod = TerrainLod(r.m);
+  r.opt.geomgroup[kTileGroup] = r.lod.empty() ? 0 : 1;
+  r.terrain_geom = mj_name2id(r.m, mjOBJ_GEOM, kTerrainName);
+  r.ground_geom = mj_name2id(r.m, mjOBJ_GEOM, kGroundName);
+  mjv_defaultFreeCamera(r.m, &r.cam);
+  mjv_defaultPerturb(&r.pert);
+}
+
+Renderer::~Renderer() = default;
+
+const std::string& Renderer::context_description() const { return impl_->egl.description(); }
+
+void Renderer::update_scene(const Physics& physics) {
+  Impl& r = *impl_;
+  const mjData& src = mujoco_data(physics.data());
+  const mjModel* pm = physics.model().impl().model;
+  if (pm->nq != r.m->nq || pm->nbody != r.m->nbody)
+    throw std::invalid_argument("renderer: the simulation runs another model (" + std::to_string(pm->nbody) +
+                                " bodies, renderer " + std::to_string(r.m->nbody) + ")");
+  std::memcpy(r.d->qpos, src.qpos, sizeof(mjtNum) * static_cast<std::size_t>(r.m->nq));
+  r.d->time = src.time;
+  mj_kinematics(r.m, r.d);
+  mj_camlight(r.m, r.d);
+  mjv_updateScene(r.m, r.d, &r.opt, &r.pert, &r.cam, mjCAT_ALL, &r.scn);
+  r.geoms.assign(r.scn.geoms, r.scn.geoms + r.scn.ngeom);
+  r.nlight = r.scn.nlight;
+  std::copy(r.scn.lights, r.scn.lights + r.scn.nlight, r.lights.begin());
+  r.scene_ready = true;
+}
+
+RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb, bool want_depth) {
+  Impl& r = *impl_;
+  if (const std::string bad = check_view(view); !bad.empty()) throw std::invalid_argument("camera view: " + bad);
+  if (view.width > settings_.max_width || view.height > settings_.max_height)
+    throw std::invalid_argument("camera view: " + std::to_string(view.width) + " x " + std::to_string(view.height) +
+                                " is larger than the renderer's " + std::to_string(settings_.max_width) + " x " +
+                                std::to_string(settings_.max_height));
+  if (!r.scene_ready) throw std::logic_error("renderer: render() before update_scene()");
+  r.egl.make_current();
+
+  const description::Vec3 y_axis = rotate(view.X_WC.orientation, {0.0, 1.0, 0.0});
+  const description::Vec3 z_axis = rotate(view.X_WC.orientation, {0.0, 0.0, 1.0});
+  const double n = view.near, f = view.far;
+  RenderStats stats;
+  const std::vector<int> levels = r.lod.choose(view, settings_.terrain_pixels_per_cell, stats);
+
+  // This view's geoms: ground colour, the terrain at the chosen levels (the collision height field
+  // only when there are no render tiles).
+  int k = 0;
+  for (const mjvGeom& g : r.geoms) {
+    const int id = g.objtype == mjOBJ_GEOM ? g.objid : -1;
+    if (id >= 0 && !r.lod.empty()) {
+      if (id == r.terrain_geom) continue;
+      if (r.m->geom_group[id] == kTileGroup && !r.lod.drawn(id, levels)) continue;
+    }
+    mjvGeom& out = r.scn.geoms[k++];
+    out = g;
+    if (id >= 0 && is_ground(r.m, id, r.terrain_geom, r.ground_geom) && r.m->geom_rgba[4 * id] == 0.5f &&
+        r.m->geom_rgba[4 * id + 1] == 0.5f && r.m->geom_rgba[4 * id + 2] == 0.5f)
+      std::copy(settings_.ground_rgb, settings_.ground_rgb + 3, out.rgba);
+  }
+  r.scn.ngeom = k;
+  stats.geoms = k;
+
+  // Camera: MuJoCo looks along `forward` with `up` up; the optical frame has z forward, y down.
+  for (mjvGLCamera& c : r.scn.camera) {
+    c.pos[0] = static_cast<float>(view.X_WC.position.x);
+    c.pos[1] = static_cast<float>(view.X_WC.position.y);
+    c.pos[2] = static_cast<float>(view.X_WC.position.z);
+    c.forward[0] = static_cast<float>(z_axis.x);
+    c.forward[1] = static_cast<float>(z_axis.y);
+    c.forward[2] = static_cast<float>(z_axis.z);
+    c.up[0] = static_cast<float>(-y_axis.x);
+    c.up[1] = static_cast<float>(-y_axis.y);
+    c.up[2] = static_cast<float>(-y_axis.z);
+    // Frustum from the intrinsics: the image spans u in [-0.5, w - 0.5], v in [-0.5, h - 0.5].
+    c.frustum_near = static_cast<float>(n);
+    c.frustum_far = static_cast<float>(f);
+    c.frustum_top = static_cast<float>(n * (view.cy + 0.5) / view.fy);
+    c.frustum_bottom = static_cast<float>(-n * (view.height - 0.5 - view.cy) / view.fy);
+    c.frustum_center = static_cast<float>(n * ((view.width - 1) / 2.0 - view.cx) / view.fx);
+  }
+  r.scn.stereo = mjSTEREO_NONE;
+  r.scn.enabletransform = 0;
+
+  // Lights: the model's, the headlight as ambient only, and the sun.
+  int nl = 0;
+  for (int i = 0; i < r.nlight && nl < mjMAXLIGHT - 1; ++i) {
+    mjvLight l = r.lights[static_cast<std::size_t>(i)];
+    if (l.headlight) {
+      std::fill(l.ambient, l.ambient + 3, kAmbient);
+      std::fill(l.diffuse, l.diffuse + 3, 0.0f);
+      std::fill(l.specular, l.specular + 3, 0.0f);
+    }
+    l.castshadow = settings_.shadows ? l.castshadow : 0;
+    r.scn.lights[nl++] = l;
+  }
+  mjvLight sun{};
+  const float norm = std::sqrt(kSunDirection[0] * kSunDirection[0] + kSunDirection[1] * kSunDirection[1] +
+                               kSunDirection[2] * kSunDirection[2]);
+  for (int i = 0; i < 3; ++i) {
+    sun.dir[i] = kSunDirection[i] / norm;
+    sun.pos[i] = static_cast<float>(-50.0 * kSunDirection[i] / norm) + r.scn.camera[0].pos[i];
+    sun.diffuse[i] = kSunDiffuse;
+    sun.specular[i] = kSunSpecular;
+  }
+  sun.attenuation[0] = 1.0f;
+  sun.cutoff = 180.0f;
+  sun.directional = 1;
+  sun.castshadow = settings_.shadows ? 1 : 0;
+  r.scn.lights[nl++] = sun;
+  r.scn.nlight = nl;
+
+  std::fill(std::begin(r.scn.flags), std::end(r.scn.flags), mjtByte{0});
+  r.scn.flags[mjRND_SHADOW] = settings_.shadows ? 1 : 0;
+  r.scn.flags[mjRND_REFLECTION] = settings_.reflections ? 1 : 0;
+  r.scn.flags[mjRND_CULL_FACE] = 1;
+
+  const mjrRect viewport{0, 0, view.width, view.height};
+  mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
+  mjr_render(viewport, &r.scn, &r.con);
+
+  const std::size_t w = static_cast<std::size_t>(view.width), h = static_cast<std::size_t>(view.height);
+  frame.width = view.width;
+  frame.height = view.height;
+  frame.rgb.resize(want_rgb ? w * h * 3 : 0);
+  frame.depth.resize(want_depth ? w * h : 0);
+  mjr_readPixels(want_rgb ? frame.rgb.data() : nullptr, want_depth ? frame.depth.data() : nullptr, viewport, &r.con);
+
+  // OpenGL's rows run from the bottom; images' from the top.
+  if (want_rgb)
+    for (std::size_t y = 0; y < h / 2; ++y)
+      std::swap_ranges(frame.rgb.begin() + static_cast<std::ptrdiff_t>(y * w * 3),
+                       frame.rgb.begin() + static_cast<std::ptrdiff_t>((y + 1) * w * 3),
+                       frame.rgb.begin() + static_cast<std::ptrdiff_t>((h - 1 - y) * w * 3));
+  if (want_depth) {
+    for (std::size_t y = 0; y < h / 2; ++y)
+      std::swap_ranges(frame.depth.begin() + static_cast<std::ptrdiff_t>(y * w),
+                       frame.depth.begin() + static_cast<std::ptrdiff_t>((y + 1) * w),
+                       frame.depth.begin() + static_cast<std::ptrdiff_t>((h - 1 - y) * w));
+    // Window depth d in [0, 1] of a perspective projection: z = n f / (f - d (f - n)).
+    const double fn = f * n, span = f - n;
+    for (float& z : frame.depth)
+      z = z >= 1.0f ? std::numeric_limits<float>::infinity() : static_cast<float>(fn / (f - static_cast<double>(z) * span));
+  }
+  return stats;
+}
+
+}  // namespace mechsim::physics
