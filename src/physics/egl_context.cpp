@@ -151,6 +151,8 @@ EglContext::~EglContext() {
   // The display is left initialised: EGL displays are per process, other renderers may use it.
 }
 
+void* EglContext::proc(const char* name) const { return reinterpret_cast<void*>(api_->api.get_proc(name)); }
+
 void EglContext::make_current() const {
   const EglApi& api = api_->api;
   if (api.make_current(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)

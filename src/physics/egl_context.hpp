@@ -24,6 +24,8 @@ class EglContext {
   void make_current() const;
   // "EGL 1.5 surfaceless: llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Compatibility Profile) Mesa 22.3.6"
   const std::string& description() const { return description_; }
+  // An OpenGL entry point of the context's driver (null when it has none).
+  void* proc(const char* name) const;
 
  private:
   std::unique_ptr<EglState> api_;

@@ -59,6 +59,7 @@ struct Renderer::Impl {
   int terrain_geom = -1, ground_geom = -1;
   TerrainLod lod;
   bool scene_ready = false;
+  std::vector<float> scratch_depth;  // depth read for the background when only colour is asked for
 
   ~Impl() {
     try {
@@ -223,7 +224,9 @@ RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb
   std::fill(std::begin(r.scn.flags), std::end(r.scn.flags), mjtByte{0});
   r.scn.flags[mjRND_SHADOW] = settings_.shadows ? 1 : 0;
   r.scn.flags[mjRND_REFLECTION] = settings_.reflections ? 1 : 0;
-  r.scn.flags[mjRND_CULL_FACE] = 1;
+  // Back faces stay: the terrain tiles' side walls close the cracks between levels of detail
+  // from either side.
+  r.scn.flags[mjRND_CULL_FACE] = 0;
 
   const mjrRect viewport{0, 0, view.width, view.height};
   mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
@@ -234,14 +237,23 @@ RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb
   frame.height = view.height;
   frame.rgb.resize(want_rgb ? w * h * 3 : 0);
   frame.depth.resize(want_depth ? w * h : 0);
-  mjr_readPixels(want_rgb ? frame.rgb.data() : nullptr, want_depth ? frame.depth.data() : nullptr, viewport, &r.con);
+  // Depth is read whenever colour is: MuJoCo clears to black, and the background (window depth 1)
+  // gets the sky's colour here.
+  std::vector<float>& depth = want_depth ? frame.depth : r.scratch_depth;
+  depth.resize(w * h);
+  mjr_readPixels(want_rgb ? frame.rgb.data() : nullptr, depth.data(), viewport, &r.con);
 
   // OpenGL's rows run from the bottom; images' from the top.
-  if (want_rgb)
+  if (want_rgb) {
+    std::uint8_t sky[3];
+    for (int i = 0; i < 3; ++i) sky[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(settings_.background_rgb[i], 0.0f, 1.0f)));
+    for (std::size_t i = 0; i < w * h; ++i)
+      if (depth[i] >= 1.0f) std::copy(sky, sky + 3, frame.rgb.begin() + static_cast<std::ptrdiff_t>(3 * i));
     for (std::size_t y = 0; y < h / 2; ++y)
       std::swap_ranges(frame.rgb.begin() + static_cast<std::ptrdiff_t>(y * w * 3),
                        frame.rgb.begin() + static_cast<std::ptrdiff_t>((y + 1) * w * 3),
                        frame.rgb.begin() + static_cast<std::ptrdiff_t>((h - 1 - y) * w * 3));
+  }
   if (want_depth) {
     for (std::size_t y = 0; y < h / 2; ++y)
       std::swap_ranges(frame.depth.begin() + static_cast<std::ptrdiff_t>(y * w),

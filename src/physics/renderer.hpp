@@ -41,7 +41,7 @@ struct RenderSettings {
   bool shadows = false;       // the sun's shadows (costs a shadow-map pass per frame)
   bool reflections = false;
   // Terrain tiles: the coarsest level whose cells still project to at most this many pixels.
-  double terrain_pixels_per_cell = 4.0;
+  double terrain_pixels_per_cell = 8.0;
   // Colour of the ground (plane, height field) where the world gives none.
   float ground_rgb[3] = {0.62f, 0.45f, 0.33f};
   float background_rgb[3] = {0.70f, 0.78f, 0.86f};
