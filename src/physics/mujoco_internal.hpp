@@ -4,7 +4,6 @@
 
 #include <mujoco/mujoco.h>
 
-#include "physics/physics.hpp"
 #include "physics/physics_model.hpp"
 
 namespace mechsim::physics {
@@ -19,8 +18,5 @@ struct PhysicsModel::Impl {
     if (model != nullptr) mj_deleteModel(model);
   }
 };
-
-// A Physics instance's MuJoCo data (its state: qpos, body poses after kinematics), read-only.
-const mjData& mujoco_data(const Physics::Data& data);
 
 }  // namespace mechsim::physics

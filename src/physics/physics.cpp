@@ -73,8 +73,6 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
 
 Physics::~Physics() = default;
 
-const mjData& mujoco_data(const Physics::Data& data) { return *data.d; }
-
 void Physics::reset() {
   mjModel* m = data_->m;
   const mjModel* shared = model_->impl().model;

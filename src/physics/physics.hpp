@@ -189,7 +189,7 @@ class Physics {
   double energy() const;
 
   struct Data;  // MuJoCo objects; physics.cpp only
-  const Data& data() const { return *data_; }  // for physics/ (mujoco_internal.hpp: mujoco_data)
+  const Data& data() const { return *data_; }  // for physics/ only (physics_data.hpp)
 
  private:
   void refresh_kinematics() const;

@@ -12,6 +12,7 @@
 #include "physics/egl_context.hpp"
 #include "physics/mjcf_writer.hpp"
 #include "physics/mujoco_internal.hpp"
+#include "physics/physics_data.hpp"
 #include "physics/render_terrain.hpp"
 #include "physics/terrain_tiles.hpp"
 #include "physics/transform.hpp"
@@ -122,7 +123,7 @@ const std::string& Renderer::context_description() const { return impl_->egl.des
 
 void Renderer::update_scene(const Physics& physics) {
   Impl& r = *impl_;
-  const mjData& src = mujoco_data(physics.data());
+  const mjData& src = *physics.data().d;
   const mjModel* pm = physics.model().impl().model;
   if (pm->nq != r.m->nq || pm->nbody != r.m->nbody)
     throw std::invalid_argument("renderer: the simulation runs another model (" + std::to_string(pm->nbody) +

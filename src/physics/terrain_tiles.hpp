@@ -14,7 +14,7 @@
 
 namespace mechsim::physics {
 
-inline constexpr std::size_t kTileCells = 64;  // source cells along a tile's side (level 0)
+inline constexpr std::size_t kTileCells = 32;  // source cells along a tile's side (level 0)
 inline constexpr int kTileGroup = 3;           // MuJoCo geom group of the tiles
 inline constexpr const char* kTilePrefix = "terrain_tile_";
 
