@@ -2,6 +2,8 @@
 //
 // Private parameters (~): ros/node_params.cpp lists them (`mechsim_node --params` prints the
 // list); the node reports at start which it took from the parameter server.
+// Exit status: 0 after SIGINT/SIGTERM, 1 on an error at start (the message names it), 2 when the
+// ROS master restarted under it (ros/master_watch.hpp).
 // When ~model is used, the expanded URDF is also set as robot_description (for RViz).
 #include <csignal>
 #include <cstdio>
@@ -12,6 +14,7 @@
 
 #include "description/robot_loader.hpp"
 #include "description/urdf/urdf_parser.hpp"
+#include "ros/master_watch.hpp"
 #include "ros/node_params.hpp"
 #include "ros/sim_node.hpp"
 
@@ -51,6 +54,7 @@ int run(int argc, char** argv) {
     }
   }
   ::ros::init(argc, argv, "mechsim", ::ros::init_options::NoSigintHandler);
+  mechsim::ros::MasterWatch master;
   ::ros::NodeHandle pnh("~");
   ::ros::NodeHandle nh;
   mechsim::ros::report_private_params(pnh);
@@ -132,12 +136,20 @@ int run(int argc, char** argv) {
   ::ros::AsyncSpinner spinner(2);
   spinner.start();
   node.start();
-  // SIGINT/SIGTERM: a clean stop (loop thread joined before ROS shuts down).
-  while (::ros::ok()) ::ros::WallDuration(0.1).sleep();  // until a signal or rosnode kill
+  // SIGINT/SIGTERM: a clean stop (loop thread joined before ROS shuts down). A restarted master
+  // (master_watch.hpp) ends the node with status 2.
+  int status = 0;
+  for (int tick = 1; ::ros::ok(); ++tick) {  // until a signal or rosnode kill
+    ::ros::WallDuration(0.1).sleep();
+    if (tick % 10 == 0 && master.poll() == mechsim::ros::MasterWatch::State::Restarted) {
+      status = 2;
+      break;
+    }
+  }
   node.stop();
   spinner.stop();
   ::ros::shutdown();
-  return 0;
+  return status;
 }
 
 }  // namespace

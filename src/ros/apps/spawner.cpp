@@ -9,7 +9,7 @@
 // controller in order, then starts them all with one STRICT switch (unless --stopped), and
 // waits. On SIGINT/SIGTERM it stops them (one STRICT switch) and unloads them in reverse order
 // (each service waited for at most --shutdown-timeout s, default 2). Exit status 1 when a load
-// or the switch fails (what it loaded is unloaded again).
+// or the switch fails (what it loaded is unloaded again), 2 when the ROS master restarted.
 //
 // The namespace: --namespace if given, else the node's own (launch `ns=`); service names are
 // resolved relative to it, as the Python spawner does. Times are wall-clock (with use_sim_time
@@ -29,6 +29,8 @@
 #include <controller_manager_msgs/LoadController.h>
 #include <controller_manager_msgs/SwitchController.h>
 #include <controller_manager_msgs/UnloadController.h>
+
+#include "ros/master_watch.hpp"
 
 namespace {
 
@@ -220,6 +222,7 @@ int run(int argc, char** argv) {
   ::ros::init(argc, argv, "mechsim_spawner", ::ros::init_options::AnonymousName | ::ros::init_options::NoSigintHandler);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  mechsim::ros::MasterWatch master;
   std::vector<std::string> rest;
   ::ros::removeROSArgs(argc, argv, rest);
   const Args args = parse(std::vector<std::string>(rest.begin() + 1, rest.end()));
@@ -275,7 +278,15 @@ int run(int argc, char** argv) {
     }
   }
 
-  while (::ros::ok() && !g_signalled) ::ros::WallDuration(0.1).sleep();
+  // Until a signal; a restarted master (master_watch.hpp) lost the controller manager's
+  // registration with ours: nothing to tear down through it, exit status 2.
+  for (int tick = 1; ::ros::ok() && !g_signalled; ++tick) {
+    ::ros::WallDuration(0.1).sleep();
+    if (tick % 10 == 0 && master.poll() == mechsim::ros::MasterWatch::State::Restarted) {
+      ::ros::shutdown();
+      return 2;
+    }
+  }
   const bool signalled = g_signalled != 0;
   if (signalled) spawner.teardown(started, args.shutdown_timeout);
   ::ros::shutdown();
