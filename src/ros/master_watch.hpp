@@ -47,6 +47,8 @@ class MasterWatch {
     if (pid_ < 0) pid_ = pid;  // the master was not up at start
     const bool known = ::ros::master::execute("lookupNode", args, result, payload, false);
     if (known && pid == pid_) return State::Registered;
+    // A node shutting down unregisters itself: the master forgets it without having restarted.
+    if (::ros::isShuttingDown() || !::ros::ok()) return State::Registered;
     if (!known && master_pid() < 0) return State::Unreachable;  // it went away during the lookup
     std::string run_id;
     ::ros::param::get("/run_id", run_id);
