@@ -29,6 +29,12 @@ if [[ "${1:-}" == "--with-ros" ]]; then
              # the Debian types the generated ones import.
              python3-genpy python3-std-msgs python3-geometry-msgs python3-trajectory-msgs
              python3-actionlib-msgs
+             # The Debian types mechsim_node exchanges, for rostopic echo / rosservice call /
+             # rospy (src/ros/test/integration/readme_commands_test.cpp checks this list against
+             # the node's includes), actionlib's Python client, the tools (ros-core: roslaunch,
+             # rostopic, rosservice, rosparam, ...; rostest) and rosbash for `rosrun`.
+             python3-nav-msgs python3-sensor-msgs python3-std-srvs python3-tf2-msgs
+             python3-rosgraph-msgs python3-actionlib python3-rostest rosbash
              # mechsim_node's launch files and scripts/rviz_screenshot.sh: RViz under Xvfb.
              rviz xvfb imagemagick)
 fi

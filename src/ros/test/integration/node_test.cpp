@@ -292,7 +292,7 @@ joint_state_controller:
         std::lock_guard<std::mutex> l(m);
         for (const auto& t : msg->transforms) static_children.push_back(t.header.frame_id + "->" + t.child_frame_id);
       });
-  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return odom_seen && !std::isnan(world_x); }, 10.0));
+  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return odom_seen && !std::isnan(world_x) && !static_children.empty(); }, 10.0));
   double x0 = 0.0, world_x0 = 0.0;
   {
     std::lock_guard<std::mutex> l(m);
