@@ -46,17 +46,41 @@ foreach(module ROSCPP_SERIALIZATION ROSCPP ACTIONLIB)
     list(APPEND _mechsim_ros_missing "pkg-config ${pc_name}")
   endif()
 endforeach()
-if(_mechsim_ros_missing)
-  set(_mechsim_ros_default OFF)
+# MECHSIM_ROS is AUTO, ON or OFF. AUTO (the default) follows what is installed at every configure:
+# a build folder configured before `install-deps.sh --with-ros` gains the ROS layer at the next
+# build instead of keeping a cached OFF (a plain option() cached the first answer for good).
+# Build folders from before AUTO existed hold a BOOL option that was only ever a detection result:
+# they become AUTO.
+get_property(_mechsim_ros_type CACHE MECHSIM_ROS PROPERTY TYPE)
+if(_mechsim_ros_type STREQUAL "BOOL")
+  set(MECHSIM_ROS AUTO CACHE STRING "" FORCE)
+endif()
+set(MECHSIM_ROS AUTO CACHE STRING
+    "Build the ROS 1 layer (src/ros): AUTO where Debian's ROS packages are found, ON (required) or OFF")
+set_property(CACHE MECHSIM_ROS PROPERTY STRINGS AUTO ON OFF)
+string(TOUPPER "${MECHSIM_ROS}" _mechsim_ros_request)
+if(_mechsim_ros_request STREQUAL "AUTO")
+  if(_mechsim_ros_missing)
+    set(_mechsim_ros_enabled OFF)
+    message(STATUS "mechsim: ROS 1 not found (missing: ${_mechsim_ros_missing}); "
+                   "the ROS layer is left out until `scripts/install-deps.sh --with-ros` installs it")
+  else()
+    set(_mechsim_ros_enabled ON)
+  endif()
+elseif(_mechsim_ros_request MATCHES "^(ON|YES|TRUE|1)$")
+  if(_mechsim_ros_missing)
+    message(FATAL_ERROR "MECHSIM_ROS is ON but ROS 1 was not found (missing: ${_mechsim_ros_missing}). "
+                        "Install it with `scripts/install-deps.sh --with-ros` or configure with -DMECHSIM_ROS=AUTO or OFF.")
+  endif()
+  set(_mechsim_ros_enabled ON)
+elseif(_mechsim_ros_request MATCHES "^(OFF|NO|FALSE|0)$")
+  set(_mechsim_ros_enabled OFF)
 else()
-  set(_mechsim_ros_default ON)
+  message(FATAL_ERROR "MECHSIM_ROS is '${MECHSIM_ROS}': expected AUTO, ON or OFF")
 endif()
-option(MECHSIM_ROS "Build the ROS 1 layer (src/ros); default ON where Debian's ROS packages are found"
-       ${_mechsim_ros_default})
-if(MECHSIM_ROS AND _mechsim_ros_missing)
-  message(FATAL_ERROR "MECHSIM_ROS is ON but ROS 1 was not found (missing: ${_mechsim_ros_missing}). "
-                      "Install it with `scripts/install-deps.sh --with-ros` or configure with -DMECHSIM_ROS=OFF.")
-endif()
+# From here on MECHSIM_ROS is the answer (a normal variable shadowing the cached request).
+set(MECHSIM_ROS ${_mechsim_ros_enabled})
+set(MECHSIM_ROS_ENABLED ${_mechsim_ros_enabled} CACHE INTERNAL "What MECHSIM_ROS resolved to (read by scripts/test.sh)")
 message(STATUS "mechsim: ROS 1 layer ${MECHSIM_ROS}")
 
 # mechsim_ros_use_cxx17(TARGET ...): compile targets whose sources include ROS message headers

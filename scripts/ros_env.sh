@@ -1,5 +1,5 @@
 # Source me: sets up a shell for Debian's ROS command-line tools (rostopic, rosservice, rosmsg,
-# roslaunch) against a mechsim build folder configured with MECHSIM_ROS=ON.
+# roslaunch) against a mechsim build folder configured with the ROS layer (MECHSIM_ROS AUTO or ON, ROS installed).
 #   . scripts/ros_env.sh [BUILD_DIR]        (default: build/release beside this script)
 # Prepends to ROS_PACKAGE_PATH: <repo>/robots (mechsim_cc8, mechsim_pr2), <build>/ros_package
 # (the `mechsim` package of the node and spawner) and <build>/ros_python (the generated message
@@ -9,7 +9,7 @@
 _mechsim_repo="$(cd "$(dirname "${BASH_SOURCE[0]:-$0}")/.." && pwd)"
 _mechsim_build="$(cd "${1:-$_mechsim_repo/build/release}" 2>/dev/null && pwd)"
 if [ -z "$_mechsim_build" ] || [ ! -d "$_mechsim_build/ros_python" ]; then
-  echo "ros_env.sh: no ros_python in '${1:-$_mechsim_repo/build/release}': configure with -DMECHSIM_ROS=ON and build" >&2
+  echo "ros_env.sh: no ros_python in '${1:-$_mechsim_repo/build/release}': install ROS (scripts/install-deps.sh --with-ros) and build" >&2
   unset _mechsim_repo _mechsim_build
   return 1 2>/dev/null || exit 1
 fi

@@ -7,6 +7,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --with-ros
 scripts/build.sh release
+# The ROS layer was just installed: a build without it would run fewer tests without a word.
+grep -qx 'MECHSIM_ROS_ENABLED:INTERNAL=ON' build/release/CMakeCache.txt || {
+  echo "test.sh: build/release was configured without the ROS layer although ROS is installed" \
+       "(MECHSIM_ROS=OFF set by hand? configure with -DMECHSIM_ROS=AUTO)" >&2
+  exit 1
+}
 ctest --test-dir build/release --output-on-failure -j 2
 scripts/build.sh asan unit-tests
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
