@@ -55,6 +55,19 @@ const std::string kXacroHead = R"(<?xml version="1.0"?>
 )";
 std::string xacro(const std::string& body) { return kXacroHead + body + "\n</robot>\n"; }
 
+// `macros` macros, each calling the next from inside `depth` nested elements: every limit alone
+// (macro depth 200, element depth 256) is respected, together they went 50,000 levels deep.
+std::string deep_macro_bodies(int macros, int depth) {
+  std::string open, close;
+  for (int i = 0; i < depth; ++i) open += "<a>", close += "</a>";
+  std::string body;
+  for (int i = 0; i < macros; ++i) {
+    const std::string inner = i + 1 < macros ? "<xacro:m" + std::to_string(i + 1) + "/>" : "<b/>";
+    body += "<xacro:macro name=\"m" + std::to_string(i) + "\">" + open + inner + close + "</xacro:macro>\n";
+  }
+  return xacro(body + "<xacro:m0/>");
+}
+
 std::vector<BadInput> bad_inputs() {
   const std::string tip = R"(<link name="tip"/>)";
   return {
@@ -207,6 +220,11 @@ std::vector<BadInput> bad_inputs() {
        xacro(R"(<xacro:property name="m" value="heavy"/><link name="a"><inertial><mass value="${m}"/>)"
              R"(<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>)"),
        {"(expanded)", "link 'a': <mass> attribute 'value' is not a number: \"heavy\""}},
+      // Recursion without an end: bounded and located, never a stack overflow (issue 19).
+      {"xacro_self_include", true, xacro(R"(<xacro:include filename="xacro_self_include.urdf.xacro"/>)"),
+       {"includes nested more than 100 files deep", "include itself?", "xacro_self_include.urdf.xacro:3"}},
+      {"xacro_deep_macro_bodies", true, deep_macro_bodies(199, 250),
+       {"nested more than 1000 levels deep", "in macro 'm3'", "called from"}},
       {"xacro_negative_mass", true,
        xacro(R"(<xacro:property name="m" value="-3"/><link name="a"><inertial><mass value="${m}"/>)"
              R"(<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>)"),

@@ -178,6 +178,20 @@ TEST(CheckCli, CommandLineMistakes) {
   EXPECT_EQ(fine.err, "");
 }
 
+TEST(CheckCli, UnknownSubcommandIsNamedWithTheClosestOne) {
+  const ProcessResult typo = run_process({MECHSIM_EXE, "xacor", "robot.xacro"});
+  EXPECT_EQ(typo.exit_code, 1);
+  EXPECT_THAT(typo.err, HasSubstr("unknown subcommand 'xacor' (did you mean 'xacro'?)"));
+  const ProcessResult help = run_process({MECHSIM_EXE, "nosuch", "--help"});
+  EXPECT_EQ(help.exit_code, 1);  // was the main help with status 0
+  EXPECT_THAT(help.err, HasSubstr("unknown subcommand 'nosuch'"));
+  EXPECT_THAT(help.err, Not(HasSubstr("did you mean")));  // nothing is close
+  EXPECT_EQ(help.out, "");
+  const ProcessResult version = run_process({MECHSIM_EXE, "--version"});
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_THAT(version.out, HasSubstr("mechsim"));
+}
+
 // A collision mesh the physics cannot find is left out: check says so once per mesh, naming the
 // link, the mesh as written and the path it tried (it used to say nothing about a missing file).
 TEST(CheckCli, ALeftOutCollisionMeshIsNamedOnceWithItsLinkAndThePathTried) {

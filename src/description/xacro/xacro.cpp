@@ -45,7 +45,16 @@ std::string expand(std::string_view text, const std::string& name, const XacroOp
   } catch (const Failure& f) {
     std::string msg = f.message;
     if (!f.where.empty()) msg += "\n  at " + f.where;
-    for (const auto& t : f.trace) msg += "\n  " + t;
+    // An endless recursion unwinds through hundreds of frames: its two ends say where and why.
+    constexpr std::size_t kEnds = 6;
+    for (std::size_t i = 0; i < f.trace.size(); ++i) {
+      if (f.trace.size() > 2 * kEnds + 1 && i == kEnds) {
+        msg += "\n  ... " + std::to_string(f.trace.size() - 2 * kEnds) + " more frames ...";
+        i = f.trace.size() - kEnds - 1;
+        continue;
+      }
+      msg += "\n  " + f.trace[i];
+    }
     throw XacroError(msg, f.kind);
   } catch (const std::exception& e) {  // file-system and library errors outside expressions
     throw XacroError(std::string(e.what()) + "\n  in " + name);

@@ -127,6 +127,7 @@ class Context {
   };
   std::vector<MacroFrame> macro_stack;
   int eval_depth = 0;  // nested expression evaluations (lazy property chains)
+  int nesting = 0;     // elements, macro bodies and included files being processed, in all
   std::unordered_map<std::string, std::shared_ptr<const pyexpr::Expr>> expr_cache;
 
   // Scopes and macro tables live as long as the expansion (they point at their parents).

@@ -148,7 +148,15 @@ Value Context::eval_expression(std::string_view inner, Symbols& symbols) {
     int& d;
     ~DepthGuard() { --d; }
   } guard{eval_depth};
-  const std::string suffix = " \nwhen evaluating expression '" + std::string(inner) + "'";
+  // Built only on failure (this runs for every ${...}); a huge expression is cut in the message.
+  const auto suffix = [inner] {
+    constexpr std::size_t kShown = 200;
+    return " \nwhen evaluating expression '" +
+           (inner.size() <= kShown ? std::string(inner)
+                                   : std::string(inner.substr(0, kShown)) + "...' (" + std::to_string(inner.size()) +
+                                         " characters)") +
+           (inner.size() <= kShown ? "'" : "");
+  };
   try {
     std::string expr = inner.find('$') == std::string_view::npos ? std::string(inner) : eval_text_str(inner, symbols);
     // Python's compile() of the stripped text
@@ -165,12 +173,12 @@ Value Context::eval_expression(std::string_view inner, Symbols& symbols) {
   } catch (const pyexpr::PyError& err) {
     std::string msg = err.what();
     if (err.type() == "KeyError" && msg.empty()) msg = "KeyError";
-    fail(msg + suffix);
+    fail(msg + suffix());
   } catch (Failure& f) {
-    f.message += suffix;
+    f.message += suffix();
     throw;
   } catch (const std::exception& e) {  // e.g. out-of-range numbers in library conversions
-    fail(e.what() + suffix);
+    fail(e.what() + suffix());
   }
 }
 

@@ -17,6 +17,12 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxMacroDepth = 200;  // nested macro calls (endless recursion guard)
+constexpr std::size_t kMaxIncludeDepth = 100;  // nested includes (a file including itself)
+// Elements, macro bodies and included documents nested in one another, counted together: each
+// level is a recursion of eval_all, and 8 MiB of stack held ~5,000 of them in a release build
+// (fewer with sanitizers). Each of the limits above and the parser's element depth alone stays
+// under it, but they multiply (200 macros of 250-deep bodies overflowed the stack).
+constexpr int kMaxNesting = 1000;
 
 using SymbolsPtr = std::shared_ptr<Symbols>;
 using MacrosPtr = std::shared_ptr<MacroTable>;
@@ -29,6 +35,15 @@ class Processor {
   }
 
   void eval_all(Node* node, const MacrosPtr& macros, const SymbolsPtr& symbols) {
+    if (ctx_.nesting >= kMaxNesting) {
+      fail("elements, macro calls and includes nested more than " + std::to_string(kMaxNesting) +
+           " levels deep in all");
+    }
+    ++ctx_.nesting;
+    struct Unnest {
+      int& nesting;
+      ~Unnest() { --nesting; }
+    } unnest{ctx_.nesting};
     for (std::size_t i = 0; i < node->attrs.size();) {
       auto& [name, value] = node->attrs[i];
       if (name.starts_with("xacro:")) {
@@ -420,6 +435,10 @@ class Processor {
     }
     std::vector<Node*> included;
     for (const std::string& file : include_files(ctx_.eval_text_str(*a.values[0], *symbols))) {
+      if (ctx_.file_stack.size() >= kMaxIncludeDepth) {
+        fail("includes nested more than " + std::to_string(kMaxIncludeDepth) + " files deep (does " + file +
+             " include itself?)");
+      }
       std::ifstream in(file, std::ios::binary);
       if (!in) {
         if (optional) continue;
