@@ -44,8 +44,21 @@ std::size_t count_tags(const fs::path& file, const std::string& tag) {
   return n;
 }
 
+// This program's scratch folder, removed when the program ends.
+const fs::path& scratch() {
+  struct Folder {
+    fs::path path = fs::path(::testing::TempDir()) / ("mechsim_check_cli_" + std::to_string(getpid()));
+    ~Folder() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  };
+  static const Folder folder;
+  return folder.path;
+}
+
 std::string temp_file(const std::string& name, const std::string& content) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("mechsim_check_cli_" + std::to_string(getpid()));
+  const fs::path& dir = scratch();
   fs::create_directories(dir);
   const std::string path = (dir / name).string();
   write_file(path, content);
@@ -133,7 +146,7 @@ TEST(CheckCli, PassesXacroArguments) {
 }
 
 TEST(CheckCli, RelativePackageDirectoriesWork) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("mechsim_check_pkg_" + std::to_string(getpid()));
+  const fs::path dir = scratch() / "pkg";
   fs::create_directories(dir / "mypkg" / "urdf");
   write_file((dir / "mypkg" / "urdf" / "part.xacro").string(), R"(<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
   <link name="part"/></robot>)");

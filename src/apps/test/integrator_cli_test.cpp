@@ -3,6 +3,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -29,7 +30,7 @@ constexpr const char* kControllers = "pendulum:\n  jsc: {type: joint_state_contr
 class IntegratorCli : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mechsim_integrator_cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = fs::temp_directory_path() / ("mechsim_integrator_cli_" + std::to_string(::getpid()) + "_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::create_directories(dir_);
     write_file((dir_ / "pendulum.urdf").string(), kUrdf);
     write_file((dir_ / "controllers.yaml").string(), kControllers);

@@ -31,10 +31,18 @@ std::string slurp(const fs::path& path) {
 
 // One folder per test process: CTest runs the tests of this program in parallel processes, which
 // must not share output files.
+// Removed when the program ends (tests reuse it).
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("mechsim_world_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  struct Folder {
+    fs::path path = fs::temp_directory_path() / ("mechsim_world_cli_test_" + std::to_string(::getpid()));
+    ~Folder() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  };
+  static const Folder folder;
+  fs::create_directories(folder.path);
+  return folder.path;
 }
 
 // Runs `mechsim ARGS` through the shell (arguments are quoted by the caller where needed),

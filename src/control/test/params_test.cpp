@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -101,7 +102,7 @@ TEST(Params, MalformedYamlNamesFileAndLine) {
 }
 
 TEST(Params, LoadsFromFile) {
-  auto path = std::filesystem::temp_directory_path() / "mechsim_params_test.yaml";
+  auto path = std::filesystem::temp_directory_path() / ("mechsim_params_test_" + std::to_string(::getpid()) + ".yaml");
   {
     std::ofstream out(path);
     out << "x:\n  y: 3\n  z: [oops\n";

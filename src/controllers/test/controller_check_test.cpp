@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -68,7 +69,7 @@ scalar: 4
 
 TEST(ControllerCheck, MalformedFileNamesFileAndLine) {
   auto robot = testing::make_robot(1);
-  auto path = std::filesystem::temp_directory_path() / "mechsim_check_bad.yaml";
+  auto path = std::filesystem::temp_directory_path() / ("mechsim_check_bad_" + std::to_string(::getpid()) + ".yaml");
   {
     std::ofstream out(path);
     out << "cc8:\n  c:\n    type: [unclosed\n";

@@ -3,6 +3,8 @@
 #include <png.h>
 #include <tiffio.h>
 
+#include <unistd.h>
+
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -10,11 +12,15 @@
 
 namespace mechsim::physics::test {
 
-std::filesystem::path temp_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("mechsim_terrain_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+ScratchDir::ScratchDir(const std::string& name)
+    : path_(std::filesystem::temp_directory_path() / ("mechsim_terrain_" + name + "_" + std::to_string(::getpid()))) {
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ignored;  // a destructor must not throw; a leftover folder is not a test failure
+  std::filesystem::remove_all(path_, ignored);
 }
 
 void write_gray_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,

@@ -10,8 +10,21 @@
 
 namespace mechsim::physics::test {
 
-// A fresh empty folder under the system temp dir, unique per test.
-std::filesystem::path temp_dir(const std::string& name);
+// A fresh empty folder under the system temp dir, unique per test and process (programs of
+// several build folders run at once), removed when it goes out of scope.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& name);
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  operator const std::filesystem::path&() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+inline ScratchDir temp_dir(const std::string& name) { return ScratchDir(name); }
 
 // Grayscale PNG, image order (row 0 first); bits 8 or 16 (values must fit).
 void write_gray_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,

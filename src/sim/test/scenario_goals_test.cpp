@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,14 @@ namespace mechsim::sim {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The test's name as one folder name: a parameterized test is "Name/3", which made a folder
+// "Name" holding "3", and only "3" was removed.
+std::string test_folder_name() {
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::replace(name.begin(), name.end(), '/', '_');
+  return name;
+}
 
 constexpr const char* kPendulum = R"(<robot name="pendulum">
   <link name="world"/>
@@ -62,7 +71,7 @@ class ScenarioGoalsRun : public testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("mechsim_scenario_goals_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                                        test_folder_name());
     fs::create_directories(dir_);
     std::ofstream(dir_ / "pendulum.urdf") << kPendulum;
     std::ofstream(dir_ / "controllers.yaml") << kControllers;

@@ -1,7 +1,9 @@
 // Scenario files: what is read, and bad input named by file and parameter path.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,11 +15,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The test's name as one folder name: a parameterized test is "Name/3", which made a folder
+// "Name" holding "3", and only "3" was removed.
+std::string test_folder_name() {
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::replace(name.begin(), name.end(), '/', '_');
+  return name;
+}
+
 class ScenarioFile : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("mechsim_scenario_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("mechsim_scenario_" + std::to_string(::getpid()) +
+                                        "_" + test_folder_name());
     fs::create_directories(dir_);
     std::ofstream(dir_ / "robot.urdf") << "<robot name='r'><link name='a'/></robot>\n";
     std::ofstream(dir_ / "controllers.yaml") << "r:\n  c: {type: joint_state_controller/JointStateController, publish_rate: 50}\n";

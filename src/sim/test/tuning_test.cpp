@@ -5,6 +5,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -92,7 +93,7 @@ constexpr const char* kPendulum = sim::test::kTuningPendulumUrdf;  // rests at i
 class TunePendulum : public testing::Test {
  protected:
   void SetUp() override {
-    file_ = fs::temp_directory_path() / ("mechsim_tuning_test_" +
+    file_ = fs::temp_directory_path() / ("mechsim_tuning_test_" + std::to_string(::getpid()) + "_" +
                                          std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + ".yaml");
     std::ofstream(file_) << "hinge_position_controller:\n"
                             "  type: effort_controllers/JointPositionController\n"
