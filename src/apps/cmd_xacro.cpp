@@ -21,8 +21,12 @@ struct XacroArgs {
 }  // namespace
 
 void add_xacro_command(CLI::App& app, CommandResult& /*result*/) {
+  add_xacro_options(*app.add_subcommand("xacro", "Expand a xacro file to URDF (like ROS's `xacro`)"));
+}
+
+void add_xacro_options(CLI::App& app) {
   auto args = std::make_shared<XacroArgs>();
-  CLI::App* cmd = app.add_subcommand("xacro", "Expand a xacro file to URDF (like ROS's `xacro`)");
+  CLI::App* cmd = &app;
   cmd->add_option("file", args->input, "The xacro file")->required();
   cmd->add_option("mappings", args->mappings, "Substitution args as name:=value");
   cmd->add_option("-o,--output", args->output, "Write the result to this file instead of stdout");

@@ -18,6 +18,8 @@ struct CommandResult {
 };
 
 void add_xacro_command(CLI::App& app, CommandResult& result);
+// The xacro command's arguments and action on `app` itself: the lean `xacro` program's top level.
+void add_xacro_options(CLI::App& app);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_world_command(CLI::App& app, CommandResult& result);
 void add_run_command(CLI::App& app, CommandResult& result);
