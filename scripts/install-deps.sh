@@ -8,11 +8,9 @@ packages=(
   libmujoco-dev libqhull-dev libgl-dev libopengl-dev libegl-dev
   liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libyaml-cpp-dev libcli11-dev
   libeigen3-dev nlohmann-json3-dev libtiff-dev libpng-dev libassimp-dev
+  libsdformat-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
-  # Cameras: MuJoCo's renderer on EGL without a display (surfaceless) and Mesa's llvmpipe; the
-  # renderer opens libEGL at run time, so these are needed to render, not to build or run.
-  libegl1 libegl-mesa0 libgl1-mesa-dri
 )
 if [[ "${1:-}" == "--with-ros" ]]; then
   # ROS 1 (Noetic-era, as Debian packages it) for src/ros: roscpp and actionlib, the C++ headers
