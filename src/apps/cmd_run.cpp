@@ -2,6 +2,9 @@
 
 #include <unistd.h>
 
+#include <atomic>
+#include <csignal>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -47,6 +50,29 @@ std::function<void(const sim::RunProgress&)> progress_printer() {
   };
 }
 
+// The signal that asked the run to stop. A signal handler can only reach a static object; this is
+// the one, written by the handler and read by the run loop (lock-free, hence async-signal-safe).
+std::atomic<int> g_interrupt{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+
+extern "C" void request_stop(int signal) {
+  g_interrupt.store(signal, std::memory_order_relaxed);
+  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+// SIGINT/SIGTERM end the run at the next tick with its report written and marked interrupted.
+struct StopOnSignals {
+  StopOnSignals() {
+    g_interrupt.store(0);
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
+  }
+  ~StopOnSignals() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+};
+
 void run(const RunArgs& args, CommandResult& result) {
   sim::Scenario scenario = sim::load_scenario(args.scenario);
   if (args.duration > 0.0) scenario.duration = args.duration;
@@ -63,6 +89,8 @@ void run(const RunArgs& args, CommandResult& result) {
   };
   std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time, "
             << physics::integrator_name(scenario.integrator) << " integrator\n" << std::flush;
+  options.interrupt = &g_interrupt;
+  const StopOnSignals stop_on_signals;
   const sim::ScenarioResult r = sim::run_scenario(scenario, options);
   std::cout << "distance " << r.distance << " m, final pose (" << r.final_x << ", " << r.final_y << ") yaw "
             << r.final_yaw * 180.0 / 3.141592653589793 << " deg, real-time factor " << r.real_time_factor << "\n";
@@ -76,7 +104,8 @@ void run(const RunArgs& args, CommandResult& result) {
     if (f.ends_with(".png")) std::cout << ", " << f;
   }
   std::cout << "\n" << (r.passed ? "PASSED" : "FAILED") << "\n";
-  result.exit_code = r.passed ? 0 : 1;
+  // The shell's convention for a process ended by a signal, though this one ended cleanly.
+  result.exit_code = r.interrupted_by != 0 ? 128 + r.interrupted_by : (r.passed ? 0 : 1);
 }
 
 }  // namespace

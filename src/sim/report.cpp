@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -225,6 +226,49 @@ void Recorder::close() {
   trajectory_.close();
 }
 
+namespace {
+
+// Written aside and renamed over the old file: a reader sees the old summary or the new one,
+// never half of one.
+void write_summary(const fs::path& dir, const nlohmann::ordered_json& j) {
+  const fs::path tmp = dir / "summary.json.partial";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << '\n';
+    out.close();
+    if (!out) throw ScenarioError("cannot write " + tmp.string() + " (disk full?)");
+  }
+  fs::rename(tmp, dir / "summary.json");
+}
+
+}  // namespace
+
+void prepare_report_folder(const Scenario& s, const std::string& dir_name) {
+  if (dir_name.empty()) return;
+  const fs::path dir = dir_name;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw ScenarioError("cannot create the report folder '" + dir_name + "': " + ec.message());
+  // 16 MiB: the CSVs of a minute of a PR2 run at the report's rate with room to spare.
+  constexpr std::uintmax_t kNeeded = 16u << 20;
+  const fs::space_info space = fs::space(dir, ec);
+  if (!ec && space.available < kNeeded) {
+    throw ScenarioError("the report folder '" + dir_name + "' has " + std::to_string(space.available >> 20) +
+                        " MiB free; a report needs at least " + std::to_string(kNeeded >> 20) + " MiB");
+  }
+  nlohmann::ordered_json j;
+  j["scenario"] = s.name;
+  j["file"] = s.file;
+  j["completed"] = false;
+  j["passed"] = false;
+  j["status"] = "running";
+  try {
+    write_summary(dir, j);
+  } catch (const std::exception& e) {
+    throw ScenarioError("cannot write in the report folder '" + dir_name + "': " + e.what());
+  }
+}
+
 void write_report(const Scenario& s, const Simulation& sim, const Recorder& recorder, ScenarioResult& result,
                   const RunOptions& options) {
   const fs::path dir = options.output_dir;
@@ -371,6 +415,7 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
   j["world"] = sim.world().name;
   j["completed"] = result.completed;
   j["passed"] = result.passed;
+  if (result.interrupted_by != 0) j["interrupted_by_signal"] = result.interrupted_by;
   if (!result.error.empty()) j["error"] = result.error;
   j["events"] = nlohmann::ordered_json::array();
   for (const RunEvent& e : result.events) {
@@ -433,7 +478,7 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
   j["warnings"] = result.warnings;
   result.files.push_back("summary.json");
   j["files"] = result.files;
-  std::ofstream(dir / "summary.json") << j.dump(2) << '\n';
+  write_summary(dir, j);
 }
 
 }  // namespace mechsim::sim

@@ -50,6 +50,11 @@ class Recorder {
 // summary.json and, when options.plots, path.png, tracking.png, errors.png and (when the
 // recorder has trajectory columns) trajectory.png. Adds the files written to result.files; a
 // plotting failure becomes a warning.
+// Before the run: the report folder exists and takes a file, the disk has room (a clear error
+// now rather than a lost report after an hour of simulation), and summary.json says the run has
+// not completed. Throws ScenarioError naming the folder. Empty `dir`: nothing (no report).
+void prepare_report_folder(const Scenario& scenario, const std::string& dir);
+
 void write_report(const Scenario& scenario, const Simulation& sim, const Recorder& recorder, ScenarioResult& result,
                   const RunOptions& options);
 

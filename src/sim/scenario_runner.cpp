@@ -157,6 +157,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
 }  // namespace
 
 ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
+  prepare_report_folder(s, options.output_dir);
   std::unique_ptr<Simulation> sim = build_simulation(s);
   ScenarioResult result;
 
@@ -257,6 +258,13 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   };
 
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
+    if (options.interrupt != nullptr) {
+      if (const int signal = options.interrupt->load(std::memory_order_relaxed); signal != 0) {
+        result.interrupted_by = signal;
+        result.error = "interrupted by signal " + std::to_string(signal) + " at t=" + std::to_string(sim->time()) + " s";
+        break;
+      }
+    }
     const double t = sim->time();
     while (next_event < events.size() && events[next_event].event->at <= t + 1e-9) {
       apply(events[next_event], route, route_port, held, goals, t);

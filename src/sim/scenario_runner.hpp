@@ -20,6 +20,7 @@
 //                    time to finish, reached/stalled, gap, effort), real-time factor, checks
 //   path.png, tracking.png, errors.png, trajectory.png (desired vs actual per joint) (gnuplot)
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct RunOptions {
   // Called with each warning when it arises (at spawn, during the run), besides
   // ScenarioResult::warnings.
   std::function<void(const std::string&)> warning;
+  // Non-zero (a signal number, set by a signal handler): the run stops before its next tick and
+  // its report says "interrupted". Read once per tick; lock-free, so a handler may write it.
+  const std::atomic<int>* interrupt = nullptr;
 };
 
 // Something that happened to the robot during a run (summary.json "events").
@@ -99,6 +103,7 @@ struct GripperGoalOutcome {
 struct ScenarioResult {
   bool completed = false;  // ran its whole duration (no divergence, not stopped by an event)
   bool passed = false;     // completed and every check passed
+  int interrupted_by = 0;  // the signal that stopped the run (RunOptions::interrupt), or 0
   std::string error;       // why it did not complete
   std::vector<RunEvent> events;
   double sim_time = 0.0;   // s
@@ -120,7 +125,10 @@ struct ScenarioResult {
 };
 
 // Throws ScenarioError for a scenario that cannot start (robot, world, controllers, unknown
-// controller or port in the timeline); a divergence during the run is reported in the result.
+// controller or port in the timeline, a report folder that cannot be written or a disk without
+// room); a divergence during the run is reported in the result. While the run goes, the report
+// folder's summary.json says "completed": false, "status": "running"; the final one replaces it
+// whole (written aside, then renamed), so a killed run never leaves a summary that reads complete.
 ScenarioResult run_scenario(const Scenario& scenario, const RunOptions& options);
 
 }  // namespace mechsim::sim
