@@ -1,6 +1,15 @@
 #include "description/robot_model.hpp"
 
+#include "description/sensor_spec.hpp"
+
 namespace mechsim::description {
+
+RobotModel::RobotModel() = default;
+RobotModel::~RobotModel() = default;
+RobotModel::RobotModel(const RobotModel&) = default;
+RobotModel::RobotModel(RobotModel&&) noexcept = default;
+RobotModel& RobotModel::operator=(const RobotModel&) = default;
+RobotModel& RobotModel::operator=(RobotModel&&) noexcept = default;
 
 const XmlNode* XmlNode::child(const std::string& child_name) const {
   for (const XmlNode& c : children)

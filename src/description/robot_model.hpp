@@ -9,22 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "description/pose.hpp"
+
 namespace mechsim::description {
 
-struct Vec3 {
-  double x = 0.0, y = 0.0, z = 0.0;
-};
-
-// Unit quaternion (w, x, y, z).
-struct Quat {
-  double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
-};
-
-// X_PC: pose of a child frame C in its parent frame P (metres, unit quaternion).
-struct Pose {
-  Vec3 position;
-  Quat orientation;
-};
+struct SensorSpec;  // description/sensor_spec.hpp
 
 // A generic XML element, kept for the parts of a description whose meaning depends on a type
 // (PR2 transmissions, gazebo plugins). `line` is the 1-based line in the expanded document.
@@ -189,6 +178,16 @@ struct RobotModel {
   std::map<std::string, GazeboLinkProperties> gazebo_links;  // by link name
   std::vector<GazeboPlugin> plugins;  // document order; model and sensor plugins
   std::map<std::string, GazeboJointProperties> gazebo_joints;  // by joint name
+  // Document order: <sensor> elements and sensor plugins (description/sensor_spec.hpp; include
+  // it to use them: the special members below are out of line so that this header need not).
+  std::vector<SensorSpec> sensors;
+
+  RobotModel();
+  ~RobotModel();
+  RobotModel(const RobotModel&);
+  RobotModel(RobotModel&&) noexcept;
+  RobotModel& operator=(const RobotModel&);
+  RobotModel& operator=(RobotModel&&) noexcept;
 
   const Link* link(const std::string& link_name) const;     // null when absent
   const Joint* joint(const std::string& joint_name) const;  // null when absent

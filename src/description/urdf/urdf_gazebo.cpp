@@ -4,6 +4,7 @@
 #include <string>
 
 #include "description/urdf/urdf_reading.hpp"
+#include "description/urdf/urdf_sensors.hpp"
 
 namespace mechsim::description::detail {
 
@@ -87,10 +88,12 @@ void read_gazebo(const XMLElement& robot, Problems& p, RobotModel& model) {
       const std::string tag = c->Name();
       if (tag == "plugin") {
         model.plugins.push_back(read_plugin(*c, reference, "", p));
+        read_sensor_plugin(model.plugins.back().xml, model, p, model.sensors);
       } else if (tag == "sensor") {
         const std::string sensor = c->Attribute("name") != nullptr ? c->Attribute("name") : "";
         for (const XMLElement* s = c->FirstChildElement("plugin"); s; s = s->NextSiblingElement("plugin"))
           model.plugins.push_back(read_plugin(*s, reference, sensor, p));
+        read_sensor(to_xml_node(*c), reference, model, p, model.sensors);
       } else if (is_link) {
         GazeboLinkProperties& props = model.gazebo_links[reference];
         if (props.line == 0) props.line = g->GetLineNum();

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "description/sensor_spec.hpp"
 #include "description/urdf/urdf_reading.hpp"
 #include "description/urdf/validation.hpp"
 
@@ -319,6 +320,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   model.gazebo_links = std::move(skeleton.gazebo_links);
   model.gazebo_joints = std::move(skeleton.gazebo_joints);
   model.plugins = std::move(skeleton.plugins);
+  model.sensors = std::move(skeleton.sensors);
 
   for (const std::string& m : urdfdom_messages) report.warnings.push_back(location(source_name, 0) + "urdfdom: " + m);
   if (!unresolved.empty()) {

@@ -1,0 +1,132 @@
+#pragma once
+// The sensors a description declares, as plain data: Gazebo <sensor> elements inside
+// <gazebo reference="link"> (with their ROS <plugin>), and the model plugins that are sensors in
+// all but name (gazebo_ros_imu, hector's IMU, gazebo_ros_p3d, gazebo_ros_ft_sensor). Read by
+// urdf/urdf_sensors.cpp from a URDF and by urdf/sensor_reader.hpp from any <gazebo> block (a
+// scenario's); errors name the file, the line and the sensor. Simulated by sensors/.
+//
+// Units: m, rad, s, Hz. Frames: the sensor frame S sits at `pose` (X_LS) in the frame L of the
+// link it is attached to.
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "description/pose.hpp"
+
+namespace mechsim::description {
+
+// One error model for SDF's <noise> (Gazebo's GaussianNoiseModel) and the plugins' noise
+// parameters (gaussianNoise, hector's offset/drift/noise):
+//   reading = truth + offset + bias + drift(t) + N(mean, stddev), rounded to `precision`.
+// `bias` is drawn once per sensor from N(bias_mean, bias_stddev) with a random sign, as SDF
+// does; `drift` is a first-order Gauss-Markov process with stationary deviation `drift_stddev`
+// and correlation time `drift_time` (s), or, with drift_time = 0, a random walk whose deviation
+// grows by drift_stddev per sqrt(s).
+struct NoiseSpec {
+  double offset = 0.0;
+  double mean = 0.0, stddev = 0.0;
+  double bias_mean = 0.0, bias_stddev = 0.0;
+  double drift_stddev = 0.0, drift_time = 0.0;
+  double precision = 0.0;  // 0: not quantised
+
+  bool active() const {
+    return offset != 0.0 || mean != 0.0 || stddev > 0.0 || bias_mean != 0.0 || bias_stddev > 0.0 ||
+           drift_stddev > 0.0 || precision > 0.0;
+  }
+};
+
+// One scan axis of <ray><scan>: `samples` rays from min_angle to max_angle (rad, about the
+// sensor's z axis for horizontal, y for vertical). Gazebo interpolates samples * resolution
+// ranges from the rays; mechsim casts that many rays instead.
+struct RayAxis {
+  int samples = 1;
+  double resolution = 1.0;
+  double min_angle = 0.0, max_angle = 0.0;  // rad
+  int count() const;                        // ranges along the axis: samples * resolution, >= 1
+};
+
+struct RaySpec {
+  RayAxis horizontal, vertical;  // vertical: one sample for a planar scanner
+  double range_min = 0.0, range_max = 0.0;  // m
+  double range_resolution = 0.0;            // m; 0: not quantised
+  NoiseSpec noise;                          // on each range (m)
+  bool gpu = false;                         // gpu_ray / gpu_lidar: the same rays (see sensors/README.md)
+};
+
+struct ImuSpec {
+  std::array<NoiseSpec, 3> rate_noise;   // per axis of the angular velocity (rad/s)
+  std::array<NoiseSpec, 3> accel_noise;  // per axis of the linear acceleration (m/s^2)
+  NoiseSpec yaw_noise;                   // on the reported heading (rad; hector's heading model)
+  // xyzOffset / rpyOffset: q_reported = q_offset * q (the plugins apply them to the orientation
+  // only); the position part is kept but moves nothing.
+  Pose offset;
+  // Orientation relative to the sensor's orientation at start (true) or to the world (false).
+  bool initial_orientation_as_reference = false;
+  std::string service_name;  // gazebo_ros_imu's calibrate service (answered by nothing here)
+};
+
+// <contact><collision>: which of the link's collisions count. Gazebo names a URDF link's
+// collisions <link>_collision, <link>_collision_1, ... (and <parent>_fixed_joint_lump__<link>_collision
+// when it lumps fixed links); mechsim resolves these names to the link's collision shapes.
+struct ContactSpec {
+  std::vector<std::string> collisions;
+};
+
+struct ForceTorqueSpec {
+  std::string joint;
+  enum class Frame { Child, Parent, Sensor } frame = Frame::Child;
+  // SDF measure_direction: child_to_parent (default) reports the wrench the child applies on the
+  // parent; parent_to_child the one the parent applies on the child (gazebo_ros_ft_sensor's).
+  bool parent_to_child = false;
+  NoiseSpec force_noise, torque_noise;  // per component (N, N m)
+};
+
+// Ground truth (gazebo_ros_p3d): pose and twist of the sensor's link in `frame` ("world" or
+// "map": the world; else a link's frame).
+struct GroundTruthSpec {
+  std::string frame = "world";
+  Pose offset;                  // xyzOffsets / rpyOffsets
+  double gaussian_noise = 0.0;  // stddev on position (m) and the twist (m/s, rad/s)
+};
+
+// A sensor mechsim reads but cannot simulate; `reason` says why (mechsim check lists it).
+struct UnsupportedSpec {
+  std::string reason;
+};
+
+// The ROS plugin of a sensor: what topic and frame it publishes on, as the plugin would name
+// them (its defaults filled in when the block leaves them out).
+struct SensorPlugin {
+  std::string name, filename;
+  std::string robot_namespace;  // <robotNamespace>, "" when absent
+  std::string topic;            // relative to robot_namespace unless it starts with '/'
+  std::string frame;            // header.frame_id
+  std::map<std::string, std::string> parameters;  // every simple child element: name -> text
+  // Set when mechsim simulates the sensor but has no ROS output for this plugin.
+  std::string unsupported;
+  int line = 0;
+};
+
+struct SensorSpec {
+  std::string name;  // <sensor name>, or the model plugin's name
+  std::string type;  // as written: ray, gpu_ray, imu, contact, force_torque, camera, ..., or "plugin"
+  std::string link;  // the link it is attached to (<gazebo reference>, <bodyName>, a joint's child)
+  Pose pose;         // X_LS (<pose> of the sensor)
+  double update_rate = 0.0;  // Hz of simulated time; 0: every tick
+  bool always_on = true;
+  std::optional<SensorPlugin> plugin;
+  std::variant<UnsupportedSpec, RaySpec, ImuSpec, ContactSpec, ForceTorqueSpec, GroundTruthSpec> details;
+  std::string source;  // the file it was declared in
+  int line = 0;        // of the <sensor> (or model <plugin>) element
+
+  bool simulated() const { return !std::holds_alternative<UnsupportedSpec>(details); }
+  // "ray", "imu", "contact", "force_torque", "ground_truth" or "unsupported".
+  const char* kind_name() const;
+  std::string where() const;  // "SOURCE:LINE: sensor 'NAME'"
+};
+
+}  // namespace mechsim::description

@@ -1,0 +1,342 @@
+// Gazebo sensors in a description: <sensor> elements (common elements, the type's body, the ROS
+// plugin and the names it would publish under) and the model plugins that are sensors.
+#include "description/urdf/urdf_sensors.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <string_view>
+
+namespace mechsim::description::detail {
+
+namespace {
+
+// SDF sensor types mechsim knows but does not simulate, with the reason `mechsim check` gives.
+std::string unsupported_type_reason(const std::string& type) {
+  static const std::set<std::string> cameras = {"camera",  "depth",          "multicamera", "wideanglecamera",
+                                                "thermal", "logical_camera", "rgbd_camera", "depth_camera",
+                                                "boundingbox_camera", "segmentation_camera"};
+  static const std::set<std::string> others = {"gps",  "navsat",           "altimeter",           "magnetometer",
+                                               "sonar", "rfid",            "rfidtag",             "wireless_receiver",
+                                               "wireless_transmitter", "wireless_transceiver", "air_pressure", "custom"};
+  if (cameras.count(type)) return "camera sensors are not simulated yet";
+  if (others.count(type)) return "mechsim does not simulate " + type + " sensors";
+  return "";
+}
+
+// Plugins whose output mechsim publishes, by sensor kind.
+bool plugin_published(std::string_view kind, std::string_view filename) {
+  if (kind == "ray") return filename == "libgazebo_ros_laser.so" || filename == "libgazebo_ros_gpu_laser.so";
+  if (kind == "imu") return filename == "libgazebo_ros_imu_sensor.so";
+  if (kind == "contact") return filename == "libgazebo_ros_bumper.so";
+  return false;
+}
+
+std::string param(const std::map<std::string, std::string>& p, const std::string& key, const std::string& fallback) {
+  const auto it = p.find(key);
+  return it != p.end() ? it->second : fallback;
+}
+
+SensorPlugin read_plugin_element(const XmlNode& e, const SensorFields& f) {
+  SensorPlugin plugin;
+  plugin.name = e.attribute("name").value_or("");
+  plugin.filename = e.attribute("filename").value_or("");
+  plugin.line = e.line;
+  if (plugin.filename.empty()) f.error(e.line, "<plugin> has no 'filename' attribute");
+  for (const XmlNode& c : e.children)
+    if (c.children.empty()) plugin.parameters[c.name] = c.text;
+  plugin.robot_namespace = param(plugin.parameters, "robotNamespace", "");
+  return plugin;
+}
+
+// The plugin's ROS names, with the defaults each plugin uses when the block leaves them out.
+void name_outputs(SensorPlugin& plugin, const std::string& kind, const std::string& link) {
+  const auto& p = plugin.parameters;
+  const std::string& file = plugin.filename;
+  if (file == "libgazebo_ros_laser.so" || file == "libgazebo_ros_gpu_laser.so") {
+    plugin.topic = param(p, "topicName", "/world");
+    plugin.frame = param(p, "frameName", "/world");
+  } else if (file == "libgazebo_ros_imu_sensor.so") {
+    plugin.topic = param(p, "topicName", "imu_data");
+    plugin.frame = param(p, "frameName", link);
+  } else if (file == "libgazebo_ros_bumper.so") {
+    plugin.topic = param(p, "bumperTopicName", "bumper_states");
+    plugin.frame = param(p, "frameName", "world");
+  } else if (file == "libgazebo_ros_imu.so") {
+    plugin.topic = param(p, "topicName", "imu_data");
+    plugin.frame = param(p, "frameName", link);
+  } else if (file == "libhector_gazebo_ros_imu.so") {
+    plugin.topic = param(p, "topicName", "imu");
+    plugin.frame = param(p, "frameId", param(p, "frameName", link));
+  } else if (file == "libgazebo_ros_p3d.so") {
+    plugin.topic = param(p, "topicName", "");
+    plugin.frame = param(p, "frameName", "world");
+  } else if (file == "libgazebo_ros_ft_sensor.so") {
+    plugin.topic = param(p, "topicName", "");
+    plugin.frame = link;
+  } else {
+    plugin.topic = param(p, "topicName", "");
+    plugin.frame = param(p, "frameName", link);
+  }
+  if (!plugin_published(kind, file) && file != "libgazebo_ros_imu.so" && file != "libhector_gazebo_ros_imu.so" &&
+      file != "libgazebo_ros_p3d.so" && file != "libgazebo_ros_ft_sensor.so") {
+    plugin.unsupported = "mechsim has no ROS output for " + (file.empty() ? std::string("this plugin") : file) +
+                         " on a " + kind + " sensor (simulated and recorded, not published)";
+  }
+}
+
+std::optional<double> plugin_number(const SensorPlugin& plugin, const std::string& key, const SensorFields& f,
+                                    const XmlNode& e) {
+  const auto it = plugin.parameters.find(key);
+  if (it == plugin.parameters.end()) return std::nullopt;
+  const XmlNode* c = e.child(key);
+  const int line = c != nullptr ? c->line : e.line;
+  const auto v = parse_number(it->second);
+  if (!v || !std::isfinite(*v)) {
+    f.error(line, "<plugin><" + key + "> is not a number: \"" + it->second + "\"");
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<std::vector<double>> plugin_vector(const std::string& key, const SensorFields& f, const XmlNode& e) {
+  const XmlNode* c = e.child(key);
+  if (c == nullptr) return std::nullopt;
+  return f.numbers(*c, 3, "plugin><" + key);
+}
+
+Pose offset_pose(const char* xyz_key, const char* rpy_key, const SensorFields& f,
+                 const XmlNode& e) {
+  std::vector<double> v(6, 0.0);
+  if (auto xyz = plugin_vector(xyz_key, f, e)) std::copy(xyz->begin(), xyz->end(), v.begin());
+  if (auto rpy = plugin_vector(rpy_key, f, e)) std::copy(rpy->begin(), rpy->end(), v.begin() + 3);
+  return pose_from_xyz_rpy(v);
+}
+
+double plugin_rate(const SensorPlugin& plugin, const std::string& key, const SensorFields& f, const XmlNode& e,
+                   double fallback) {
+  const auto v = plugin_number(plugin, key, f, e);
+  if (v && *v < 0.0) {
+    f.error(e.child(key)->line, "<plugin><" + key + "> must be >= 0 Hz, got " + plugin.parameters.at(key));
+    return fallback;
+  }
+  return v.value_or(fallback);
+}
+
+double plugin_deviation(const SensorPlugin& plugin, const std::string& key, const SensorFields& f, const XmlNode& e) {
+  const auto v = plugin_number(plugin, key, f, e);
+  if (v && *v < 0.0) {
+    f.error(e.child(key)->line, "<plugin><" + key + "> must be >= 0, got " + plugin.parameters.at(key));
+    return 0.0;
+  }
+  return v.value_or(0.0);
+}
+
+// Hector's error model for one quantity: <prefix>Offset, <prefix>Drift, <prefix>DriftFrequency,
+// <prefix>GaussianNoise (scalars or "x y z").
+std::array<NoiseSpec, 3> hector_noise(const std::string& prefix, const SensorFields& f,
+                                      const XmlNode& e) {
+  std::array<NoiseSpec, 3> n{};
+  auto read3 = [&](const std::string& key, auto&& set) {
+    const XmlNode* c = e.child(key);
+    if (c == nullptr) return;
+    const auto v = parse_numbers(c->text);
+    if (!v || (v->size() != 1 && v->size() != 3)) {
+      f.error(c->line, "<plugin><" + key + "> must hold 1 or 3 numbers, not \"" + c->text + "\"");
+      return;
+    }
+    for (int i = 0; i < 3; ++i) set(n[static_cast<std::size_t>(i)], (*v)[v->size() == 1 ? 0 : static_cast<std::size_t>(i)]);
+  };
+  read3(prefix + "Offset", [](NoiseSpec& s, double x) { s.offset = x; });
+  read3(prefix + "Drift", [](NoiseSpec& s, double x) { s.drift_stddev = std::abs(x); });
+  read3(prefix + "DriftFrequency", [](NoiseSpec& s, double x) { s.drift_time = x > 0.0 ? 1.0 / x : 0.0; });
+  read3(prefix + "GaussianNoise", [](NoiseSpec& s, double x) { s.stddev = std::abs(x); });
+  return n;
+}
+
+// The link a model plugin's <bodyName> names; an error (and "") when there is none.
+std::string body_link(const SensorPlugin& plugin, const RobotModel& robot, const SensorFields& f, const XmlNode& e) {
+  const std::string body = param(plugin.parameters, "bodyName", "");
+  if (body.empty()) {
+    f.error(e.line, "<plugin> " + plugin.filename + " needs a <bodyName> (the link it measures)");
+    return "";
+  }
+  if (robot.link(body) == nullptr) {
+    f.error(e.child("bodyName")->line, "<bodyName> names no link of the robot: '" + body + "'");
+    return "";
+  }
+  return body;
+}
+
+}  // namespace
+
+void read_sensor(const XmlNode& sensor, const std::string& reference, const RobotModel& robot, Problems& p,
+                 std::vector<SensorSpec>& out) {
+  SensorSpec s;
+  s.name = sensor.attribute("name").value_or("");
+  s.type = sensor.attribute("type").value_or("");
+  s.line = sensor.line;
+  s.source = p.source();
+  const SensorFields f(p, s.name.empty() ? "<unnamed>" : s.name);
+  if (s.name.empty()) f.error(sensor.line, "<sensor> has no 'name' attribute");
+  if (s.type.empty()) f.error(sensor.line, "<sensor> has no 'type' attribute");
+
+  // The sensor's link: <gazebo reference="link">, or for a force_torque sensor the joint's child.
+  const Joint* joint = robot.joint(reference);
+  if (reference.empty()) {
+    f.error(sensor.line, "a <sensor> must sit in a <gazebo reference=\"LINK\"> element");
+  } else if (robot.link(reference) != nullptr) {
+    s.link = reference;
+  } else if (joint != nullptr) {
+    s.link = joint->child_link;
+  } else {
+    f.error(sensor.line, "<gazebo reference=\"" + reference + "\"> names no link or joint of the robot");
+  }
+
+  s.update_rate = f.number_or(sensor, "update_rate", "update_rate", 0.0);
+  if (s.update_rate < 0.0) {
+    f.error(sensor.child("update_rate")->line, "<update_rate> must be >= 0 Hz (0: every step), got " +
+                                                   sensor.child("update_rate")->text);
+    s.update_rate = 0.0;
+  }
+  s.always_on = f.boolean(sensor, "always_on", "always_on").value_or(true);
+  if (const XmlNode* pose = sensor.child("pose")) {
+    if (auto v = f.numbers(*pose, 6, "pose")) s.pose = pose_from_xyz_rpy(*v);
+  }
+
+  std::string kind;
+  if (s.type == "ray" || s.type == "gpu_ray" || s.type == "lidar" || s.type == "gpu_lidar") {
+    s.details = read_ray(sensor, f, s.type == "gpu_ray" || s.type == "gpu_lidar");
+    kind = "ray";
+  } else if (s.type == "imu") {
+    s.details = read_imu(sensor, f);
+    kind = "imu";
+  } else if (s.type == "contact") {
+    s.details = read_contact(sensor, f);
+    kind = "contact";
+  } else if (s.type == "force_torque") {
+    ForceTorqueSpec ft = read_force_torque(sensor, f);
+    if (joint == nullptr) {
+      if (!reference.empty())
+        f.error(sensor.line, "a force_torque sensor must sit in a <gazebo reference=\"JOINT\">, not a link");
+    } else {
+      ft.joint = joint->name;
+    }
+    s.details = ft;
+    kind = "force_torque";
+  } else if (!s.type.empty()) {
+    const std::string reason = unsupported_type_reason(s.type);
+    if (reason.empty()) {
+      f.error(sensor.line, "unknown sensor type \"" + s.type +
+                               "\" (Gazebo's are ray, gpu_ray, imu, contact, force_torque, camera, depth, ...)");
+    }
+    s.details = UnsupportedSpec{reason};
+    kind = s.type;
+  }
+
+  const std::vector<const XmlNode*> plugins = sensor.children_named("plugin");
+  if (plugins.size() > 1) f.warning(plugins[1]->line, "only the first <plugin> of a sensor is used");
+  if (!plugins.empty()) {
+    SensorPlugin plugin = read_plugin_element(*plugins.front(), f);
+    name_outputs(plugin, kind, s.link);
+    const XmlNode& e = *plugins.front();
+    if (auto* imu = std::get_if<ImuSpec>(&s.details)) {
+      // gazebo_ros_imu_sensor: <gaussianNoise> on rates and accelerations, <rpyOffset> on the
+      // orientation, <updateRateHZ> as a second rate limit.
+      const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
+      for (auto* axes : {&imu->rate_noise, &imu->accel_noise})
+        for (NoiseSpec& n : *axes)
+          if (gn > 0.0) n.stddev = std::sqrt(n.stddev * n.stddev + gn * gn);
+      imu->offset = offset_pose("xyzOffset", "rpyOffset", f, e);
+      // The plugin's default is true (deprecated: REP 145 wants the world as reference).
+      imu->initial_orientation_as_reference = true;
+      const auto ref = plugin.parameters.find("initialOrientationAsReference");
+      if (ref != plugin.parameters.end()) {
+        const auto b = parse_bool(ref->second);
+        if (!b) f.error(e.child("initialOrientationAsReference")->line, "<initialOrientationAsReference> is not a boolean");
+        imu->initial_orientation_as_reference = b.value_or(false);
+      }
+      const double plugin_rate_hz = plugin_rate(plugin, "updateRateHZ", f, e, 0.0);
+      if (plugin_rate_hz > 0.0 && (s.update_rate <= 0.0 || plugin_rate_hz < s.update_rate)) s.update_rate = plugin_rate_hz;
+    } else if (auto* ray = std::get_if<RaySpec>(&s.details)) {
+      // gazebo_ros_laser ignores the old block laser's <gaussianNoise>; mechsim takes it as the
+      // ranges' deviation when the sensor has no <noise> of its own (the PR2's Hokuyos).
+      const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
+      if (gn > 0.0 && !ray->noise.active()) ray->noise.stddev = gn;
+    }
+    s.plugin = std::move(plugin);
+  }
+  out.push_back(std::move(s));
+}
+
+bool read_sensor_plugin(const XmlNode& e, const RobotModel& robot, Problems& p, std::vector<SensorSpec>& out) {
+  const std::string file = e.attribute("filename").value_or("");
+  static const std::set<std::string> sensor_plugins = {"libgazebo_ros_imu.so", "libhector_gazebo_ros_imu.so",
+                                                       "libgazebo_ros_p3d.so", "libgazebo_ros_ft_sensor.so",
+                                                       "libgazebo_ros_f3d.so"};
+  if (!sensor_plugins.count(file)) return false;
+  SensorSpec s;
+  s.name = e.attribute("name").value_or(file);
+  s.type = "plugin";
+  s.line = e.line;
+  s.source = p.source();
+  const SensorFields f(p, s.name);
+  SensorPlugin plugin = read_plugin_element(e, f);
+
+  if (file == "libgazebo_ros_ft_sensor.so") {
+    ForceTorqueSpec ft;
+    ft.parent_to_child = true;  // the joint's wrench on its child, in the child's frame
+    ft.joint = param(plugin.parameters, "jointName", "");
+    const Joint* joint = robot.joint(ft.joint);
+    if (ft.joint.empty()) f.error(e.line, "<plugin> libgazebo_ros_ft_sensor.so needs a <jointName>");
+    else if (joint == nullptr) f.error(e.child("jointName")->line, "<jointName> names no joint of the robot: '" + ft.joint + "'");
+    else s.link = joint->child_link;
+    const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
+    ft.force_noise.stddev = ft.torque_noise.stddev = gn;
+    s.details = ft;
+    s.update_rate = plugin_rate(plugin, "updateRate", f, e, 0.0);
+  } else {
+    s.link = body_link(plugin, robot, f, e);
+    if (file == "libgazebo_ros_p3d.so") {
+      GroundTruthSpec gt;
+      gt.frame = param(plugin.parameters, "frameName", "world");
+      if (!gt.frame.empty() && gt.frame.front() == '/') gt.frame.erase(0, 1);
+      if (gt.frame != "world" && gt.frame != "map" && robot.link(gt.frame) == nullptr)
+        f.error(e.child("frameName")->line, "<frameName> is neither world, map nor a link of the robot: '" + gt.frame + "'");
+      gt.offset = offset_pose("xyzOffsets", "rpyOffsets", f, e);
+      gt.gaussian_noise = plugin_deviation(plugin, "gaussianNoise", f, e);
+      s.details = gt;
+      s.update_rate = plugin_rate(plugin, "updateRate", f, e, 0.0);
+    } else if (file == "libgazebo_ros_f3d.so") {
+      s.details = UnsupportedSpec{"libgazebo_ros_f3d.so (the forces applied to a body) is not simulated"};
+      s.update_rate = plugin_rate(plugin, "updateRate", f, e, 0.0);
+    } else {
+      ImuSpec imu;
+      if (file == "libgazebo_ros_imu.so") {
+        const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
+        for (auto* axes : {&imu.rate_noise, &imu.accel_noise})
+          for (NoiseSpec& n : *axes) n.stddev = gn;
+        imu.offset = offset_pose("xyzOffset", "rpyOffset", f, e);
+        imu.service_name = param(plugin.parameters, "serviceName", "");
+      } else {
+        imu.rate_noise = hector_noise("rate", f, e);
+        imu.accel_noise = hector_noise("accel", f, e);
+        imu.yaw_noise = hector_noise("heading", f, e)[0];
+        imu.offset = offset_pose("xyzOffset", "rpyOffset", f, e);
+        imu.service_name = param(plugin.parameters, "serviceName", "");
+      }
+      s.details = imu;
+      s.update_rate = plugin_rate(plugin, "updateRate", f, e, 0.0);
+    }
+  }
+  name_outputs(plugin, "plugin", s.link);
+  if (file == "libgazebo_ros_f3d.so") plugin.unsupported = "not simulated";
+  if (plugin.topic.empty() && (file == "libgazebo_ros_p3d.so" || file == "libgazebo_ros_ft_sensor.so"))
+    f.error(e.line, "<plugin> " + file + " needs a <topicName>");
+  s.plugin = std::move(plugin);
+  out.push_back(std::move(s));
+  return true;
+}
+
+}  // namespace mechsim::description::detail
