@@ -78,6 +78,7 @@ struct ContactSpec {
 
 struct ForceTorqueSpec {
   std::string joint;
+  std::string parent_link, child_link;  // the joint's
   enum class Frame { Child, Parent, Sensor } frame = Frame::Child;
   // SDF measure_direction: child_to_parent (default) reports the wrench the child applies on the
   // parent; parent_to_child the one the parent applies on the child (gazebo_ros_ft_sensor's).
@@ -90,7 +91,7 @@ struct ForceTorqueSpec {
 struct GroundTruthSpec {
   std::string frame = "world";
   Pose offset;                  // xyzOffsets / rpyOffsets
-  double gaussian_noise = 0.0;  // stddev on position (m) and the twist (m/s, rad/s)
+  double gaussian_noise = 0.0;  // stddev on the twist (m/s, rad/s); p3d adds none to the pose
 };
 
 // A sensor mechsim reads but cannot simulate; `reason` says why (mechsim check lists it).

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "physics/physics_data.hpp"
+#include "physics/sensing_internal.hpp"
 #include "physics/transform.hpp"
 
 namespace mechsim::physics {
@@ -372,6 +373,12 @@ std::size_t Physics::contacts(std::vector<Contact>& out) const {
     k.normal_force = f[0];
     k.friction_force[0] = f[1];
     k.friction_force[1] = f[2];
+    // The contact frame's rows: normal, then the two tangents (world frame).
+    const mjtNum* R = c.frame;
+    k.force = {f[0] * R[0] + f[1] * R[3] + f[2] * R[6], f[0] * R[1] + f[1] * R[4] + f[2] * R[7],
+               f[0] * R[2] + f[1] * R[5] + f[2] * R[8]};
+    k.geom_a = c.geom1;
+    k.geom_b = c.geom2;
     out.push_back(k);
   }
   return out.size();
@@ -411,8 +418,36 @@ double Physics::ground_height(double x, double y) const {
   const mjtNum down[3] = {0.0, 0.0, -1.0};
   const mjtByte groups[mjNGROUP] = {0, 0, 1, 0, 0, 0};  // world geoms sit in group 2
   int geom = -1;
-  const mjtNum distance = mj_ray(data_->m, data_->d, from, down, groups, 1, -1, &geom);
+  mjtNum distance = mj_ray(data_->m, data_->d, from, down, groups, 1, -1, &geom);
+  // mj_ray can pass between a height field's triangles on a grid line and report the bottom of
+  // the terrain block (ray_cast.hpp): the exact intersection decides for height fields.
+  const mjModel* m = data_->m;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_type[g] != mjGEOM_HFIELD || m->geom_group[g] != 2) continue;
+    const double hit = detail::ray_hfield_geom(m, data_->d, g, from, down);
+    if (hit >= 0.0 && (distance < 0.0 || hit < distance)) distance = hit;
+  }
   return distance < 0.0 ? std::nan("") : kTop - distance;
+}
+
+void Physics::cast_rays(const RayFilter& filter, const Vec3& origin, const Vec3* directions, std::size_t count,
+                        double near, double far, double* ranges) const {
+  refresh_kinematics();
+  detail::cast_rays(data_->m, data_->d, filter, origin, directions, count, near, far, ranges);
+}
+
+Acceleration Physics::link_acceleration(std::size_t link, const Vec3& p_L) const {
+  const Pose X_WL = link_pose(link);  // refreshes the kinematics
+  const Vec3 r = rotate(X_WL.orientation, p_L);
+  const Vec3 p_W{X_WL.position.x + r.x, X_WL.position.y + r.y, X_WL.position.z + r.z};
+  return detail::point_acceleration(data_->m, data_->d, model_->links()[link].body, p_W);
+}
+
+Wrench Physics::joint_wrench(std::size_t link, const Vec3& p_L) const {
+  const Pose X_WL = link_pose(link);
+  const Vec3 r = rotate(X_WL.orientation, p_L);
+  const Vec3 p_W{X_WL.position.x + r.x, X_WL.position.y + r.y, X_WL.position.z + r.z};
+  return detail::wrench_from_parent(data_->m, data_->d, model_->links()[link].body, p_W);
 }
 
 double Physics::energy() const {

@@ -15,6 +15,7 @@
 
 #include "description/robot_model.hpp"
 #include "physics/physics_model.hpp"
+#include "physics/ray_cast.hpp"
 
 namespace mechsim::physics {
 
@@ -83,11 +84,25 @@ struct ArenaUse {
 
 struct Contact {
   std::string_view link_a, link_b;  // URDF link names, or "ground" / "terrain"
+  int geom_a = -1, geom_b = -1;     // MuJoCo geoms (PhysicsModel::geom_name)
   description::Vec3 position;       // world frame (m)
   description::Vec3 normal;         // world frame, from a to b
   double depth = 0.0;               // penetration (m), positive when overlapping
   double normal_force = 0.0;        // N, >= 0
   double friction_force[2] = {0.0, 0.0};  // N, along the contact frame's tangents
+  description::Vec3 force;          // world frame (N): normal and friction, the force a exerts on b
+};
+
+// Acceleration of a point (Physics::link_acceleration), world frame.
+struct Acceleration {
+  description::Vec3 angular;         // rad/s^2
+  // m/s^2: the point's acceleration minus gravity, what an accelerometer measures (+g up at rest)
+  description::Vec3 specific_force;
+};
+
+struct Wrench {
+  description::Vec3 force;   // N
+  description::Vec3 torque;  // N m, about the point the wrench is given at
 };
 
 class Physics {
@@ -184,6 +199,23 @@ class Physics {
   // Height (m) of the world's ground (plane or terrain) under (x, y), by a ray cast straight
   // down; NaN where there is no ground.
   double ground_height(double x, double y) const;
+
+  // Sensing (sensors/ calls these at the sensors' rates; they allocate nothing).
+  // Casts `count` rays from `origin` along the unit `directions` (world frame) against the shapes
+  // of `filter` (ray_cast.hpp), from `near` to `far` (m) along each: ranges[i] is the distance
+  // from the origin to the first hit, +inf when nothing is hit within [near, far]. Nothing nearer
+  // than `near` is seen (Gazebo's rays start at the minimum range).
+  void cast_rays(const RayFilter& filter, const description::Vec3& origin, const description::Vec3* directions,
+                 std::size_t count, double near, double far, double* ranges) const;
+  // Acceleration of the point p_L (link frame, m) fixed to link `link` over the last step, in the
+  // world frame (MuJoCo's post-constraint recursive Newton-Euler: a few microseconds; not for
+  // every tick of a large model).
+  Acceleration link_acceleration(std::size_t link, const description::Vec3& p_L) const;
+  // The wrench the parent body applies to link `link`'s body through its joint in the last step
+  // (everything the joint transmits: constraint, actuator, limits), at point p_L of the link,
+  // world frame. Meaningful only when the link has its own MuJoCo body (LinkInfo::body differs
+  // from its parent link's).
+  Wrench joint_wrench(std::size_t link, const description::Vec3& p_L) const;
 
   // Total mechanical energy (J) of the robot: kinetic + gravitational potential.
   double energy() const;

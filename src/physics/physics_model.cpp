@@ -289,6 +289,16 @@ int PhysicsModel::body_count() const { return impl_->model->nbody; }
 int PhysicsModel::dof_count() const { return impl_->model->nv; }
 int PhysicsModel::geom_count() const { return impl_->model->ngeom; }
 
+std::string_view PhysicsModel::geom_name(int geom) const {
+  if (geom < 0 || geom >= impl_->model->ngeom) return {};
+  const char* n = mj_id2name(impl_->model, mjOBJ_GEOM, geom);
+  return n != nullptr ? std::string_view(n) : std::string_view();
+}
+
+int PhysicsModel::geom_body(int geom) const {
+  return geom < 0 || geom >= impl_->model->ngeom ? -1 : impl_->model->geom_bodyid[geom];
+}
+
 std::string PhysicsModel::body_name(int body) const {
   if (body <= 0 || body >= impl_->model->nbody) return "world";
   const char* n = mj_id2name(impl_->model, mjOBJ_BODY, body);

@@ -112,6 +112,10 @@ class PhysicsModel {
   int dof_count() const;  // MuJoCo nv
   int geom_count() const;
   std::string body_name(int body) const;  // "world" for -1 or 0
+  // A compiled geom's name ("<link>/collision/<i>", "<link>/visual/<i>", "ground", "terrain",
+  // "box:<name>"), "" when unnamed or out of range; and its MuJoCo body (-1 when out of range).
+  std::string_view geom_name(int geom) const;
+  int geom_body(int geom) const;
 
   struct Impl;  // MuJoCo objects; defined in physics/mujoco_internal.hpp
   const Impl& impl() const { return *impl_; }

@@ -9,6 +9,7 @@
 #include "controllers/builtin_controllers.hpp"
 #include "controllers/drive/pr2_base_params.hpp"
 #include "controllers/drive/rover_drive_params.hpp"
+#include "description/sensor_spec.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/pr2_gripper_transmission.hpp"
 #include "mechanism/propagation.hpp"
@@ -170,6 +171,10 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   read_physics();
   notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
   startup_times_.mechanism_ms = ms_since(t0);
+  if (options_.sensors) {
+    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed);
+    sensors_.sample_all(*physics_, time());
+  }
 }
 
 namespace {
@@ -318,6 +323,7 @@ TickResult Simulation::step() {
   // The mechanism state describes the new time() for observers and callers between ticks (the
   // read at the start of the next tick repeats it, for writes to the physics in between).
   read_physics();
+  sensors_.sample_due(*physics_, time());
   for (const Observer& observer : observers_) observer(*this);
   return {};
 }
@@ -378,6 +384,7 @@ void Simulation::reset() {
   // Restart (stop + start in one switch) so each controller's starting() sees the spawn state;
   // the next tick applies it.
   if (!running.empty()) manager_->switch_controllers(running, running, control::SwitchStrictness::BestEffort);
+  sensors_.sample_all(*physics_, time());
   ++resets_;
 }
 

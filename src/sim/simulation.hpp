@@ -10,7 +10,8 @@
 //      set point of the joint's implicit position/velocity servo);
 //   4. one physics step; simulation time advances by exactly one period;
 //   5. the mechanism state is read from the physics again, so that it describes the new time();
-//      then observers (publishers, recorders) run; each decides whether it is due.
+//      sensors that are due sample the new state (sensors()); then observers (publishers,
+//      recorders) run; each decides whether it is due.
 //
 // Between ticks every state the simulation exposes (physics, mechanism state) describes time().
 // Control observers run inside the tick, after step 3 and before the physics step: there the
@@ -41,6 +42,7 @@
 #include "mechanism/mechanism_model.hpp"
 #include "physics/physics.hpp"
 #include "physics/physics_model.hpp"
+#include "sensors/sensor_set.hpp"
 #include "sim/world.hpp"
 
 namespace mechsim::sim {
@@ -80,6 +82,11 @@ struct SimulationOptions {
   // a tick that needs more grows it (reported in physics_warnings()) or, with Fail, stops the run.
   std::optional<physics::ArenaSize> arena;
   physics::ArenaOverflow arena_overflow = physics::ArenaOverflow::Grow;
+  // The robot's sensors (RobotModel::sensors) are simulated at their rates (sensors/sensor_set.hpp);
+  // false leaves them out (a benchmark's "without sensors"). Their noise is seeded from
+  // sensor_seed: the same seed gives bit-identical readings.
+  bool sensors = true;
+  std::uint64_t sensor_seed = 1;
 };
 
 // Wall-clock seconds the paced simulation may fall behind its anchor before it gives up
@@ -146,6 +153,10 @@ class Simulation {
   const mechanism::MechanismState& mechanism_state() const { return *mechanism_state_; }
   control::ControllerManager& controllers() { return *manager_; }
   const control::ControllerManager& controllers() const { return *manager_; }
+  // The simulated sensors and their latest readings (sampled in step 5 of each tick, before the
+  // observers run; every one once at construction and after reset()).
+  sensors::SensorSet& sensors() { return sensors_; }
+  const sensors::SensorSet& sensors() const { return sensors_; }
 
   // What the physics reported without failing a tick (physics::PhysicsNotice: its arena grew, a
   // MuJoCo warning), each as "tick N (t = T s): what" ("spawn (t = 0 s): " for the spawn state),
@@ -201,6 +212,7 @@ class Simulation {
   std::unique_ptr<mechanism::MechanismModel> mechanism_;
   std::unique_ptr<mechanism::MechanismState> mechanism_state_;
   std::unique_ptr<control::ControllerManager> manager_;
+  sensors::SensorSet sensors_;
 
   // Per mechanism joint: the physics joint (-1 when the physics has none) and the mode the
   // physics servo is in, so modes switch only on change.

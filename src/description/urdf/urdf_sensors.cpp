@@ -222,6 +222,8 @@ void read_sensor(const XmlNode& sensor, const std::string& reference, const Robo
         f.error(sensor.line, "a force_torque sensor must sit in a <gazebo reference=\"JOINT\">, not a link");
     } else {
       ft.joint = joint->name;
+      ft.parent_link = joint->parent_link;
+      ft.child_link = joint->child_link;
     }
     s.details = ft;
     kind = "force_torque";
@@ -291,7 +293,10 @@ bool read_sensor_plugin(const XmlNode& e, const RobotModel& robot, Problems& p, 
     const Joint* joint = robot.joint(ft.joint);
     if (ft.joint.empty()) f.error(e.line, "<plugin> libgazebo_ros_ft_sensor.so needs a <jointName>");
     else if (joint == nullptr) f.error(e.child("jointName")->line, "<jointName> names no joint of the robot: '" + ft.joint + "'");
-    else s.link = joint->child_link;
+    else {
+      s.link = ft.child_link = joint->child_link;
+      ft.parent_link = joint->parent_link;
+    }
     const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
     ft.force_noise.stddev = ft.torque_noise.stddev = gn;
     s.details = ft;

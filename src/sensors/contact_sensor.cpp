@@ -1,0 +1,131 @@
+// contact sensors (gazebo_ros_bumper): the contacts of the sensor's collision shapes, grouped by
+// touching pair as gazebo_msgs/ContactsState has them.
+#include <algorithm>
+#include <string_view>
+
+#include "physics/transform.hpp"
+#include "sensors/sensor_types.hpp"
+
+namespace mechsim::sensors {
+
+namespace {
+
+struct ContactSensorState : SensorState {
+  std::vector<physics::Contact> contacts;  // scratch
+  std::vector<std::pair<int, int>> pairs;  // (own geom, other geom) of each state in use
+};
+
+// The link a Gazebo collision name refers to: "<link>_collision", "<link>_collision_<n>", and
+// the lumped "<parent>_fixed_joint_lump__<link>_collision[_<n>]"; "" when the name has neither form.
+std::string collision_link(std::string name) {
+  const std::string lump = "_fixed_joint_lump__";
+  if (const auto at = name.find(lump); at != std::string::npos) name = name.substr(at + lump.size());
+  const auto at = name.rfind("_collision");
+  if (at == std::string::npos) return "";
+  const std::string tail = name.substr(at + 10);
+  if (!tail.empty() && (tail[0] != '_' || tail.size() < 2 ||
+                        !std::all_of(tail.begin() + 1, tail.end(), [](char c) { return c >= '0' && c <= '9'; })))
+    return "";
+  return name.substr(0, at);
+}
+
+// Gazebo's scoped name of a compiled geom: model::link::collision.
+std::string gazebo_name(const physics::PhysicsModel& model, int geom) {
+  const std::string_view n = model.geom_name(geom);
+  const auto cut = n.rfind("/collision/");
+  if (cut != std::string_view::npos) {
+    const std::string link(n.substr(0, cut));
+    const std::string index(n.substr(cut + 11));
+    return model.robot_name() + "::" + link + "::" + link + "_collision" + (index == "0" ? "" : "_" + index);
+  }
+  if (n == "ground") return "ground_plane::link::collision";
+  if (n.rfind("box:", 0) == 0) return std::string(n.substr(4)) + "::link::collision";
+  if (n.empty()) return "world::link::collision";
+  return std::string(n) + "::link::collision";
+}
+
+}  // namespace
+
+ContactSensor::ContactSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model) : Sensor(spec) {
+  link_ = resolve_link(model);
+  const auto& contact = std::get<description::ContactSpec>(this->spec().details);
+  for (int g = 0; g < model.geom_count(); ++g) geom_names_.push_back(gazebo_name(model, g));
+  for (const std::string& collision : contact.collisions) {
+    const std::string link = collision_link(collision);
+    const std::string prefix = (link.empty() ? spec.link : link) + "/collision/";
+    bool found = false;
+    for (int g = 0; g < model.geom_count(); ++g) {
+      if (model.geom_name(g).rfind(prefix, 0) != 0) continue;
+      geoms_.push_back(g);
+      found = true;
+    }
+    if (!found) {
+      throw SensorError(spec.where() + ": <contact><collision>" + collision +
+                        "</collision> matches no collision shape of the physics (link '" +
+                        (link.empty() ? spec.link : link) + "' has none)");
+    }
+  }
+  std::sort(geoms_.begin(), geoms_.end());
+  geoms_.erase(std::unique(geoms_.begin(), geoms_.end()), geoms_.end());
+  const std::string frame = spec.plugin ? spec.plugin->frame : "world";
+  if (frame != "world" && frame != "/world" && frame != "map") frame_link_ = model.link_index(frame);
+}
+
+std::unique_ptr<SensorState> ContactSensor::make_state(Rng rng) const {
+  auto state = std::make_unique<ContactSensorState>();
+  state->rng = std::move(rng);
+  return state;
+}
+
+void ContactSensor::sample(const physics::Physics& physics, double, SensorState& base, SensorOutput& out) const {
+  auto& state = static_cast<ContactSensorState&>(base);
+  if (!std::holds_alternative<ContactsReading>(out)) out = ContactsReading{};
+  ContactsReading& r = std::get<ContactsReading>(out);
+  for (std::size_t i = 0; i < r.count; ++i) {
+    ContactState& s = r.states[i];
+    s.wrenches.clear();
+    s.contact_positions.clear();
+    s.contact_normals.clear();
+    s.depths.clear();
+    s.total_wrench = {};
+  }
+  r.count = 0;
+  state.pairs.clear();
+  physics.contacts(state.contacts);
+  const Vec3 o = physics.link_pose(link_).position;
+  const description::Pose X_FW = frame_link_ ? physics::inverse(physics.link_pose(*frame_link_)) : description::Pose{};
+  const auto own = [&](int g) { return std::binary_search(geoms_.begin(), geoms_.end(), g); };
+  for (const physics::Contact& c : state.contacts) {
+    const bool a = own(c.geom_a), b = own(c.geom_b);
+    if (!a && !b) continue;
+    const int mine = b ? c.geom_b : c.geom_a, other = b ? c.geom_a : c.geom_b;
+    // The force on our shape: MuJoCo's contact force is what a exerts on b.
+    const double sign = b ? 1.0 : -1.0;
+    const Vec3 F_W{sign * c.force.x, sign * c.force.y, sign * c.force.z};
+    const Vec3 n_W{sign * c.normal.x, sign * c.normal.y, sign * c.normal.z};
+    const Vec3 arm{c.position.x - o.x, c.position.y - o.y, c.position.z - o.z};
+    const Vec3 T_W{arm.y * F_W.z - arm.z * F_W.y, arm.z * F_W.x - arm.x * F_W.z, arm.x * F_W.y - arm.y * F_W.x};
+    std::size_t k = 0;
+    while (k < r.count && state.pairs[k] != std::make_pair(mine, other)) ++k;
+    if (k == r.count) {
+      if (r.states.size() <= k) r.states.emplace_back();
+      ContactState& s = r.states[k];
+      s.collision1_name = geom_names_[static_cast<std::size_t>(mine)];
+      s.collision2_name = geom_names_[static_cast<std::size_t>(other)];
+      state.pairs.emplace_back(mine, other);
+      ++r.count;
+    }
+    ContactState& s = r.states[k];
+    const Vec3 F = physics::rotate(X_FW.orientation, F_W), T = physics::rotate(X_FW.orientation, T_W);
+    s.wrenches.push_back({F, T});
+    s.total_wrench.force = {s.total_wrench.force.x + F.x, s.total_wrench.force.y + F.y, s.total_wrench.force.z + F.z};
+    s.total_wrench.torque = {s.total_wrench.torque.x + T.x, s.total_wrench.torque.y + T.y,
+                             s.total_wrench.torque.z + T.z};
+    const Vec3 p = physics::rotate(X_FW.orientation, c.position);
+    s.contact_positions.push_back({p.x + X_FW.position.x, p.y + X_FW.position.y, p.z + X_FW.position.z});
+    s.contact_normals.push_back(physics::rotate(X_FW.orientation, n_W));
+    s.depths.push_back(c.depth);
+  }
+}
+
+}  // namespace mechsim::sensors

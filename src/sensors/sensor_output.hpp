@@ -1,0 +1,93 @@
+#pragma once
+// What sensors produce, as plain data (no ROS types): the contents of sensor_msgs/LaserScan and
+// Imu, gazebo_msgs/ContactsState, geometry_msgs/WrenchStamped and nav_msgs/Odometry. Compiles as
+// C++17 too (the ROS layer reads these through its bridge).
+//
+// Units: m, rad, s, N, N m. Frames are named by each sensor's spec (plugin frame).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "description/pose.hpp"
+
+namespace mechsim::sensors {
+
+using description::Pose;
+using description::Quat;
+using description::Vec3;
+
+using Covariance = std::array<double, 9>;  // row-major 3x3
+
+// A scan of `horizontal_count` x `vertical_count` ranges, row by row (vertical index outer), as
+// Gazebo's ray sensors give them: +inf where nothing is within range_max, -inf where the hit is
+// at or below range_min (REP 117); noise is added to the others, clamped to [min, max].
+struct LaserScan {
+  double angle_min = 0.0, angle_max = 0.0, angle_increment = 0.0;  // rad, about the sensor's z
+  double vertical_angle_min = 0.0, vertical_angle_max = 0.0, vertical_angle_increment = 0.0;
+  int horizontal_count = 0, vertical_count = 1;
+  double time_increment = 0.0;  // s between rays (0: every ray at the stamp, Gazebo's way)
+  double scan_time = 0.0;       // s between scans
+  double range_min = 0.0, range_max = 0.0;
+  std::vector<float> ranges;       // m
+  std::vector<float> intensities;  // Gazebo's laser_retro of what was hit: 0 (mechsim has none)
+};
+
+struct ImuReading {
+  // Orientation of the sensor frame in the reference frame (the world, or the sensor's own
+  // frame at start), with the plugin's rpy offset applied.
+  Quat orientation;
+  Vec3 angular_velocity;     // rad/s, sensor frame
+  Vec3 linear_acceleration;  // m/s^2, sensor frame: specific force, gravity included (+9.81 up at rest)
+  Covariance orientation_covariance{}, angular_velocity_covariance{}, linear_acceleration_covariance{};
+};
+
+struct ContactWrench {
+  Vec3 force;   // N
+  Vec3 torque;  // N m
+};
+
+// One touching pair (gazebo_msgs/ContactState): collision1 is the sensor's own.
+struct ContactState {
+  std::string info;
+  std::string collision1_name, collision2_name;  // Gazebo-style scoped names (model::link::collision)
+  std::vector<ContactWrench> wrenches;           // per point: on collision1's body, torque about the point's link origin
+  ContactWrench total_wrench;
+  std::vector<Vec3> contact_positions;  // m
+  std::vector<Vec3> contact_normals;    // unit, pushing collision1 away from collision2
+  std::vector<double> depths;           // m, penetration
+};
+
+// Everything the sensor's collisions touch (gazebo_msgs/ContactsState), in the plugin's frame
+// (the world, or a link's frame).
+struct ContactsReading {
+  std::vector<ContactState> states;
+  std::size_t count = 0;  // states in use (the vector keeps its capacity between samples)
+};
+
+struct WrenchReading {
+  Vec3 force;   // N
+  Vec3 torque;  // N m
+};
+
+// Pose and twist of a link (nav_msgs/Odometry of gazebo_ros_p3d): pose of the link in the
+// reference frame, twist in the reference frame's orientation (as p3d publishes it).
+struct GroundTruthReading {
+  Pose pose;
+  Vec3 linear;   // m/s
+  Vec3 angular;  // rad/s
+  double pose_variance = 0.0, twist_variance = 0.0;  // covariance diagonal
+};
+
+using SensorOutput = std::variant<std::monostate, LaserScan, ImuReading, ContactsReading, WrenchReading, GroundTruthReading>;
+
+// A sensor's latest output and when it was taken.
+struct SensorReading {
+  std::uint64_t count = 0;  // samples taken so far; changes with every new sample
+  double stamp = 0.0;       // s of simulated time
+  SensorOutput value;
+};
+
+}  // namespace mechsim::sensors

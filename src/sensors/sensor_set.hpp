@@ -1,0 +1,74 @@
+#pragma once
+// The sensors of one simulation, sampled at their rates in simulated time: the `sensors/` side of
+// DESIGN.md's tick step 5. sim::Simulation owns one and calls sample_due() after each physics
+// step; publishers and recorders then read the readings (count changes with each new sample).
+//
+// Rates: a sensor of rate r is due at t = k / r (k = 0, 1, ...) and sampled at the first tick at
+// or after that time, so the samples keep the rate's schedule without drift; rate 0 means every
+// tick. Every sensor is sampled once at construction (t = the simulation's start), so a reading
+// exists from the start.
+//
+// Noise: one generator per sensor, seeded from (seed, the sensor's name), so adding a sensor does
+// not change another's noise, and the same seed gives bit-identical readings.
+//
+// Threads: everything here belongs to the simulation's loop thread.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "description/sensor_spec.hpp"
+#include "physics/physics.hpp"
+#include "sensors/sensor.hpp"
+#include "sensors/sensor_output.hpp"
+
+namespace mechsim::sensors {
+
+// A declared sensor mechsim does not simulate, and why.
+struct SkippedSensor {
+  description::SensorSpec spec;
+  std::string reason;
+};
+
+class SensorSet {
+ public:
+  SensorSet() = default;
+  // Builds every simulated spec against `model` (make_sensor); specs that cannot be simulated go
+  // to skipped(). Throws SensorError for a spec that claims to be simulated but cannot be built.
+  SensorSet(const std::vector<description::SensorSpec>& specs, std::shared_ptr<const physics::PhysicsModel> model,
+            std::uint64_t seed);
+
+  std::size_t size() const { return sensors_.size(); }
+  bool empty() const { return sensors_.empty(); }
+  const Sensor& sensor(std::size_t i) const { return *sensors_[i]; }
+  const description::SensorSpec& spec(std::size_t i) const { return sensors_[i]->spec(); }
+  const SensorReading& reading(std::size_t i) const { return readings_[i]; }
+  std::optional<std::size_t> find(std::string_view name) const;
+  const std::vector<SkippedSensor>& skipped() const { return skipped_; }
+
+  // Samples every enabled sensor that is due at `time` (s). Returns how many were sampled.
+  std::size_t sample_due(const physics::Physics& physics, double time);
+  // Samples every enabled sensor now, and restarts the schedules from `time` (after a reset: the
+  // generators and drifts go on).
+  void sample_all(const physics::Physics& physics, double time);
+
+  // A disabled sensor is not sampled (its reading stays as it was): for sensors nobody consumes.
+  void set_enabled(std::size_t i, bool enabled) { enabled_[i] = enabled; }
+  bool enabled(std::size_t i) const { return enabled_[i]; }
+
+ private:
+  void take(std::size_t i, const physics::Physics& physics, double time);
+
+  std::shared_ptr<const physics::PhysicsModel> model_;
+  std::vector<std::unique_ptr<Sensor>> sensors_;
+  std::vector<std::unique_ptr<SensorState>> states_;
+  std::vector<SensorReading> readings_;
+  std::vector<double> next_due_;  // s
+  std::vector<char> enabled_;
+  std::vector<SkippedSensor> skipped_;
+};
+
+}  // namespace mechsim::sensors

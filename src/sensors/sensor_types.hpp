@@ -1,0 +1,87 @@
+#pragma once
+// The sensor types mechsim simulates (internal to sensors/; make_sensor builds them).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "physics/ray_cast.hpp"
+#include "sensors/sensor.hpp"
+
+namespace mechsim::sensors {
+
+// ray / gpu_ray: rays cast from the sensor frame against the world and the robot's shapes
+// (collision shapes; visual ones for gpu_ray), the sensor's own body excluded, all at the sample
+// time (Gazebo's instantaneous scan).
+class RaySensor final : public Sensor {
+ public:
+  RaySensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
+
+ private:
+  const description::RaySpec& ray_;
+  std::size_t link_ = 0;
+  physics::RayFilter filter_;
+  std::vector<description::Vec3> directions_S_;  // unit, sensor frame; vertical index outer
+  LaserScan layout_;                             // angles and limits, ranges empty
+};
+
+// imu: orientation, angular velocity and specific force of the sensor frame.
+class ImuSensor final : public Sensor {
+ public:
+  ImuSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
+
+ private:
+  const description::ImuSpec& imu_;
+  std::size_t link_ = 0;
+};
+
+// contact (gazebo_ros_bumper): what the sensor's collisions touch.
+class ContactSensor final : public Sensor {
+ public:
+  ContactSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
+
+ private:
+  std::vector<int> geoms_;               // the sensor's collision geoms (MuJoCo ids), sorted
+  std::vector<std::string> geom_names_;  // their Gazebo-style names, by MuJoCo geom id (all geoms)
+  std::size_t link_ = 0;                 // the sensor's link: torques are about its origin
+  std::optional<std::size_t> frame_link_;  // the plugin's frame when it is a link (else the world)
+};
+
+// force_torque (SDF sensor, gazebo_ros_ft_sensor): the wrench a joint transmits.
+class ForceTorqueSensor final : public Sensor {
+ public:
+  ForceTorqueSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
+
+ private:
+  const description::ForceTorqueSpec& ft_;
+  std::size_t child_ = 0;
+  std::optional<std::size_t> parent_;
+};
+
+// gazebo_ros_p3d: the true pose and twist of a link.
+class GroundTruthSensor final : public Sensor {
+ public:
+  GroundTruthSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
+
+ private:
+  const description::GroundTruthSpec& gt_;
+  std::size_t link_ = 0;
+  std::optional<std::size_t> reference_;  // a link; none: the world
+};
+
+// A state with one NoiseState per noisy channel.
+struct ChannelState : SensorState {
+  std::vector<NoiseState> channels;
+};
+
+}  // namespace mechsim::sensors
