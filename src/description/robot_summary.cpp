@@ -4,6 +4,8 @@
 #include <map>
 #include <sstream>
 
+#include "description/sensor_spec.hpp"
+
 namespace mechsim::description {
 
 namespace {
@@ -71,6 +73,28 @@ std::string summarize_robot(const RobotModel& model) {
     out << "    " << p.name << " (" << p.filename << ")";
     for (const auto& [key, value] : p.parameters) out << " " << key << "=" << value;
     out << "\n";
+  }
+  std::size_t simulated = 0;
+  for (const SensorSpec& sensor : model.sensors) simulated += sensor.simulated();
+  out << "  sensors:         " << model.sensors.size() << " (" << simulated << " simulated)\n";
+  for (const SensorSpec& sensor : model.sensors) out << "    " << describe_sensor(sensor) << "\n";
+  return out.str();
+}
+
+std::string describe_sensor(const SensorSpec& s) {
+  std::ostringstream out;
+  out << s.name << ": " << s.type;
+  if (s.type == "plugin" && s.plugin) out << " " << s.plugin->filename;
+  out << " on " << (s.link.empty() ? "?" : s.link);
+  if (s.update_rate > 0.0) out << ", " << s.update_rate << " Hz";
+  else out << ", every step";
+  if (!s.simulated()) {
+    out << ", NOT SIMULATED: " << std::get<UnsupportedSpec>(s.details).reason;
+  } else if (s.plugin) {
+    if (!s.plugin->unsupported.empty()) out << ", not published: " << s.plugin->unsupported;
+    else out << ", topic " << s.plugin->full_topic() << " (frame " << s.plugin->frame << ")";
+  } else {
+    out << ", no ROS plugin: recorded, not published";
   }
   return out.str();
 }

@@ -1,7 +1,7 @@
 #pragma once
 // A human-readable summary of a RobotModel, as `mechsim check` prints it (in the spirit of
 // ROS's check_urdf): name, root, link and joint counts, DOF, total mass, transmissions by type,
-// gazebo extensions and plugins.
+// gazebo extensions and plugins, sensors.
 
 #include <string>
 
@@ -9,7 +9,13 @@
 
 namespace mechsim::description {
 
-// Several lines, each ending in '\n'.
+struct SensorSpec;
+
+// Several lines, each ending in '\n'. Ends with the sensors (describe_sensor each).
 std::string summarize_robot(const RobotModel& model);
+
+// One line: name, type, link, rate, and the ROS topic and frame it publishes, or why it is not
+// simulated (NOT SIMULATED: reason) or not published.
+std::string describe_sensor(const SensorSpec& sensor);
 
 }  // namespace mechsim::description

@@ -21,6 +21,14 @@ const char* SensorSpec::kind_name() const {
   }
 }
 
+std::string SensorPlugin::full_topic() const {
+  if (!topic.empty() && topic.front() == '/') return topic;
+  std::string ns = robot_namespace;
+  while (!ns.empty() && ns.back() == '/') ns.pop_back();
+  if (!ns.empty() && ns.front() != '/') ns.insert(ns.begin(), '/');
+  return ns + "/" + topic;
+}
+
 std::string SensorSpec::where() const {
   std::string at = source.empty() ? std::string("<robot>") : source;
   if (line > 0) at.append(":").append(std::to_string(line));

@@ -110,6 +110,10 @@ struct SensorPlugin {
   // Set when mechsim simulates the sensor but has no ROS output for this plugin.
   std::string unsupported;
   int line = 0;
+
+  // The topic as ROS resolves it under the plugin's namespace: "/ns/topic", or "/topic" (a
+  // topic starting with '/' is absolute).
+  std::string full_topic() const;
 };
 
 struct SensorSpec {

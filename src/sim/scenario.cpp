@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <initializer_list>
 #include <numbers>
@@ -316,8 +317,30 @@ Check read_check(const Params& c) {
     if (!p.has("position")) fail(p, "needs position (and within)");
     check.within = p.get<double>("within");
     if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0");
+  } else if (kind == "laser_range" || kind == "imu_tilt") {
+    const bool laser = kind == "laser_range";
+    check.kind = laser ? Check::Kind::LaserRange : Check::Kind::ImuTilt;
+    if (laser) only_keys(p, {"sensor", "angle_deg", "range", "within", "at"});
+    else only_keys(p, {"sensor", "tilt_deg", "within_deg", "at"});
+    check.sensor = p.get<std::string>("sensor");
+    if (p.has("at")) {
+      check.at = p.get<double>("at");
+      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("at"), "must be >= 0 s");
+    }
+    if (laser) {
+      check.angle = finite(p, "angle_deg", 0.0) * kDeg;
+      const std::string range = scalar_text(p.child("range"));
+      check.range = range == "inf" ? HUGE_VAL : p.get<double>("range");
+      if (!(check.range > 0.0)) fail(p.child("range"), "must be > 0 m, or inf");
+      check.within = p.get<double>("within");
+      if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0 m");
+    } else {
+      check.tilt = p.get<double>("tilt_deg") * kDeg;
+      check.within_angle = p.get<double>("within_deg") * kDeg;
+      if (!(check.within_angle >= 0.0)) fail(p.child("within_deg"), "must be >= 0 deg");
+    }
   } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint)");
+    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, laser_range, imu_tilt)");
   }
   return check;
 }
@@ -451,6 +474,24 @@ Scenario load_scenario(const std::string& path) {
                      [](const TimelineEvent& a, const TimelineEvent& b) { return a.at < b.at; });
     if (auto checks = root.find("checks")) {
       for (const Params& c : checks->items()) s.checks.push_back(read_check(c));
+    }
+    if (auto sensors = root.find("sensors")) {
+      if (!sensors->is_list()) fail(*sensors, "expected a list of Gazebo <gazebo reference=\"LINK\"> blocks (XML text)");
+      for (const Params& block : sensors->items()) {
+        if (!block.is_scalar()) fail(block, "expected XML text (a YAML block: '- |' then the <gazebo> elements)");
+        SensorBlock b;
+        b.xml = block.as<std::string>();
+        // A block scalar's node starts at its '|' line; the text on the next.
+        const std::string at = block.location();
+        b.file = path;
+        b.line = at.empty() ? 0 : std::atoi(at.substr(at.rfind(':') + 1).c_str()) + 1;
+        s.sensor_blocks.push_back(std::move(b));
+      }
+    }
+    if (root.has("laser_picture_times")) {
+      s.laser_picture_times = root.get<std::vector<double>>("laser_picture_times");
+      for (const double t : s.laser_picture_times)
+        if (!(t >= 0.0) || !std::isfinite(t)) fail(root.child("laser_picture_times"), "times must be >= 0 s");
     }
   } catch (const ScenarioError&) {
     throw;

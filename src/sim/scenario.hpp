@@ -79,6 +79,27 @@
 //     - {gripper: {controller: r_gripper_controller, stalled: true, position: 0.04, within: 0.006}}
 //     # A mechanism joint's position (rad, m) at time `at` (s; default: the end of the run).
 //     - {joint: {name: r_gripper_joint, at: 1.2, position: 0.08, within: 0.002}}
+//     # Sensor readings (the sensor's latest sample at time `at`, default the end): a laser's range
+//     # (m) along the ray nearest `angle_deg` (0: the middle), or `inf` for nothing in range; an
+//     # IMU's tilt (deg: the angle between its z axis and the measured specific force, i.e. how
+//     # far from level it reads).
+//     - {laser_range: {sensor: front_laser, angle_deg: 0, range: 2.0, within: 0.01, at: 1.0}}
+//     - {imu_tilt: {sensor: zed2_imu_sensor, tilt_deg: 0, within_deg: 1, at: 2.0}}
+//   # Sensors added to the robot, as Gazebo <gazebo reference="LINK"> blocks (the robot's own
+//   # <sensor> tags are simulated too; mechsim check lists them). Each entry is XML text.
+//   sensors:
+//     - |
+//       <gazebo reference="base_link">
+//         <sensor type="ray" name="front_laser">
+//           <update_rate>10</update_rate><pose>0.4 0 0.3 0 0 0</pose>
+//           <ray><scan><horizontal><samples>181</samples><min_angle>-1.57</min_angle>
+//             <max_angle>1.57</max_angle></horizontal></scan><range><min>0.1</min><max>10</max></range></ray>
+//         </sensor>
+//       </gazebo>
+//   # The report: a CSV per sensor (sensors/<name>.csv), a plot per IMU (sensors/<name>.png), and
+//   # the laser scans over the world seen from above at these times (laser_scans.png; default: the
+//   # start, the middle and the end). Sensor noise is seeded from `seed`.
+//   laser_picture_times: [0, 5, 10]
 //
 // Unknown keys inside timeline events, world boxes and checks are errors (a misspelt bound
 // must not pass silently). Every error names the file, the line and the parameter path.
@@ -128,7 +149,8 @@ struct TimelineEvent {
 };
 
 struct Check {
-  enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance, Trajectory, Gripper, Joint } kind = Kind::Reach;
+  enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance, Trajectory, Gripper, Joint,
+                    LaserRange, ImuTilt } kind = Kind::Reach;
   std::string text;  // as written, for the report
   double x = 0.0, y = 0.0, within = 0.0, by = 0.0;  // Reach / FinalPose (m, s)
   std::optional<double> lateral_within;            // FinalPose: |y error| (m)
@@ -147,7 +169,18 @@ struct Check {
   std::optional<double> finished_by;                    // Gripper: s after the goal was sent
   std::optional<double> position;                       // Gripper: final gap (m), +- `within`; Joint
   std::string joint;                                    // Joint: mechanism joint name
-  std::optional<double> at;                             // Joint: s (absent: the end)
+  std::optional<double> at;                             // Joint, LaserRange, ImuTilt: s (absent: the end)
+  std::string sensor;                                   // LaserRange, ImuTilt: sensor name
+  double angle = 0.0;                                   // LaserRange: ray direction (rad)
+  double range = 0.0;                                   // LaserRange: m (+inf: nothing in range)
+  double tilt = 0.0;                                    // ImuTilt: rad (+- within_angle)
+};
+
+// One `sensors:` entry: Gazebo sensor blocks as a URDF holds them, and where they start.
+struct SensorBlock {
+  std::string xml;
+  std::string file;
+  int line = 0;  // of the block's first line
 };
 
 // What a run does when the robot leaves the usable ground.
@@ -177,6 +210,8 @@ struct Scenario {
   double record_rate = 50.0;
   std::vector<TimelineEvent> timeline;  // sorted by time
   std::vector<Check> checks;
+  std::vector<SensorBlock> sensor_blocks;    // sensors: added to the robot
+  std::vector<double> laser_picture_times;   // s; empty: start, middle and end
 };
 
 // Reads and validates a scenario file. Errors name the file and the parameter path.

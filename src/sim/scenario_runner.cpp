@@ -12,10 +12,13 @@
 #include "control/params.hpp"
 #include "controllers/drive/rover_drive_ports.hpp"
 #include "description/robot_loader.hpp"
+#include "description/sensor_spec.hpp"
+#include "description/urdf/sensor_reader.hpp"
 #include "sim/report.hpp"
 #include "sim/pose_math.hpp"
 #include "sim/route_follower.hpp"
 #include "sim/scenario_goals.hpp"
+#include "sim/sensor_report.hpp"
 #include "sim/simulation.hpp"
 #include "sim/terrain_watch.hpp"
 
@@ -116,6 +119,15 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": robot: " + e.what());
   }
+  // Sensors the scenario adds (its `sensors:` blocks), read as the URDF's own.
+  for (const SensorBlock& block : s.sensor_blocks) {
+    try {
+      std::vector<description::SensorSpec> specs = description::read_sensor_blocks(block.xml, robot.model, block.file, block.line);
+      robot.model.sensors.insert(robot.model.sensors.end(), specs.begin(), specs.end());
+    } catch (const std::exception& e) {
+      throw ScenarioError(std::string("sensors: ") + e.what());
+    }
+  }
   World world;
   try {
     WorldConfig config = s.world;
@@ -145,6 +157,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   // Initial joint positions (Gazebo's spawn_model -J): set before the first tick, so the
   // controllers starting in it hold them.
   options.initial_joints = s.initial_joints;
+  options.sensor_seed = s.seed;
   try {
     auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options);
     sim->load_and_start(s.start);
@@ -176,6 +189,8 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   }
 
   Recorder recorder(*sim, options.output_dir, goals.trajectory_controllers());
+  SensorReport sensor_report(*sim, s, options.output_dir);
+  sim->add_observer([&](const Simulation& at) { sensor_report.observe(at); });
   const control::StatePort<control::OdometrySnapshot>* odometry = nullptr;
   for (const control::ControllerInfo& info : sim->controllers().list_controllers()) {
     if (auto* p = find_port<control::StatePort<control::OdometrySnapshot>>(sim->controllers().controller(info.name),
@@ -406,6 +421,10 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         out = goals.judge(c);
         result.checks.push_back(out);
         continue;
+      case Check::Kind::LaserRange:
+      case Check::Kind::ImuTilt:
+        result.checks.push_back(sensor_report.judge(c));
+        continue;
       case Check::Kind::Distance:
         out.passed = result.distance >= c.min_distance && result.distance <= c.max_distance;
         std::snprintf(buf, sizeof buf, "distance %.3f m in [%.3f, %.3g] m", result.distance, c.min_distance, c.max_distance);
@@ -419,6 +438,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
                                                   [](const CheckOutcome& c) { return c.passed; });
   if (!options.output_dir.empty()) {
     recorder.close();
+    sensor_report.write(result, options.plots);  // before summary.json, which lists the files
     write_report(s, *sim, recorder, result, options);
   }
   return result;

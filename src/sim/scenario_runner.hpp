@@ -19,6 +19,10 @@
 //                    and max error per joint while active, result code), gripper goals (status,
 //                    time to finish, reached/stalled, gap, effort), real-time factor, checks
 //   path.png, tracking.png, errors.png, trajectory.png (desired vs actual per joint) (gnuplot)
+//   sensors/<name>.csv  a row per sample of each simulated sensor (sim/sensor_report.hpp): laser
+//                    ranges, IMU orientation/rates/acceleration, contact totals, wrenches, ground truth
+//   sensors/<name>.png  per IMU: angular velocity, acceleration and orientation over time
+//   laser_scans.png  the laser scans seen from above over the world at laser_picture_times
 
 #include <atomic>
 #include <functional>

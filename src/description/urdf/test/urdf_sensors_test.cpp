@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "description/robot_summary.hpp"
 #include "description/urdf/sensor_reader.hpp"
 #include "description/urdf/urdf_parser.hpp"
 
@@ -299,6 +300,20 @@ TEST(UrdfSensors, Cc8DescriptionImu) {
   EXPECT_DOUBLE_EQ(std::get<ImuSpec>(imu->details).rate_noise[0].stddev, 0.01);
   EXPECT_EQ(imu->plugin->topic, "zed2/imu/data");
   EXPECT_EQ(imu->link, "zed2_left_camera_frame");
+}
+
+TEST(UrdfSensors, SummaryListsSensorsTopicsAndWhatIsNotSimulated) {
+  const RobotModel m = parse(std::string(kHokuyo) + R"(<gazebo reference="arm"><sensor type="camera" name="cam"/>
+    <sensor type="imu" name="imu"><plugin name="i" filename="libgazebo_ros_imu_sensor.so"><robotNamespace>cc8</robotNamespace>
+      <topicName>zed2/imu/data</topicName><frameName>imu</frameName></plugin></sensor>
+    <sensor type="contact" name="c"><contact><collision>arm_collision</collision></contact>
+      <plugin name="x" filename="libsomething_else.so"/></sensor></gazebo>)");
+  const std::string s = summarize_robot(m);
+  EXPECT_THAT(s, HasSubstr("sensors:         4 (3 simulated)"));
+  EXPECT_THAT(s, HasSubstr("base_laser: ray on base, 20 Hz, topic /base_scan (frame base_laser_link)"));
+  EXPECT_THAT(s, HasSubstr("cam: camera on arm, every step, NOT SIMULATED: camera sensors are not simulated yet"));
+  EXPECT_THAT(s, HasSubstr("imu: imu on arm, every step, topic /cc8/zed2/imu/data (frame imu)"));
+  EXPECT_THAT(s, HasSubstr("c: contact on arm, every step, not published: mechsim has no ROS output for libsomething_else.so"));
 }
 
 }  // namespace
