@@ -17,6 +17,7 @@ const char* SensorSpec::kind_name() const {
     case 3: return "contact";
     case 4: return "force_torque";
     case 5: return "ground_truth";
+    case 6: return "camera";
     default: return "unsupported";
   }
 }

@@ -94,6 +94,46 @@ struct GroundTruthSpec {
   double gaussian_noise = 0.0;  // stddev on the twist (m/s, rad/s); p3d adds none to the pose
 };
 
+// Lens distortion of SDF <camera><distortion> (Brown-Conrady, as Gazebo): radial k1 k2 k3,
+// tangential p1 p2, about `center` (normalised image coordinates, 0.5 0.5 the middle).
+struct DistortionSpec {
+  double k1 = 0.0, k2 = 0.0, k3 = 0.0, p1 = 0.0, p2 = 0.0;
+  double center_x = 0.5, center_y = 0.5;
+  bool active() const { return k1 != 0.0 || k2 != 0.0 || k3 != 0.0 || p1 != 0.0 || p2 != 0.0; }
+};
+
+// One <camera> of a sensor (a multicamera has several). The camera looks along +x of its frame
+// (Gazebo's convention), image up along +z; the optical frame (z forward, x right, y down) is
+// that frame turned by rpy (-pi/2, 0, -pi/2).
+struct CameraLens {
+  std::string name;               // <camera name>
+  Pose pose;                      // X_SC: <camera><pose> in the sensor frame
+  double horizontal_fov = 1.047;  // rad, in (0, pi)
+  int width = 320, height = 240;  // pixels
+  std::string format = "R8G8B8";
+  double near = 0.1, far = 100.0;  // m, 0 < near < far
+  NoiseSpec noise;                 // on each colour channel, in [0, 1] units (Gazebo's image noise)
+  DistortionSpec distortion;
+};
+
+// camera / depth / multicamera / wideanglecamera sensors with their ROS plugin's intrinsics and
+// topics (gazebo_ros_camera, _multicamera, _depth_camera, _openni_kinect, _prosilica).
+struct CameraSpec {
+  std::vector<CameraLens> lenses;  // one; several for a multicamera
+  bool depth = false;              // depth image and point cloud too (type depth)
+  bool wide_angle = false;         // wideanglecamera (rendered as a pinhole, see sensors/README.md)
+  // The plugin's CameraInfo: 0 means "from the image" (focal length from the FOV, principal
+  // point (w+1)/2, (h+1)/2 as gazebo_ros_camera_utils does).
+  double focal_length = 0.0, cx = 0.0, cy = 0.0, cx_prime = 0.0;  // pixels
+  double hack_baseline = 0.0;                                       // m: P[3] = -fx * baseline
+  std::array<double, 5> ros_distortion{};                           // D: k1 k2 t1 t2 k3 as the plugin says
+  double point_cloud_cutoff = 0.4, point_cloud_cutoff_max = 5.0;    // m: depth outside is NaN
+  // ROS names, resolved against <robotNamespace>/<cameraName> (absolute names kept); per lens
+  // for a multicamera (image, info), one set otherwise. Empty: the plugin publishes none.
+  std::vector<std::string> image_topics, info_topics;
+  std::string depth_topic, depth_info_topic, points_topic;
+};
+
 // A sensor mechsim reads but cannot simulate; `reason` says why (mechsim check lists it).
 struct UnsupportedSpec {
   std::string reason;
@@ -124,12 +164,12 @@ struct SensorSpec {
   double update_rate = 0.0;  // Hz of simulated time; 0: every tick
   bool always_on = true;
   std::optional<SensorPlugin> plugin;
-  std::variant<UnsupportedSpec, RaySpec, ImuSpec, ContactSpec, ForceTorqueSpec, GroundTruthSpec> details;
+  std::variant<UnsupportedSpec, RaySpec, ImuSpec, ContactSpec, ForceTorqueSpec, GroundTruthSpec, CameraSpec> details;
   std::string source;  // the file it was declared in
   int line = 0;        // of the <sensor> (or model <plugin>) element
 
   bool simulated() const { return !std::holds_alternative<UnsupportedSpec>(details); }
-  // "ray", "imu", "contact", "force_torque", "ground_truth" or "unsupported".
+  // "ray", "imu", "contact", "force_torque", "ground_truth", "camera" or "unsupported".
   const char* kind_name() const;
   std::string where() const;  // "SOURCE:LINE: sensor 'NAME'"
 };

@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "description/sensor_spec.hpp"
 #include "physics/physics.hpp"
@@ -22,11 +23,14 @@ struct SensorError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+class RenderHub;
+
 // The mutable part of one sensor in one simulation. Sensor types derive their own state.
 struct SensorState {
   virtual ~SensorState() = default;
   Rng rng;
   double last_sample = -1.0;  // s: time of the previous sample, -1 before the first
+  RenderHub* render = nullptr;  // the set's shared renderer, for sensors that render()
 };
 
 class Sensor {
@@ -37,6 +41,12 @@ class Sensor {
   Sensor& operator=(const Sensor&) = delete;
 
   const description::SensorSpec& spec() const { return spec_; }
+
+  // Cameras: sampled through the set's RenderHub (state.render), and only while someone consumes
+  // them (the set starts them disabled).
+  virtual bool renders() const { return false; }
+  // The largest image the sensor renders (pixels), for the shared offscreen buffer.
+  virtual std::pair<int, int> render_size() const { return {0, 0}; }
 
   // A fresh state owning `rng`; constant biases are drawn from it here.
   virtual std::unique_ptr<SensorState> make_state(Rng rng) const = 0;

@@ -18,6 +18,7 @@ std::unique_ptr<Sensor> make_sensor(const description::SensorSpec& spec, const p
   if (std::holds_alternative<ContactSpec>(spec.details)) return std::make_unique<ContactSensor>(spec, model);
   if (std::holds_alternative<ForceTorqueSpec>(spec.details)) return std::make_unique<ForceTorqueSensor>(spec, model);
   if (std::holds_alternative<GroundTruthSpec>(spec.details)) return std::make_unique<GroundTruthSensor>(spec, model);
+  if (std::holds_alternative<CameraSpec>(spec.details)) return std::make_unique<CameraSensor>(spec, model);
   throw SensorError(spec.where() + ": not simulated (" + std::get<UnsupportedSpec>(spec.details).reason + ")");
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // What sensors produce, as plain data (no ROS types): the contents of sensor_msgs/LaserScan and
-// Imu, gazebo_msgs/ContactsState, geometry_msgs/WrenchStamped and nav_msgs/Odometry. Compiles as
+// Imu, gazebo_msgs/ContactsState, geometry_msgs/WrenchStamped, nav_msgs/Odometry, and the
+// images, depth and points behind sensor_msgs/Image, CameraInfo and PointCloud2. Compiles as
 // C++17 too (the ROS layer reads these through its bridge).
 //
 // Units: m, rad, s, N, N m. Frames are named by each sensor's spec (plugin frame).
@@ -81,7 +82,35 @@ struct GroundTruthReading {
   double pose_variance = 0.0, twist_variance = 0.0;  // covariance diagonal
 };
 
-using SensorOutput = std::variant<std::monostate, LaserScan, ImuReading, ContactsReading, WrenchReading, GroundTruthReading>;
+// sensor_msgs/CameraInfo's contents (plumb_bob: D = k1 k2 t1 t2 k3; K, R row-major 3x3; P 3x4).
+struct CameraInfo {
+  int width = 0, height = 0;
+  std::string distortion_model = "plumb_bob";
+  std::array<double, 5> D{};
+  std::array<double, 9> K{}, R{};
+  std::array<double, 12> P{};
+};
+
+// One camera's picture at the sample time, in its optical frame (z forward, x right, y down).
+struct CameraImage {
+  std::string name;  // the <camera>'s name
+  CameraInfo info;
+  std::vector<std::uint8_t> rgb;  // width * height * 3, rows from the top; distortion and noise applied
+  // Depth sensors only (else empty): metres along the optical axis, NaN outside the plugin's
+  // [pointCloudCutoff, pointCloudCutoffMax] (as gazebo_ros_openni_kinect), per pixel like rgb;
+  // points: x y z per pixel in the optical frame (m), NaN where depth is.
+  std::vector<float> depth;
+  std::vector<float> points;
+};
+
+// What a camera, depth or multicamera sensor saw: one image per <camera>. `error` says why
+// nothing could be rendered (no OpenGL context on this machine); the images then stay empty.
+struct CameraReading {
+  std::vector<CameraImage> images;
+  std::string error;
+};
+
+using SensorOutput = std::variant<std::monostate, LaserScan, ImuReading, ContactsReading, WrenchReading, GroundTruthReading, CameraReading>;
 
 // A sensor's latest output and when it was taken.
 struct SensorReading {

@@ -1,5 +1,6 @@
 #include "sensors/sensor_set.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mechsim::sensors {
@@ -43,6 +44,20 @@ SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
   readings_.resize(sensors_.size());
   next_due_.assign(sensors_.size(), 0.0);
   enabled_.assign(sensors_.size(), 1);
+  physics::RenderSettings settings;
+  settings.max_width = settings.max_height = 0;
+  for (std::size_t i = 0; i < sensors_.size(); ++i) {
+    if (!sensors_[i]->renders()) continue;
+    enabled_[i] = 0;
+    const auto [w, h] = sensors_[i]->render_size();
+    settings.max_width = std::max(settings.max_width, w);
+    settings.max_height = std::max(settings.max_height, h);
+  }
+  if (settings.max_width > 0) {
+    hub_ = std::make_unique<RenderHub>(model_, settings);
+    for (std::size_t i = 0; i < sensors_.size(); ++i)
+      if (sensors_[i]->renders()) states_[i]->render = hub_.get();
+  }
 }
 
 std::optional<std::size_t> SensorSet::find(std::string_view name) const {
@@ -62,6 +77,7 @@ void SensorSet::take(std::size_t i, const physics::Physics& physics, double time
 }
 
 std::size_t SensorSet::sample_due(const physics::Physics& physics, double time) {
+  if (hub_) hub_->next_instant();
   std::size_t sampled = 0;
   for (std::size_t i = 0; i < sensors_.size(); ++i) {
     if (!enabled_[i] || time + kTimeSlack < next_due_[i]) continue;
@@ -72,6 +88,7 @@ std::size_t SensorSet::sample_due(const physics::Physics& physics, double time) 
 }
 
 void SensorSet::sample_all(const physics::Physics& physics, double time) {
+  if (hub_) hub_->next_instant();
   for (std::size_t i = 0; i < sensors_.size(); ++i)
     if (enabled_[i]) take(i, physics, time);
 }

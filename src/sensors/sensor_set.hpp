@@ -22,6 +22,7 @@
 
 #include "description/sensor_spec.hpp"
 #include "physics/physics.hpp"
+#include "sensors/render_hub.hpp"
 #include "sensors/sensor.hpp"
 #include "sensors/sensor_output.hpp"
 
@@ -48,6 +49,8 @@ class SensorSet {
   const SensorReading& reading(std::size_t i) const { return readings_[i]; }
   std::optional<std::size_t> find(std::string_view name) const;
   const std::vector<SkippedSensor>& skipped() const { return skipped_; }
+  // The cameras' shared renderer (null without cameras): its error, scene updates, renders.
+  const RenderHub* render_hub() const { return hub_.get(); }
 
   // Samples every enabled sensor that is due at `time` (s). Returns how many were sampled.
   std::size_t sample_due(const physics::Physics& physics, double time);
@@ -56,6 +59,7 @@ class SensorSet {
   void sample_all(const physics::Physics& physics, double time);
 
   // A disabled sensor is not sampled (its reading stays as it was): for sensors nobody consumes.
+  // Cameras start disabled (they render only for a consumer); the others enabled.
   void set_enabled(std::size_t i, bool enabled) { enabled_[i] = enabled; }
   bool enabled(std::size_t i) const { return enabled_[i]; }
 
@@ -69,6 +73,7 @@ class SensorSet {
   std::vector<double> next_due_;  // s
   std::vector<char> enabled_;
   std::vector<SkippedSensor> skipped_;
+  std::unique_ptr<RenderHub> hub_;
 };
 
 }  // namespace mechsim::sensors

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "physics/ray_cast.hpp"
+#include "physics/renderer.hpp"
 #include "sensors/sensor.hpp"
 
 namespace mechsim::sensors {
@@ -77,6 +78,29 @@ class GroundTruthSensor final : public Sensor {
   const description::GroundTruthSpec& gt_;
   std::size_t link_ = 0;
   std::optional<std::size_t> reference_;  // a link; none: the world
+};
+
+// camera / depth / multicamera / wideanglecamera: images rendered on the set's RenderHub.
+class CameraSensor final : public Sensor {
+ public:
+  CameraSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
+  bool renders() const override { return true; }
+  std::pair<int, int> render_size() const override;
+
+  struct Lens {
+    physics::CameraView view;     // intrinsics and clip; X_WC filled at each sample
+    description::Pose X_LC;       // optical frame in the link frame
+    CameraInfo info;
+    std::vector<float> undistort;  // per output pixel: source (u, v) in the rendered image; empty: none
+  };
+  const std::vector<Lens>& lenses() const { return lenses_; }
+
+ private:
+  const description::CameraSpec& camera_;
+  std::size_t link_ = 0;
+  std::vector<Lens> lenses_;
 };
 
 // A state with one NoiseState per noisy channel.

@@ -14,13 +14,12 @@ namespace {
 
 // SDF sensor types mechsim knows but does not simulate, with the reason `mechsim check` gives.
 std::string unsupported_type_reason(const std::string& type) {
-  static const std::set<std::string> cameras = {"camera",  "depth",          "multicamera", "wideanglecamera",
-                                                "thermal", "logical_camera", "rgbd_camera", "depth_camera",
+  static const std::set<std::string> cameras = {"thermal", "logical_camera", "rgbd_camera", "depth_camera",
                                                 "boundingbox_camera", "segmentation_camera"};
   static const std::set<std::string> others = {"gps",  "navsat",           "altimeter",           "magnetometer",
                                                "sonar", "rfid",            "rfidtag",             "wireless_receiver",
                                                "wireless_transmitter", "wireless_transceiver", "air_pressure", "custom"};
-  if (cameras.count(type)) return "camera sensors are not simulated yet";
+  if (cameras.count(type)) return "mechsim simulates camera, depth, multicamera and wideanglecamera, not " + type;
   if (others.count(type)) return "mechsim does not simulate " + type + " sensors";
   return "";
 }
@@ -227,6 +226,9 @@ void read_sensor(const XmlNode& sensor, const std::string& reference, const Robo
     }
     s.details = ft;
     kind = "force_torque";
+  } else if (s.type == "camera" || s.type == "depth" || s.type == "multicamera" || s.type == "wideanglecamera") {
+    s.details = read_camera(sensor, f, s.type);
+    kind = "camera";
   } else if (!s.type.empty()) {
     const std::string reason = unsupported_type_reason(s.type);
     if (reason.empty()) {
@@ -266,6 +268,8 @@ void read_sensor(const XmlNode& sensor, const std::string& reference, const Robo
       // ranges' deviation when the sensor has no <noise> of its own (the PR2's Hokuyos).
       const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
       if (gn > 0.0 && !ray->noise.active()) ray->noise.stddev = gn;
+    } else if (auto* camera = std::get_if<CameraSpec>(&s.details)) {
+      if (is_camera_plugin(plugin.filename)) read_camera_plugin(*camera, plugin, s.type, f, e);
     }
     s.plugin = std::move(plugin);
   }

@@ -53,6 +53,12 @@ RaySpec read_ray(const XmlNode& sensor, const SensorFields& f, bool gpu);
 ImuSpec read_imu(const XmlNode& sensor, const SensorFields& f);
 ContactSpec read_contact(const XmlNode& sensor, const SensorFields& f);
 ForceTorqueSpec read_force_torque(const XmlNode& sensor, const SensorFields& f);
+// camera, depth, multicamera, wideanglecamera (urdf_camera.cpp): the <camera> elements; then the
+// ROS camera plugin's intrinsics and topics (sets plugin.topic and plugin.frame).
+CameraSpec read_camera(const XmlNode& sensor, const SensorFields& f, const std::string& type);
+void read_camera_plugin(CameraSpec& camera, SensorPlugin& plugin, const std::string& type, const SensorFields& f,
+                        const XmlNode& plugin_element);
+bool is_camera_plugin(const std::string& filename);
 
 // Pose from "x y z roll pitch yaw" (fixed axes, URDF/SDF convention).
 Pose pose_from_xyz_rpy(const std::vector<double>& v);

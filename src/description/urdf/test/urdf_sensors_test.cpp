@@ -170,13 +170,12 @@ TEST(UrdfSensors, ReadsContactSensorsAndSensorModelPlugins) {
   EXPECT_EQ(m.plugins.size(), 6u);         // model plugins are all still listed
 }
 
-TEST(UrdfSensors, CamerasAreReadAndNamedAsNotSimulated) {
-  const RobotModel m = parse(R"(<gazebo reference="base"><sensor type="camera" name="cam"><update_rate>15</update_rate>
-    <camera><image><width>64</width><height>48</height></image></camera>
-    <plugin name="c" filename="libgazebo_ros_camera.so"><cameraName>cam</cameraName></plugin></sensor></gazebo>)");
+TEST(UrdfSensors, OtherCameraTypesAreReadAndNamedAsNotSimulated) {
+  const RobotModel m = parse(R"(<gazebo reference="base"><sensor type="thermal" name="cam"><update_rate>15</update_rate>
+    <camera><image><width>64</width><height>48</height></image></camera></sensor></gazebo>)");
   ASSERT_EQ(m.sensors.size(), 1u);
   EXPECT_FALSE(m.sensors[0].simulated());
-  EXPECT_THAT(std::get<UnsupportedSpec>(m.sensors[0].details).reason, HasSubstr("camera"));
+  EXPECT_THAT(std::get<UnsupportedSpec>(m.sensors[0].details).reason, HasSubstr("not thermal"));
 }
 
 // Bad input: each error names the file, the line and the sensor.
@@ -303,7 +302,7 @@ TEST(UrdfSensors, Cc8DescriptionImu) {
 }
 
 TEST(UrdfSensors, SummaryListsSensorsTopicsAndWhatIsNotSimulated) {
-  const RobotModel m = parse(std::string(kHokuyo) + R"(<gazebo reference="arm"><sensor type="camera" name="cam"/>
+  const RobotModel m = parse(std::string(kHokuyo) + R"(<gazebo reference="arm"><sensor type="thermal" name="cam"/>
     <sensor type="imu" name="imu"><plugin name="i" filename="libgazebo_ros_imu_sensor.so"><robotNamespace>cc8</robotNamespace>
       <topicName>zed2/imu/data</topicName><frameName>imu</frameName></plugin></sensor>
     <sensor type="contact" name="c"><contact><collision>arm_collision</collision></contact>
@@ -311,7 +310,7 @@ TEST(UrdfSensors, SummaryListsSensorsTopicsAndWhatIsNotSimulated) {
   const std::string s = summarize_robot(m);
   EXPECT_THAT(s, HasSubstr("sensors:         4 (3 simulated)"));
   EXPECT_THAT(s, HasSubstr("base_laser: ray on base, 20 Hz, topic /base_scan (frame base_laser_link)"));
-  EXPECT_THAT(s, HasSubstr("cam: camera on arm, every step, NOT SIMULATED: camera sensors are not simulated yet"));
+  EXPECT_THAT(s, HasSubstr("cam: thermal on arm, every step, NOT SIMULATED: mechsim simulates camera, depth, multicamera and wideanglecamera, not thermal"));
   EXPECT_THAT(s, HasSubstr("imu: imu on arm, every step, topic /cc8/zed2/imu/data (frame imu)"));
   EXPECT_THAT(s, HasSubstr("c: contact on arm, every step, not published: mechsim has no ROS output for libsomething_else.so"));
 }
