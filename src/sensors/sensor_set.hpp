@@ -62,6 +62,8 @@ class SensorSet {
   // Cameras start disabled (they render only for a consumer); the others enabled.
   void set_enabled(std::size_t i, bool enabled) { enabled_[i] = enabled; }
   bool enabled(std::size_t i) const { return enabled_[i]; }
+  // Samples sensor i at the next sample_due(), enabled or not, due or not (a report's picture).
+  void request(std::size_t i) { requested_[i] = 1; }
 
  private:
   void take(std::size_t i, const physics::Physics& physics, double time);
@@ -72,6 +74,7 @@ class SensorSet {
   std::vector<SensorReading> readings_;
   std::vector<double> next_due_;  // s
   std::vector<char> enabled_;
+  std::vector<char> requested_;
   std::vector<SkippedSensor> skipped_;
   std::unique_ptr<RenderHub> hub_;
 };

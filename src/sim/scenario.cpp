@@ -493,6 +493,12 @@ Scenario load_scenario(const std::string& path) {
       for (const double t : s.laser_picture_times)
         if (!(t >= 0.0) || !std::isfinite(t)) fail(root.child("laser_picture_times"), "times must be >= 0 s");
     }
+    if (root.has("camera_picture_times")) {
+      s.camera_picture_times = root.get<std::vector<double>>("camera_picture_times");
+      for (const double t : s.camera_picture_times)
+        if (!(t >= 0.0) || !std::isfinite(t) || t > s.duration)
+          fail(root.child("camera_picture_times"), "times must be within the run (0 to duration s)");
+    }
   } catch (const ScenarioError&) {
     throw;
   } catch (const std::exception& e) {

@@ -100,6 +100,9 @@
 //   # the laser scans over the world seen from above at these times (laser_scans.png; default: the
 //   # start, the middle and the end). Sensor noise is seeded from `seed`.
 //   laser_picture_times: [0, 5, 10]
+//   # Every camera of the robot renders once at these times (none by default: cameras render
+//   # only when asked); frames in cameras/, side by side in camera_sheet.png.
+//   camera_picture_times: [0.5, 10]
 //
 // Unknown keys inside timeline events, world boxes and checks are errors (a misspelt bound
 // must not pass silently). Every error names the file, the line and the parameter path.
@@ -212,6 +215,7 @@ struct Scenario {
   std::vector<Check> checks;
   std::vector<SensorBlock> sensor_blocks;    // sensors: added to the robot
   std::vector<double> laser_picture_times;   // s; empty: start, middle and end
+  std::vector<double> camera_picture_times;  // s; empty: no camera pictures
 };
 
 // Reads and validates a scenario file. Errors name the file and the parameter path.

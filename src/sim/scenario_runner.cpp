@@ -18,6 +18,7 @@
 #include "sim/pose_math.hpp"
 #include "sim/route_follower.hpp"
 #include "sim/scenario_goals.hpp"
+#include "sim/camera_report.hpp"
 #include "sim/sensor_report.hpp"
 #include "sim/simulation.hpp"
 #include "sim/terrain_watch.hpp"
@@ -191,6 +192,9 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   Recorder recorder(*sim, options.output_dir, goals.trajectory_controllers());
   SensorReport sensor_report(*sim, s, options.output_dir);
   sim->add_observer([&](const Simulation& at) { sensor_report.observe(at); });
+  CameraReport camera_report(*sim, s, options.output_dir);
+  sim->add_observer([&](const Simulation& at) { camera_report.observe(at); });
+  sim->add_control_observer([&](const Simulation&) { camera_report.before_step(*sim); });
   const control::StatePort<control::OdometrySnapshot>* odometry = nullptr;
   for (const control::ControllerInfo& info : sim->controllers().list_controllers()) {
     if (auto* p = find_port<control::StatePort<control::OdometrySnapshot>>(sim->controllers().controller(info.name),
@@ -439,6 +443,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   if (!options.output_dir.empty()) {
     recorder.close();
     sensor_report.write(result, options.plots);  // before summary.json, which lists the files
+    camera_report.write(result);
     write_report(s, *sim, recorder, result, options);
   }
   return result;

@@ -1,5 +1,6 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -44,6 +45,13 @@ physics::BuildOptions build_options(const World& world, const SimulationOptions&
   return b;
 }
 
+// Cameras draw a height field from render tiles at the detail each view needs (physics/renderer.hpp).
+bool has_cameras(const description::RobotModel& robot, const SimulationOptions& options) {
+  if (!options.sensors) return false;
+  return std::any_of(robot.sensors.begin(), robot.sensors.end(),
+                     [](const description::SensorSpec& s) { return std::holds_alternative<description::CameraSpec>(s.details); });
+}
+
 }  // namespace
 
 void fill_description_params(const control::Params& controllers, const description::RobotModel& robot) {
@@ -80,7 +88,9 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   const auto ms_since = [](Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   };
-  physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
+  physics::BuildOptions build = build_options(world_, options_);
+  build.render_terrain = has_cameras(robot_, options_);
+  physics_model_ = physics::PhysicsModel::build(robot_, build);
   startup_times_.mjcf_ms = physics_model_->build_times().mjcf_ms;
   startup_times_.compile_ms = physics_model_->build_times().compile_ms;
   auto t0 = Clock::now();
