@@ -28,7 +28,8 @@ double next_due_after(double rate, double time) {
 }  // namespace
 
 SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
-                     std::shared_ptr<const physics::PhysicsModel> model, std::uint64_t seed)
+                     std::shared_ptr<const physics::PhysicsModel> model, std::uint64_t seed,
+                     RenderModelFactory render_model)
     : model_(std::move(model)) {
   for (const description::SensorSpec& spec : specs) {
     if (!spec.simulated()) {
@@ -55,7 +56,7 @@ SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
     settings.max_height = std::max(settings.max_height, h);
   }
   if (settings.max_width > 0) {
-    hub_ = std::make_unique<RenderHub>(model_, settings);
+    hub_ = std::make_unique<RenderHub>(model_, settings, std::move(render_model));
     for (std::size_t i = 0; i < sensors_.size(); ++i)
       if (sensors_[i]->renders()) states_[i]->render = hub_.get();
   }

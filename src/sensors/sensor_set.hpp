@@ -39,8 +39,9 @@ class SensorSet {
   SensorSet() = default;
   // Builds every simulated spec against `model` (make_sensor); specs that cannot be simulated go
   // to skipped(). Throws SensorError for a spec that claims to be simulated but cannot be built.
+  // Cameras draw `render_model()` when given (built on their first render), else `model`.
   SensorSet(const std::vector<description::SensorSpec>& specs, std::shared_ptr<const physics::PhysicsModel> model,
-            std::uint64_t seed);
+            std::uint64_t seed, RenderModelFactory render_model = {});
 
   std::size_t size() const { return sensors_.size(); }
   bool empty() const { return sensors_.empty(); }

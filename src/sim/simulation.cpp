@@ -45,9 +45,9 @@ physics::BuildOptions build_options(const World& world, const SimulationOptions&
   return b;
 }
 
-// Cameras draw a height field from render tiles at the detail each view needs (physics/renderer.hpp).
-bool has_cameras(const description::RobotModel& robot, const SimulationOptions& options) {
-  if (!options.sensors) return false;
+// Cameras draw a height field from render tiles at the detail each view needs (physics/renderer.hpp),
+// in a model of their own (sensors/render_hub.hpp says why).
+bool has_cameras(const description::RobotModel& robot) {
   return std::any_of(robot.sensors.begin(), robot.sensors.end(),
                      [](const description::SensorSpec& s) { return std::holds_alternative<description::CameraSpec>(s.details); });
 }
@@ -88,9 +88,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   const auto ms_since = [](Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   };
-  physics::BuildOptions build = build_options(world_, options_);
-  build.render_terrain = has_cameras(robot_, options_);
-  physics_model_ = physics::PhysicsModel::build(robot_, build);
+  physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
   startup_times_.mjcf_ms = physics_model_->build_times().mjcf_ms;
   startup_times_.compile_ms = physics_model_->build_times().compile_ms;
   auto t0 = Clock::now();
@@ -182,7 +180,14 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
   startup_times_.mechanism_ms = ms_since(t0);
   if (options_.sensors) {
-    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed);
+    sensors::RenderModelFactory render_model;
+    if (has_cameras(robot_) && world_.spec.terrain) {
+      render_model = [robot = robot_, b = build_options(world_, options_)]() mutable {
+        b.render_terrain = true;
+        return physics::PhysicsModel::build(robot, b);
+      };
+    }
+    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, std::move(render_model));
     sensors_.sample_all(*physics_, time());
   }
 }

@@ -238,13 +238,13 @@ TEST(GroundTruthSensor, PoseOfALinkInTheWorldAndInAnotherLink) {
   EXPECT_NEAR(rel.pose.position.z, -0.5, 1e-6);
 }
 
-TEST(SensorSet, CamerasAreSkippedWithTheirReason) {
-  const auto robot = test::parse(test::robot_urdf(R"(<gazebo reference="head"><sensor type="camera" name="cam"/></gazebo>)"));
+TEST(SensorSet, UnsimulatedCamerasAreSkippedWithTheirReason) {
+  const auto robot = test::parse(test::robot_urdf(R"(<gazebo reference="head"><sensor type="thermal" name="cam"/></gazebo>)"));
   SensorSet set(robot.sensors, test::build(robot, 0.0), 1);
   EXPECT_EQ(set.size(), 0u);
   ASSERT_EQ(set.skipped().size(), 1u);
   EXPECT_EQ(set.skipped()[0].spec.name, "cam");
-  EXPECT_THAT(set.skipped()[0].reason, HasSubstr("camera"));
+  EXPECT_THAT(set.skipped()[0].reason, HasSubstr("not thermal"));
 }
 
 }  // namespace
