@@ -19,13 +19,15 @@ std::string time_label(double t) {
   return b;
 }
 
-// Depth as grey: near white, far (and nothing) black, on a 1/z scale.
-std::vector<std::uint8_t> depth_picture(const sensors::CameraImage& im, double near) {
+// Depth as grey on a log scale over the kept range [lo, hi]: lo white, hi dark grey, nothing black.
+std::vector<std::uint8_t> depth_picture(const sensors::CameraImage& im, double lo, double hi) {
   std::vector<std::uint8_t> out(im.depth.size() * 3, 0);
+  lo = std::max(lo, 1e-3);
+  const double span = std::log(std::max(hi, 2 * lo) / lo);
   for (std::size_t k = 0; k < im.depth.size(); ++k) {
     const float z = im.depth[k];
     if (!std::isfinite(z) || z <= 0.0f) continue;
-    const double g = std::clamp(255.0 * std::min(1.0, 4.0 * near / z), 0.0, 255.0);
+    const double g = std::clamp(255.0 - 215.0 * std::log(z / lo) / span, 40.0, 255.0);
     out[3 * k] = out[3 * k + 1] = out[3 * k + 2] = static_cast<std::uint8_t>(g);
   }
   return out;
@@ -93,7 +95,7 @@ void CameraReport::save(const Simulation& sim, std::size_t i, double picture_tim
       files_.push_back(base + ".png");
       if (!im.depth.empty()) {
         physics::save_rgb_png(std::filesystem::path(dir_) / (base + "_depth.png"), w, h,
-                              depth_picture(im, spec.lenses[std::min(k, spec.lenses.size() - 1)].near));
+                              depth_picture(im, spec.point_cloud_cutoff, spec.point_cloud_cutoff_max));
         files_.push_back(base + "_depth.png");
       }
     } catch (const std::exception& e) {

@@ -1,7 +1,7 @@
 #pragma once
 // The cameras' part of a scenario's report: at each of `camera_picture_times` every camera of the
 // robot renders once (cameras nobody asks for never render), its frames are saved as PNG
-// (cameras/<sensor>[_<camera>]_<t>s.png, depth sensors also ..._depth.png, near = white), and
+// (cameras/<sensor>[_<camera>]_<t>s.png, depth sensors also ..._depth.png, near white, log scale over the kept range), and
 // camera_sheet.png puts them side by side (a row per time).
 
 #include <cstdint>
