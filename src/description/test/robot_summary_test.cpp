@@ -24,7 +24,7 @@ TEST(RobotSummary, CountsJointsTransmissionsAndPlugins) {
     <joint name="w1"><hardwareInterface>EffortJointInterface</hardwareInterface></joint>
     <actuator name="m1"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>
   <gazebo><plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so"><robotNamespace>/rover</robotNamespace></plugin></gazebo>
-  <gazebo reference="camera"><sensor name="c" type="camera"><plugin name="cam" filename="libcam.so"/></sensor></gazebo>
+  <gazebo reference="camera"><sensor name="c" type="camera"><camera/><plugin name="cam" filename="libcam.so"/></sensor></gazebo>
 </robot>)";
   const std::string s = summarize_robot(parse_urdf_string(urdf, "rover.urdf", UrdfOptions{}));
   EXPECT_THAT(s, HasSubstr("robot 'rover' (rover.urdf)"));

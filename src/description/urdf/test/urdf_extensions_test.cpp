@@ -220,7 +220,7 @@ TEST(UrdfGazebo, ReadsModelAndSensorPlugins) {
     </plugin>
   </gazebo>
   <gazebo reference="l2">
-    <sensor type="camera" name="cam">
+    <sensor type="camera" name="cam"><camera/>
       <plugin name="cam_controller" filename="libgazebo_ros_camera.so"><frameName>l2</frameName></plugin>
     </sensor>
   </gazebo>)"),
