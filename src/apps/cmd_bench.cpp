@@ -5,7 +5,6 @@
 
 #include <sys/resource.h>
 
-#include <chrono>
 #include <ctime>
 #include <cstdio>
 #include <iostream>
@@ -30,9 +29,7 @@ struct BenchArgs {
   std::string integrator = physics::integrator_name(physics::BuildOptions{}.integrator);
 };
 
-using Clock = std::chrono::steady_clock;
-
-double ms_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+using physics::StageTime;
 
 // Peak resident memory of this process so far (MB).
 double peak_memory_mb() {
@@ -41,21 +38,28 @@ double peak_memory_mb() {
   return static_cast<double>(u.ru_maxrss) / 1024.0;  // ru_maxrss: kB on Linux
 }
 
-void print_startup(const sim::Simulation& sim, double description_ms, double world_ms, double controllers_ms,
-                   double first_tick_ms, double total_ms) {
+struct BenchStartup {
+  StageTime description, world, controllers, first_tick, total;
+};
+
+void print_startup(const sim::Simulation& sim, const BenchStartup& b) {
   const sim::Simulation::StartupTimes& t = sim.startup_times();
   const physics::ArenaEstimate& a = sim.physics().model().arena();
-  std::printf("start-up, wall-clock ms (description -> first tick):\n");
-  std::printf("  description %8.1f  (xacro, URDF)\n", description_ms);
-  std::printf("  world       %8.1f  (terrain: generated or read)\n", world_ms);
-  std::printf("  MJCF        %8.1f  (body plan, meshes, MJCF)\n", t.mjcf_ms);
-  std::printf("  compile     %8.1f  (MuJoCo compiler, arena estimate)\n", t.compile_ms);
-  std::printf("  data        %8.1f  (MuJoCo data: arena of %d contacts, %d constraint rows)\n", t.data_ms,
-              a.size.contacts, a.size.constraints);
-  std::printf("  controllers %8.1f  (mechanism, controller manager; controllers loaded and started)\n",
-              t.mechanism_ms + controllers_ms);
-  std::printf("  first tick  %8.1f\n", first_tick_ms);
-  std::printf("  total       %8.1f\n", total_ms);
+  StageTime controllers = t.mechanism;
+  controllers += b.controllers;
+  std::printf("start-up (description -> first tick):  wall ms   CPU ms\n");
+  const auto row = [](const char* stage, const StageTime& s, const std::string& what) {
+    std::printf("  %-12s %8.1f %8.1f  %s\n", stage, s.wall_ms, s.cpu_ms, what.c_str());
+  };
+  row("description", b.description, "(xacro, URDF)");
+  row("world", b.world, "(terrain: generated or read)");
+  row("MJCF", t.mjcf, "(body plan, meshes, MJCF)");
+  row("compile", t.compile, "(MuJoCo compiler, arena estimate)");
+  row("data", t.data, "(MuJoCo data: arena of " + std::to_string(a.size.contacts) + " contacts, " +
+                          std::to_string(a.size.constraints) + " constraint rows)");
+  row("controllers", controllers, "(mechanism, controller manager; controllers loaded and started)");
+  row("first tick", b.first_tick, "");
+  row("total", b.total, "");
   std::printf("peak memory at the first tick: %.1f MB (getrusage maxrss)\n", peak_memory_mb());
   if (a.from_options) {
     std::printf("arena: %d contacts, %d constraint rows (given)\n", a.size.contacts, a.size.constraints);
@@ -69,9 +73,10 @@ void print_startup(const sim::Simulation& sim, double description_ms, double wor
 }
 
 void run(const BenchArgs& args) {
-  const Clock::time_point t_start = Clock::now();
+  BenchStartup startup;
+  physics::StageTimer total, timer;
   description::RobotModel robot = description::load_robot(args.robot.file, load_options(args.robot)).model;
-  const Clock::time_point t_description = Clock::now();
+  startup.description = timer.lap();
   control::Params params;
   std::vector<std::string> start = args.start;
   const bool usual_set = start.empty();
@@ -88,11 +93,11 @@ void run(const BenchArgs& args) {
   sim::SimulationOptions options;
   options.spawn.z = args.spawn_z;
   options.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
-  const Clock::time_point t_world_start = Clock::now();
+  startup.controllers = timer.lap();  // the controllers' YAML
   const sim::World world = sim::make_world(world_config);
-  const Clock::time_point t_world = Clock::now();
+  startup.world = timer.lap();
   sim::Simulation sim(std::move(robot), world, params, options);
-  const Clock::time_point t_sim = Clock::now();
+  timer.restart();  // its stages: Simulation::startup_times()
   // Load everything asked for; start what does not conflict first come first served.
   std::vector<std::string> loaded;
   for (const std::string& name : start) {
@@ -110,14 +115,12 @@ void run(const BenchArgs& args) {
   std::printf("controllers running (%s):", usual_set ? "default: the widest conflict-free set" : "--start");
   for (const std::string& name : s.starting) std::printf(" %s", name.c_str());
   std::printf("\n");
-  const Clock::time_point t_controllers = Clock::now();
+  startup.controllers += timer.lap();
   const sim::TickResult first = sim.step();
-  const Clock::time_point t_first = Clock::now();
+  startup.first_tick = timer.lap();
+  startup.total = total.lap();
   if (!first) throw UserError("the first tick failed: " + first.error);
-  // The controllers' YAML is read between the description and the world: counted with the controllers.
-  print_startup(sim, ms_between(t_start, t_description), ms_between(t_world_start, t_world),
-                ms_between(t_description, t_world_start) + ms_between(t_sim, t_controllers), ms_between(t_controllers, t_first),
-                ms_between(t_start, t_first));
+  print_startup(sim, startup);
   sim.run_for(0.2);
 
   const auto ticks = static_cast<long>(args.seconds / sim.period());

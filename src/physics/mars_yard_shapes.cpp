@@ -18,6 +18,13 @@ GradientNoise::GradientNoise(std::mt19937_64& rng, double wavelength, double siz
   }
 }
 
+namespace {
+
+// Quintic fade: continuous curvature, so slopes have no creases at lattice lines.
+double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+
+}  // namespace
+
 double GradientNoise::operator()(double x, double y) const {
   const double u = std::clamp((x - x0_) / wavelength_, 0.0, static_cast<double>(nx_ - 2));
   const double v = std::clamp((y - y0_) / wavelength_, 0.0, static_cast<double>(ny_ - 2));
@@ -28,12 +35,45 @@ double GradientNoise::operator()(double x, double y) const {
     const auto& g = gradients_[(j + dj) * nx_ + (i + di)];
     return g[0] * (fx - static_cast<double>(di)) + g[1] * (fy - static_cast<double>(dj));
   };
-  // Quintic fade: continuous curvature, so slopes have no creases at lattice lines.
-  auto fade = [](double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); };
   const double sx = fade(fx), sy = fade(fy);
   const double south = dot(0, 0) + (dot(1, 0) - dot(0, 0)) * sx;
   const double north = dot(0, 1) + (dot(1, 1) - dot(0, 1)) * sx;
   return south + (north - south) * sy;
+}
+
+GradientNoise::Columns GradientNoise::columns(const std::vector<double>& xs) const {
+  Columns c;
+  c.i.resize(xs.size());
+  c.fx.resize(xs.size());
+  c.sx.resize(xs.size());
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const double u = std::clamp((xs[k] - x0_) / wavelength_, 0.0, static_cast<double>(nx_ - 2));
+    c.i[k] = std::min(static_cast<std::size_t>(u), nx_ - 2);
+    c.fx[k] = u - static_cast<double>(c.i[k]);
+    c.sx[k] = fade(c.fx[k]);
+  }
+  return c;
+}
+
+void GradientNoise::add_row(const Columns& c, double y, double amplitude, double* acc) const {
+  // Exactly operator()'s arithmetic, with the y terms taken out of the loop.
+  const double v = std::clamp((y - y0_) / wavelength_, 0.0, static_cast<double>(ny_ - 2));
+  const auto j = std::min(static_cast<std::size_t>(v), ny_ - 2);
+  const double fy = v - static_cast<double>(j), sy = fade(fy);
+  const double fy0 = fy - 0.0, fy1 = fy - 1.0;
+  const std::array<double, 2>* south_row = gradients_.data() + j * nx_;
+  const std::array<double, 2>* north_row = south_row + nx_;
+  for (std::size_t k = 0; k < c.i.size(); ++k) {
+    const std::size_t i = c.i[k];
+    const double fx0 = c.fx[k] - 0.0, fx1 = c.fx[k] - 1.0, sx = c.sx[k];
+    const double d00 = south_row[i][0] * fx0 + south_row[i][1] * fy0;
+    const double d10 = south_row[i + 1][0] * fx1 + south_row[i + 1][1] * fy0;
+    const double d01 = north_row[i][0] * fx0 + north_row[i][1] * fy1;
+    const double d11 = north_row[i + 1][0] * fx1 + north_row[i + 1][1] * fy1;
+    const double south = d00 + (d10 - d00) * sx;
+    const double north = d01 + (d11 - d01) * sx;
+    acc[k] += amplitude * (south + (north - south) * sy);
+  }
 }
 
 FractalNoise::FractalNoise(std::mt19937_64& rng, double longest, double shortest, double hurst,
@@ -50,6 +90,18 @@ double FractalNoise::operator()(double x, double y) const {
   return z;
 }
 
+FractalNoise::Columns FractalNoise::columns(const std::vector<double>& xs) const {
+  Columns c;
+  for (const GradientNoise& o : octaves_) c.push_back(o.columns(xs));
+  return c;
+}
+
+void FractalNoise::row(const Columns& columns, double y, std::vector<double>& out) const {
+  // Octave by octave over the row: each sample still sums its octaves in operator()'s order.
+  std::fill(out.begin(), out.end(), 0.0);
+  for (std::size_t k = 0; k < octaves_.size(); ++k) octaves_[k].add_row(columns[k], y, amplitudes_[k], out.data());
+}
+
 PolylineHit closest_on_polyline(const std::vector<std::array<double, 2>>& line, double x,
                                 double y) {
   PolylineHit best{INFINITY, 0.0};
@@ -63,6 +115,41 @@ PolylineHit closest_on_polyline(const std::vector<std::array<double, 2>>& line, 
     const double len = std::sqrt(len2);
     if (d < best.distance) best = {d, arc + t * len};
     arc += len;
+  }
+  return best;
+}
+
+PolylineNearest::PolylineNearest(const std::vector<std::array<double, 2>>& line) {
+  double arc = 0.0;
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+    Segment g;
+    g.ax = line[k][0];
+    g.ay = line[k][1];
+    g.dx = line[k + 1][0] - g.ax;
+    g.dy = line[k + 1][1] - g.ay;
+    g.len2 = g.dx * g.dx + g.dy * g.dy;
+    g.len = std::sqrt(g.len2);
+    g.arc = arc;
+    g.x_lo = std::min(line[k][0], line[k + 1][0]);
+    g.x_hi = std::max(line[k][0], line[k + 1][0]);
+    g.y_lo = std::min(line[k][1], line[k + 1][1]);
+    g.y_hi = std::max(line[k][1], line[k + 1][1]);
+    segments_.push_back(g);
+    arc += g.len;
+  }
+}
+
+PolylineHit PolylineNearest::operator()(double x, double y) const {
+  PolylineHit best{INFINITY, 0.0};
+  for (const Segment& g : segments_) {
+    // The distance to the segment is at least that to its bounding box; a segment that cannot
+    // come strictly closer (closest_on_polyline keeps the first of equals) is skipped. The slack
+    // covers the rounding of this bound.
+    const double bx = std::max({0.0, g.x_lo - x, x - g.x_hi}), by = std::max({0.0, g.y_lo - y, y - g.y_hi});
+    if (bx * bx + by * by > best.distance * best.distance * (1.0 + 1e-9)) continue;
+    const double t = g.len2 > 0.0 ? std::clamp(((x - g.ax) * g.dx + (y - g.ay) * g.dy) / g.len2, 0.0, 1.0) : 0.0;
+    const double d = std::hypot(x - (g.ax + t * g.dx), y - (g.ay + t * g.dy));
+    if (d < best.distance) best = {d, g.arc + t * g.len};
   }
   return best;
 }

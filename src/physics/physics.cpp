@@ -101,6 +101,7 @@ void Physics::spawn_state() {
 double Physics::time() const { return data_->d->time; }
 
 StepStatus Physics::step() {
+  ensure_constants();
   const std::vector<JointInfo>& joints = model_->joints();
   {
     const mjModel* m = data_->m;
@@ -192,12 +193,19 @@ void Physics::set_armature(std::size_t j, double armature) {
     throw std::invalid_argument("armature of joint '" + info.name + "' must be finite and >= 0, got " +
                                 std::to_string(armature));
   }
+  data_->m->dof_armature[info.dof_adr] = armature;
+  // The constraint solver scales its softness by the inverse inertias at qpos0 (dof_invweight0 and
+  // friends): they are recomputed before they are next used (ensure_constants), once for any
+  // number of armatures set in a row (the PR2 sets several at start-up).
+  data_->constants_stale = true;
+  data_->stale = true;
+}
+
+void Physics::ensure_constants() {
+  if (!data_->constants_stale) return;
   mjModel* m = data_->m;
   mjData* d = data_->d;
-  m->dof_armature[info.dof_adr] = armature;
-  // The constraint solver scales its softness by the inverse inertias at qpos0 (dof_invweight0 and
-  // friends); recompute them, or the joint's limits and equalities go soft by the ratio of the
-  // new inertia to the old. mj_setConst works on d at qpos0: keep the state around it.
+  // mj_setConst works on d at qpos0: keep the state around it.
   const std::vector<mjtNum> qpos(d->qpos, d->qpos + m->nq), qvel(d->qvel, d->qvel + m->nv),
       act(d->act, d->act + m->na), ctrl(d->ctrl, d->ctrl + m->nu), warm(d->qacc_warmstart, d->qacc_warmstart + m->nv);
   const mjtNum time = d->time;
@@ -208,6 +216,7 @@ void Physics::set_armature(std::size_t j, double armature) {
   copy_n(d->ctrl, ctrl.data(), m->nu);
   copy_n(d->qacc_warmstart, warm.data(), m->nv);
   d->time = time;
+  data_->constants_stale = false;
   data_->stale = true;
 }
 
@@ -235,6 +244,7 @@ void Physics::set_mode(std::size_t j, JointMode mode, ServoGains gains) {
   if (info.actuator < 0) return;
   mjModel* m = data_->m;
   if (gains.kp <= 0.0 && gains.kv <= 0.0 && mode != JointMode::Effort) {
+    ensure_constants();  // dof_M0
     // Critically damped 10 Hz servo on the joint's inertia at the spawn configuration.
     const double inertia = m->dof_M0[info.dof_adr] + m->dof_armature[info.dof_adr];
     const double wn = 2.0 * M_PI * 10.0;
@@ -306,6 +316,7 @@ void Physics::set_spawn_pose(const Pose& X_WB) {
   // softness), as if the model had been compiled at this pose.
   mj_resetData(m, data_->d);
   mj_setConst(m, data_->d);
+  data_->constants_stale = false;
   reset();
 }
 

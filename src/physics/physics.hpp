@@ -153,7 +153,8 @@ class Physics {
   // Rotor inertia reflected onto the joint (MuJoCo armature: kg m^2 for hinges, kg for slides),
   // added to the joint's diagonal of the mass matrix; this instance only, kept over reset().
   // For drives whose motor the description does not model (the PR2 gripper's fingers). Not for
-  // the control loop: it recomputes the model's constants at qpos0 (mj_setConst) and allocates.
+  // the control loop: the model's constants at qpos0 are recomputed (mj_setConst, allocating)
+  // before the next step, once for any number of armatures set in a row.
   // Throws std::invalid_argument on a negative or non-finite value.
   void set_armature(std::size_t joint, double armature);
   double armature(std::size_t joint) const;
@@ -225,6 +226,7 @@ class Physics {
 
  private:
   void refresh_kinematics() const;
+  void ensure_constants();
   void save_state();
   void restore_saved_state();
   void spawn_state();

@@ -38,6 +38,7 @@ bool Physics::compute_in_arena(bool step) {
 }
 
 void Physics::forward() {
+  ensure_constants();
   // mj_forward also leaves the solver's warm start for the next step (qacc_warmstart): computed
   // with dropped contacts, it would start that step elsewhere. So it too grows the arena.
   save_state();

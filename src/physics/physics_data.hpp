@@ -17,6 +17,7 @@ struct Physics::Data {
   mjModel* m = nullptr;  // private copy: actuator gains are per instance
   mjData* d = nullptr;
   mutable bool stale = true;  // kinematics lag the state (after a step or a state write)
+  bool constants_stale = false;  // the model changed (armature): mj_setConst is due
   std::vector<JointMode> modes;
   std::vector<ServoGains> gains;
   std::vector<std::string> geom_links;  // URDF link (or world geom) per MuJoCo geom

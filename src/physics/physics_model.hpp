@@ -11,6 +11,7 @@
 
 #include "description/robot_model.hpp"
 #include "physics/physics_options.hpp"
+#include "physics/stage_timer.hpp"
 
 namespace mechsim::physics {
 
@@ -67,10 +68,10 @@ struct ArenaEstimate {
   bool from_options = false;  // size was given by BuildOptions::arena
 };
 
-// Wall-clock time of PhysicsModel::build's stages (ms).
+// Time of PhysicsModel::build's stages.
 struct BuildTimes {
-  double mjcf_ms = 0.0;     // body plan, meshes read and converted, MJCF written
-  double compile_ms = 0.0;  // MuJoCo's compiler (mj_loadXML from memory), terrain, arena estimate
+  StageTime mjcf;     // body plan, meshes read and converted, MJCF written
+  StageTime compile;  // MuJoCo's compiler (mj_loadXML from memory), terrain, arena estimate
 };
 
 class PhysicsModel {

@@ -57,7 +57,7 @@ struct WorldBox {
 struct WorldSpec {
   enum class Kind { Empty, Heightmap };
   Kind kind = Kind::Empty;        // Empty: ground plane z = 0 and gravity
-  std::optional<Heightmap> terrain;  // required when kind == Heightmap
+  SharedHeightmap terrain;         // required when kind == Heightmap
   double gravity = 9.81;           // m/s^2 along -z of the world
   bool ground_plane = true;        // an infinite plane at z = 0 (Empty only)
   std::vector<WorldBox> boxes;     // objects in the world (any kind of world)

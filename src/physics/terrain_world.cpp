@@ -22,7 +22,7 @@ WorldTerrain load_world_terrain(const std::string& world, const WorldTerrainOpti
   }
   if (world == "mars_yard_2024") {
     terrain.yard = generate_mars_yard(options.seed.value_or(kMarsYardDefaultSeed));
-    terrain.heightmap = terrain.yard->heightmap;
+    terrain.heightmap = std::move(terrain.yard->heightmap);  // one copy of 1.8 MB, not two
     terrain.usable = terrain.yard->usable;
     return terrain;
   }

@@ -22,7 +22,7 @@ struct WorldTerrainOptions {
 struct WorldTerrain {
   std::string name;                  // as asked for
   std::optional<Heightmap> heightmap;  // none for "empty"
-  std::optional<MarsYard> yard;        // the generated yard, with its features
+  std::optional<MarsYard> yard;        // the generated yard's features (its heights are in `heightmap`)
   std::optional<Region> usable;        // region to take statistics over (the yard's usable ground)
 };
 

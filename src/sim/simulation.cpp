@@ -84,17 +84,12 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   if (!(options_.real_time_factor >= 0.0)) {
     throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
   }
-  using Clock = std::chrono::steady_clock;
-  const auto ms_since = [](Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  };
   physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
-  startup_times_.mjcf_ms = physics_model_->build_times().mjcf_ms;
-  startup_times_.compile_ms = physics_model_->build_times().compile_ms;
-  auto t0 = Clock::now();
+  startup_times_.mjcf = physics_model_->build_times().mjcf;
+  startup_times_.compile = physics_model_->build_times().compile;
+  physics::StageTimer timer;
   physics_ = std::make_unique<physics::Physics>(physics_model_);
-  startup_times_.data_ms = ms_since(t0);
-  t0 = Clock::now();
+  startup_times_.data = timer.lap();
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
   spawn_pose_ = physics_->base_pose();
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
@@ -178,7 +173,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   paused_.store(options_.start_paused);
   read_physics();
   notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
-  startup_times_.mechanism_ms = ms_since(t0);
+  startup_times_.mechanism = timer.lap();
   if (options_.sensors) {
     sensors::RenderModelFactory render_model;
     if (has_cameras(robot_) && world_.spec.terrain) {

@@ -163,12 +163,12 @@ class Simulation {
   // with how often it recurred.
   std::vector<std::string> physics_warnings() const;
 
-  // Wall-clock time (ms) of the constructor's stages.
+  // Time of the constructor's stages (wall-clock and CPU).
   struct StartupTimes {
-    double mjcf_ms = 0.0;       // physics model: body plan, meshes, MJCF (physics::BuildTimes)
-    double compile_ms = 0.0;    // physics model: MuJoCo's compiler, terrain, arena estimate
-    double data_ms = 0.0;       // the physics instance: model copy and MuJoCo data (the arena)
-    double mechanism_ms = 0.0;  // mechanism, controller manager, reflected inertia
+    physics::StageTime mjcf;       // physics model: body plan, meshes, MJCF (physics::BuildTimes)
+    physics::StageTime compile;    // physics model: MuJoCo's compiler, terrain, arena estimate
+    physics::StageTime data;       // the physics instance: model copy and MuJoCo data (the arena)
+    physics::StageTime mechanism;  // spawn pose, mechanism, controller manager, reflected inertia
   };
   const StartupTimes& startup_times() const { return startup_times_; }
 

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <new>
+#include <type_traits>
 
 #include "control/angles.hpp"
 
@@ -21,10 +24,24 @@ TrajectoryRequest::TrajectoryRequest(std::size_t joints, std::size_t max_pts)
 }
 
 Trajectory::Trajectory(std::size_t joints, std::size_t capacity)
-    : capacity_(capacity), counts_(joints, 0), segments_(joints * capacity) {}
+    : capacity_(capacity),
+      counts_(joints, 0),
+      segments_(static_cast<SplineSegment*>(std::malloc(std::max<std::size_t>(1, joints * capacity) * sizeof(SplineSegment)))) {
+  static_assert(std::is_trivially_copyable_v<SplineSegment> && std::is_trivially_destructible_v<SplineSegment>);
+  if (!segments_) throw std::bad_alloc();
+}
+
+Trajectory::Trajectory(const Trajectory& other) : Trajectory(other.counts_.size(), other.capacity_) {
+  for (std::size_t j = 0; j < counts_.size(); ++j) copy_joint(other, j);
+}
+
+Trajectory& Trajectory::operator=(const Trajectory& other) {
+  if (this != &other) *this = Trajectory(other);
+  return *this;
+}
 
 std::size_t Trajectory::find(std::size_t joint, double time) const noexcept {
-  const SplineSegment* first = segments_.data() + joint * capacity_;
+  const SplineSegment* first = segments_.get() + joint * capacity_;
   const SplineSegment* last = first + counts_[joint];
   const SplineSegment* it =
       std::upper_bound(first, last, time, [](double t, const SplineSegment& s) { return t < s.start_time(); });
@@ -43,7 +60,7 @@ double Trajectory::end_time(std::size_t joint) const noexcept {
 
 bool Trajectory::push(std::size_t joint, const SplineSegment& s) noexcept {
   if (counts_[joint] >= capacity_) return false;
-  segments_[joint * capacity_ + counts_[joint]++] = s;
+  std::construct_at(segments_.get() + joint * capacity_ + counts_[joint]++, s);
   return true;
 }
 
@@ -54,8 +71,7 @@ void Trajectory::hold(std::size_t joint, double time, double position) noexcept 
 
 void Trajectory::copy_joint(const Trajectory& other, std::size_t joint) noexcept {
   const std::size_t n = std::min(other.counts_[joint], capacity_);
-  std::copy_n(other.segments_.begin() + static_cast<std::ptrdiff_t>(joint * other.capacity_), n,
-              segments_.begin() + static_cast<std::ptrdiff_t>(joint * capacity_));
+  std::uninitialized_copy_n(other.segments_.get() + joint * other.capacity_, n, segments_.get() + joint * capacity_);
   counts_[joint] = n;
 }
 

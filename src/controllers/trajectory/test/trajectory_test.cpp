@@ -73,6 +73,32 @@ TEST(Trajectory, SamplesAMultiPointTrajectoryThroughItsPoints) {
   EXPECT_DOUBLE_EQ(out.end_time(0), 4.0);
 }
 
+TEST(Trajectory, CopiesAreIndependentAndMovesKeepTheSegments) {
+  // The segments live in raw storage (constructed as pushed): a copy must own its own.
+  Trajectory current = holding({0.0, 0.2});
+  RequestBuilder b(2, {1, 0});
+  b.point(1.0, {1.0, 0.0}).point(2.0, {-1.0, 0.0});
+  Trajectory original(2, 20);
+  const std::vector<std::uint8_t> wraps{0, 0};
+  ASSERT_EQ(replace_trajectory(current, b.r, wraps, 0.0, original).code, TrajectoryResultCode::Successful);
+  Trajectory copy(original);
+  EXPECT_EQ(copy.capacity(), 20u);
+  EXPECT_EQ(copy.segment_count(0), original.segment_count(0));
+  EXPECT_EQ(copy.segment_count(1), 1u);
+  EXPECT_DOUBLE_EQ(copy.sample(0, 1.0).position, 1.0);
+  EXPECT_DOUBLE_EQ(copy.sample(1, 5.0).position, 0.2);
+  original.hold(0, 0.0, 3.0);  // the copy keeps its segments
+  EXPECT_DOUBLE_EQ(original.sample(0, 1.0).position, 3.0);
+  EXPECT_DOUBLE_EQ(copy.sample(0, 1.0).position, 1.0);
+  Trajectory assigned(1, 1);
+  assigned = copy;
+  EXPECT_EQ(assigned.joint_count(), 2u);
+  EXPECT_DOUBLE_EQ(assigned.sample(0, 2.0).position, -1.0);
+  Trajectory moved(std::move(assigned));
+  EXPECT_DOUBLE_EQ(moved.sample(0, 2.0).position, -1.0);
+  EXPECT_DOUBLE_EQ(moved.sample(1, 0.0).position, 0.2);
+}
+
 TEST(Trajectory, SplineOrderIsTheLowerOfTheTwoEndsOfASegment) {
   Trajectory current = holding({0.0});
   RequestBuilder b(1, {1});
