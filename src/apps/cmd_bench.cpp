@@ -58,6 +58,7 @@ void print_startup(const sim::Simulation& sim, const BenchStartup& b) {
   row("data", t.data, "(MuJoCo data: arena of " + std::to_string(a.size.contacts) + " contacts, " +
                           std::to_string(a.size.constraints) + " constraint rows)");
   row("controllers", controllers, "(mechanism, controller manager; controllers loaded and started)");
+  row("sensors", t.sensors, "(the robot's sensors set up and sampled once; cameras render only when asked)");
   row("first tick", b.first_tick, "");
   row("total", b.total, "");
   std::printf("peak memory at the first tick: %.1f MB (getrusage maxrss)\n", peak_memory_mb());

@@ -60,9 +60,14 @@ ContactSensor::ContactSensor(const description::SensorSpec& spec, const physics:
       found = true;
     }
     if (!found) {
-      throw SensorError(spec.where() + ": <contact><collision>" + collision +
-                        "</collision> matches no collision shape of the physics (link '" +
-                        (link.empty() ? spec.link : link) + "' has none)");
+      const std::string owner = link.empty() ? spec.link : link;
+      const std::string what = spec.where() + ": <contact><collision>" + collision +
+                               "</collision> matches no collision shape of the physics (link '" + owner + "' has none)";
+      // A link without shapes: its collision was a mesh the physics left out (said at start-up),
+      // or it never had one; either way the sensor can report nothing, and Gazebo too runs on
+      // without it. A link that does not exist is a mistake in the description.
+      if (model.link_index(owner) >= 0) throw SensorLeftOut(what + "; the sensor is left out");
+      throw SensorError(what);
     }
   }
   std::sort(geoms_.begin(), geoms_.end());

@@ -22,6 +22,12 @@ namespace mechsim::sensors {
 struct SensorError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A sensor that cannot work with this physics model although its description is right, e.g. a
+// contact sensor on a link whose collision mesh the physics left out: the set skips it with the
+// reason (a warning), the run goes on.
+struct SensorLeftOut : SensorError {
+  using SensorError::SensorError;
+};
 
 class RenderHub;
 

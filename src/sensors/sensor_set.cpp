@@ -36,7 +36,12 @@ SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
       skipped_.push_back({spec, std::get<description::UnsupportedSpec>(spec.details).reason});
       continue;
     }
-    sensors_.push_back(make_sensor(spec, *model_));
+    try {
+      sensors_.push_back(make_sensor(spec, *model_));
+    } catch (const SensorLeftOut& e) {
+      skipped_.push_back({spec, e.what(), true});
+      continue;
+    }
     std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                       static_cast<std::uint32_t>(name_hash(spec.name)),
                       static_cast<std::uint32_t>(name_hash(spec.name) >> 32)};

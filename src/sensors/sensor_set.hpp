@@ -32,6 +32,7 @@ namespace mechsim::sensors {
 struct SkippedSensor {
   description::SensorSpec spec;
   std::string reason;
+  bool left_out = false;  // simulated type, but not with this physics model (SensorLeftOut): a warning
 };
 
 class SensorSet {

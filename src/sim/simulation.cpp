@@ -185,6 +185,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, std::move(render_model));
     sensors_.sample_all(*physics_, time());
   }
+  startup_times_.sensors = timer.lap();
 }
 
 namespace {
@@ -410,6 +411,9 @@ std::vector<std::string> Simulation::physics_warnings() const {
     std::string text = when + notices[i].text;
     if (notices[i].count > 1) text += " (in " + std::to_string(notices[i].count) + " steps in all)";
     out.push_back(std::move(text));
+  }
+  for (const sensors::SkippedSensor& s : sensors_.skipped()) {
+    if (s.left_out) out.push_back(s.reason);
   }
   return out;
 }

@@ -169,6 +169,7 @@ class Simulation {
     physics::StageTime compile;    // physics model: MuJoCo's compiler, terrain, arena estimate
     physics::StageTime data;       // the physics instance: model copy and MuJoCo data (the arena)
     physics::StageTime mechanism;  // spawn pose, mechanism, controller manager, reflected inertia
+    physics::StageTime sensors;    // the robot's sensors set up and sampled once (cameras' lens maps)
   };
   const StartupTimes& startup_times() const { return startup_times_; }
 

@@ -41,7 +41,7 @@ TEST(BenchCli, ReportsStartUpStagesPeakMemoryAndTheArena) {
   EXPECT_THAT(r.out, HasSubstr("start-up (description -> first tick):  wall ms   CPU ms"));
   for (int column : {0, 1}) {
     double sum = 0.0;
-    for (const char* stage : {"description", "world", "MJCF", "compile", "data", "controllers", "first tick"}) {
+    for (const char* stage : {"description", "world", "MJCF", "compile", "data", "controllers", "sensors", "first tick"}) {
       const double ms = stage_ms(r.out, stage, column);
       EXPECT_GE(ms, 0.0) << stage;
       sum += ms;
