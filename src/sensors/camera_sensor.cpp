@@ -18,6 +18,9 @@ constexpr std::size_t kNoiseTable = 1u << 16;  // power of two
 struct CameraState : SensorState {
   std::vector<physics::Frame> frames;  // scratch: one render per lens
   std::vector<float> noise;            // seeded normal draws (colour levels), see README
+  // Per lens with distortion: for each output pixel, its source (u, v) in the rendered image.
+  // Made at the lens's first frame: a 1280x720 map takes tens of ms, and most runs never render.
+  std::vector<std::vector<float>> undistort;
 };
 
 // SDF's camera looks along +x with +z up; the optical frame has z forward, x right, y down.
@@ -84,21 +87,28 @@ CameraSensor::CameraSensor(const description::SensorSpec& spec, const physics::P
     const double baseline = right ? camera_.hack_baseline : 0.0;
     info.P = {f, 0, cx_prime, -f * baseline, 0, f, v.cy, 0, 0, 0, 1, 0};
 
-    if (l.distortion.active()) {
-      lens.undistort.resize(static_cast<std::size_t>(l.width) * l.height * 2);
-      for (int r = 0; r < l.height; ++r) {
-        for (int c = 0; c < l.width; ++c) {
-          double x = 0, y = 0;
-          undistort_point(l.distortion, (c - v.cx) / f, (r - v.cy) / f, x, y);
-          const std::size_t k = (static_cast<std::size_t>(r) * l.width + c) * 2;
-          lens.undistort[k] = static_cast<float>(f * x + v.cx);
-          lens.undistort[k + 1] = static_cast<float>(f * y + v.cy);
-        }
-      }
-    }
     lenses_.push_back(std::move(lens));
   }
 }
+
+namespace {
+
+std::vector<float> undistort_map(const description::DistortionSpec& d, const physics::CameraView& v) {
+  std::vector<float> map(static_cast<std::size_t>(v.width) * v.height * 2);
+  const double f = v.fx;
+  for (int r = 0; r < v.height; ++r) {
+    for (int c = 0; c < v.width; ++c) {
+      double x = 0, y = 0;
+      undistort_point(d, (c - v.cx) / f, (r - v.cy) / f, x, y);
+      const std::size_t k = (static_cast<std::size_t>(r) * v.width + c) * 2;
+      map[k] = static_cast<float>(f * x + v.cx);
+      map[k + 1] = static_cast<float>(f * y + v.cy);
+    }
+  }
+  return map;
+}
+
+}  // namespace
 
 std::pair<int, int> CameraSensor::render_size() const {
   int w = 0, h = 0;
@@ -113,6 +123,7 @@ std::unique_ptr<SensorState> CameraSensor::make_state(Rng rng) const {
   auto state = std::make_unique<CameraState>();
   state->rng = std::move(rng);
   state->frames.resize(lenses_.size());
+  state->undistort.resize(lenses_.size());
   const description::NoiseSpec& n = camera_.lenses.front().noise;
   if (n.stddev > 0.0 || n.mean != 0.0) {
     state->noise.resize(kNoiseTable);
@@ -151,12 +162,15 @@ void CameraSensor::sample(const physics::Physics& physics, double, SensorState& 
     CameraImage& im = reading.images[i];
     const std::size_t n = static_cast<std::size_t>(view.width) * view.height;
     im.rgb.resize(n * 3);
-    if (lens.undistort.empty()) {
+    std::vector<float>& undistort = state.undistort[i];
+    const description::DistortionSpec& distortion = camera_.lenses[i].distortion;
+    if (undistort.empty() && distortion.active()) undistort = undistort_map(distortion, lens.view);
+    if (undistort.empty()) {
       std::copy(frame.rgb.begin(), frame.rgb.end(), im.rgb.begin());
     } else {
       for (std::size_t k = 0; k < n; ++k)
         for (int c = 0; c < 3; ++c)
-          im.rgb[k * 3 + c] = bilinear(frame.rgb, view.width, view.height, lens.undistort[2 * k], lens.undistort[2 * k + 1], c);
+          im.rgb[k * 3 + c] = bilinear(frame.rgb, view.width, view.height, undistort[2 * k], undistort[2 * k + 1], c);
     }
     if (!state.noise.empty()) {
       // A random start in the table per frame (one draw), so frames differ and stay reproducible.

@@ -93,7 +93,6 @@ class CameraSensor final : public Sensor {
     physics::CameraView view;     // intrinsics and clip; X_WC filled at each sample
     description::Pose X_LC;       // optical frame in the link frame
     CameraInfo info;
-    std::vector<float> undistort;  // per output pixel: source (u, v) in the rendered image; empty: none
   };
   const std::vector<Lens>& lenses() const { return lenses_; }
 
