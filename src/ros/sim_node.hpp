@@ -6,6 +6,7 @@
 //   - the controller manager services under <robot namespace>/controller_manager/ (cm_services.cpp);
 //   - each loaded controller's topics (controller_bindings.cpp);
 //   - the built-in robot state publisher (tf_publisher.cpp);
+//   - the sensors' topics, as their Gazebo plugins name them (sensor_publishers.cpp);
 //   - for a PR2, pr2_controller_manager's own outputs: joint_states, mechanism_statistics and
 //     the latched /calibrated (pr2_outputs.cpp).
 //
@@ -25,6 +26,7 @@
 #include <ros/ros.h>
 
 #include "ros/bridge/sim_bridge.hpp"
+#include "ros/sensor_publishers.hpp"
 #include "ros/tf_publisher.hpp"
 
 namespace mechsim::ros {
@@ -85,6 +87,7 @@ class SimNode {
   NodeOptions options_;
   std::unique_ptr<SimBridge> bridge_;
   std::unique_ptr<TfPublisher> tf_;
+  std::unique_ptr<SensorPublishers> sensors_;  // the robot's simulated sensors (loop thread)
 
   ::ros::Publisher clock_pub_;
   std::vector<::ros::ServiceServer> services_;

@@ -29,6 +29,7 @@ bool plugin_published(std::string_view kind, std::string_view filename) {
   if (kind == "ray") return filename == "libgazebo_ros_laser.so" || filename == "libgazebo_ros_gpu_laser.so";
   if (kind == "imu") return filename == "libgazebo_ros_imu_sensor.so";
   if (kind == "contact") return filename == "libgazebo_ros_bumper.so";
+  if (kind == "camera") return is_camera_plugin(std::string(filename));  // ros/sensor_publishers
   return false;
 }
 

@@ -215,4 +215,25 @@ std::vector<PortRef> SimBridge::ports(const std::string& controller) const {
   return out;
 }
 
+// ---- sensors
+
+std::size_t SimBridge::sensor_count() const { return impl_->simulation->sensors().size(); }
+
+const description::SensorSpec& SimBridge::sensor_spec(std::size_t i) const {
+  return impl_->simulation->sensors().spec(i);
+}
+
+const sensors::SensorReading& SimBridge::sensor_reading(std::size_t i) const {
+  return impl_->simulation->sensors().reading(i);
+}
+
+void SimBridge::set_sensor_enabled(std::size_t i, bool enabled) { impl_->simulation->sensors().set_enabled(i, enabled); }
+
+std::vector<std::string> SimBridge::skipped_sensors() const {
+  std::vector<std::string> out;
+  for (const sensors::SkippedSensor& s : impl_->simulation->sensors().skipped())
+    if (!s.left_out) out.push_back(s.spec.where() + ": " + s.reason);
+  return out;
+}
+
 }  // namespace mechsim::ros

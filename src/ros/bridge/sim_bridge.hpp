@@ -21,6 +21,8 @@
 #include "control/params.hpp"
 #include "controllers/trajectory/trajectory_msgs.hpp"
 #include "description/robot_model.hpp"
+#include "description/sensor_spec.hpp"
+#include "sensors/sensor_output.hpp"
 
 namespace mechsim::ros {
 
@@ -178,6 +180,16 @@ class SimBridge {
   void mechanism_joint_states(JointStatesData& out) const;
   // Fills `out` and starts a new window (min/max, violated_limits, max_abs_*).
   void take_mechanism_statistics(MechanismStatisticsData& out);
+  // The simulated sensors (the simulation's sensors::SensorSet, in its order): spec and latest
+  // reading (its count changes with each new sample). A disabled sensor is not sampled (nobody
+  // consumes it); the change takes effect at the next tick. Loop thread (an observer).
+  std::size_t sensor_count() const;
+  const description::SensorSpec& sensor_spec(std::size_t i) const;
+  const sensors::SensorReading& sensor_reading(std::size_t i) const;
+  void set_sensor_enabled(std::size_t i, bool enabled);
+  // Declared sensors mechsim does not simulate: "SOURCE:LINE: sensor 'NAME': reason", one line
+  // each (the ones left out for this physics model are in physics_warnings()).
+  std::vector<std::string> skipped_sensors() const;
 
   // ---- any thread
   double time() const;  // s

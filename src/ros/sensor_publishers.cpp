@@ -1,0 +1,309 @@
+// SensorPublishers: the topics of the simulated sensors (sensor_publishers.hpp).
+#include "ros/sensor_publishers.hpp"
+
+#include <chrono>
+#include <mutex>
+#include <variant>
+
+#include "ros/sensor_messages.hpp"
+
+namespace mechsim::ros {
+
+namespace {
+
+enum class Kind { Laser, Imu, Contacts, Wrench, Odometry, Camera };
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool any_subscribed(const std::vector<::ros::Publisher>& publishers) {
+  for (const ::ros::Publisher& p : publishers)
+    if (p && p.getNumSubscribers() > 0) return true;
+  return false;
+}
+
+}  // namespace
+
+struct SensorPublishers::Output {
+  std::size_t sensor = 0;
+  Kind kind = Kind::Laser;
+  std::string name;
+  std::string frame;        // header.frame_id
+  std::string child_frame;  // Odometry: the body
+  int row = 0;              // Laser: the published row of a multi-row scan
+  // The publishers whose subscribers make the sensor sample (a camera's images, depth, points).
+  std::vector<::ros::Publisher> triggers;
+  // Set by roscpp's connect/disconnect callbacks (spinner threads), read by the tick.
+  std::atomic<bool> wanted{false};
+  bool enabled = false;         // as the sensor set has it
+  std::uint64_t published = 0;  // reading count last published (or skipped as stale)
+  bool error_logged = false;
+
+  // Reused messages (the loop thread's).
+  sensor_msgs::LaserScan scan;
+  sensor_msgs::Imu imu;
+  gazebo_msgs::ContactsState contacts;
+  geometry_msgs::WrenchStamped wrench;
+  nav_msgs::Odometry odometry;
+  // Cameras: per lens an image and an info publisher; depth sensors also depth, depth_info, points.
+  std::string encoding;
+  std::vector<::ros::Publisher> images, infos;
+  ::ros::Publisher depth, depth_info, points;
+  sensor_msgs::Image image, depth_image;
+  sensor_msgs::CameraInfo info;
+  sensor_msgs::PointCloud2 cloud;
+
+  // Under a lock so that the last recount sees the last connection change (a recount that read
+  // the counts before a connection cannot overwrite the one its callback made after it).
+  void recount() {
+    std::lock_guard<std::mutex> lock(recount_mutex);
+    wanted.store(any_subscribed(triggers), std::memory_order_relaxed);
+  }
+  std::mutex recount_mutex;
+};
+
+namespace {
+
+// advertise() with callbacks that recount the output's subscribers.
+template <class M>
+::ros::Publisher advertise(::ros::NodeHandle& nh, const std::string& topic, std::uint32_t queue,
+                           SensorPublishers::Output& o) {
+  auto status = [&o](const ::ros::SingleSubscriberPublisher&) { o.recount(); };
+  return nh.advertise<M>(topic, queue, status, status);
+}
+
+}  // namespace
+
+SensorPublishers::SensorPublishers(::ros::NodeHandle root, SimBridge& bridge) : root_(std::move(root)), bridge_(bridge) {
+  for (const std::string& s : bridge.skipped_sensors()) ROS_WARN_STREAM("mechsim: sensor not simulated: " << s);
+  for (std::size_t i = 0; i < bridge.sensor_count(); ++i) {
+    // Nothing in the node reads a sensor but its publisher: off until a subscriber comes.
+    bridge.set_sensor_enabled(i, false);
+    const description::SensorSpec& spec = bridge.sensor_spec(i);
+    if (!spec.plugin) {
+      ROS_INFO_STREAM("mechsim: " << spec.where() << " has no ROS plugin: not published");
+      continue;
+    }
+    if (!spec.plugin->unsupported.empty()) {
+      ROS_WARN_STREAM("mechsim: " << spec.where() << ": " << spec.plugin->unsupported << ": not published");
+      continue;
+    }
+    const std::string frame = tf_frame(spec.plugin->frame);
+    const std::string kind = spec.kind_name();
+    if (kind == "camera") {
+      add_camera(i, spec, frame);
+      continue;
+    }
+    auto out = std::make_unique<Output>();
+    Output& o = *out;
+    o.sensor = i;
+    o.name = spec.name;
+    o.frame = frame;
+    const std::string topic = spec.plugin->full_topic();
+    std::string type;
+    if (kind == "ray") {
+      o.kind = Kind::Laser;
+      o.triggers.push_back(advertise<sensor_msgs::LaserScan>(root_, topic, 10, o));
+      type = "sensor_msgs/LaserScan";
+      const auto& ray = std::get<description::RaySpec>(spec.details);
+      if (ray.vertical.count() > 1) {
+        o.row = ray.vertical.count() / 2;
+        ROS_WARN_STREAM("mechsim: " << spec.where() << " scans " << ray.vertical.count()
+                                    << " rows: LaserScan is planar, its middle row is published");
+      }
+    } else if (kind == "imu") {
+      o.kind = Kind::Imu;
+      o.triggers.push_back(advertise<sensor_msgs::Imu>(root_, topic, 10, o));
+      type = "sensor_msgs/Imu";
+    } else if (kind == "contact") {
+      o.kind = Kind::Contacts;
+      o.triggers.push_back(advertise<gazebo_msgs::ContactsState>(root_, topic, 10, o));
+      type = "gazebo_msgs/ContactsState";
+    } else if (kind == "force_torque") {
+      o.kind = Kind::Wrench;
+      o.triggers.push_back(advertise<geometry_msgs::WrenchStamped>(root_, topic, 10, o));
+      type = "geometry_msgs/WrenchStamped";
+    } else if (kind == "ground_truth") {
+      o.kind = Kind::Odometry;
+      o.triggers.push_back(advertise<nav_msgs::Odometry>(root_, topic, 10, o));
+      o.child_frame = tf_frame(spec.link);
+      type = "nav_msgs/Odometry";
+    } else {
+      ROS_WARN_STREAM("mechsim: " << spec.where() << ": no ROS output for sensors of kind " << kind);
+      continue;
+    }
+    topics_.push_back(spec.name + " -> " + topic + " (" + type + ", frame " + o.frame + ")");
+    outputs_.push_back(std::move(out));
+  }
+  for (const std::string& t : topics_) ROS_INFO_STREAM("mechsim: sensor " << t);
+}
+
+SensorPublishers::~SensorPublishers() = default;
+
+void SensorPublishers::add_camera(std::size_t sensor, const description::SensorSpec& spec, const std::string& frame) {
+  const auto& camera = std::get<description::CameraSpec>(spec.details);
+  auto out = std::make_unique<Output>();
+  Output& o = *out;
+  o.sensor = sensor;
+  o.kind = Kind::Camera;
+  o.name = spec.name;
+  o.frame = frame;
+  o.encoding = image_encoding(camera.lenses.empty() ? std::string() : camera.lenses.front().format);
+  auto note = [&](const std::string& topic, const char* type) {
+    topics_.push_back(spec.name + " -> " + topic + " (" + type + ", frame " + frame + ")");
+  };
+  // Queue 1: a frame is megabytes; a subscriber that cannot keep up gets the newest.
+  for (std::size_t k = 0; k < camera.image_topics.size(); ++k) {
+    o.images.push_back(advertise<sensor_msgs::Image>(root_, camera.image_topics[k], 1, o));
+    o.triggers.push_back(o.images.back());
+    note(camera.image_topics[k], ("sensor_msgs/Image " + o.encoding).c_str());
+  }
+  for (const std::string& topic : camera.info_topics) {
+    o.infos.push_back(advertise<sensor_msgs::CameraInfo>(root_, topic, 1, o));
+    note(topic, "sensor_msgs/CameraInfo");
+  }
+  if (camera.depth && !camera.depth_topic.empty()) {
+    o.depth = advertise<sensor_msgs::Image>(root_, camera.depth_topic, 1, o);
+    o.triggers.push_back(o.depth);
+    note(camera.depth_topic, "sensor_msgs/Image 32FC1");
+    if (!camera.depth_info_topic.empty()) {
+      o.depth_info = advertise<sensor_msgs::CameraInfo>(root_, camera.depth_info_topic, 1, o);
+      note(camera.depth_info_topic, "sensor_msgs/CameraInfo");
+    }
+  }
+  if (camera.depth && !camera.points_topic.empty()) {
+    o.points = advertise<sensor_msgs::PointCloud2>(root_, camera.points_topic, 1, o);
+    o.triggers.push_back(o.points);
+    note(camera.points_topic, "sensor_msgs/PointCloud2 xyz rgb");
+  }
+  outputs_.push_back(std::move(out));
+}
+
+void SensorPublishers::publish() {
+  const auto start = std::chrono::steady_clock::now();
+  ++stats_.calls;
+  for (const std::unique_ptr<Output>& op : outputs_) {
+    Output& o = *op;
+    const bool wanted = o.wanted.load(std::memory_order_relaxed);
+    if (wanted != o.enabled) {
+      bridge_.set_sensor_enabled(o.sensor, wanted);
+      o.enabled = wanted;
+      // What the sensor read before it was switched off is stale: wait for a fresh sample.
+      o.published = bridge_.sensor_reading(o.sensor).count;
+    }
+    if (!wanted) continue;
+    const sensors::SensorReading& r = bridge_.sensor_reading(o.sensor);
+    if (r.count == o.published) continue;
+    o.published = r.count;
+    // roscpp may call a disconnect callback before it drops the connection: the count it then
+    // saw is corrected here, at the sensor's rate.
+    o.recount();
+    if (!o.wanted.load(std::memory_order_relaxed)) continue;
+    const ::ros::Time stamp(r.stamp);
+    switch (o.kind) {
+      case Kind::Laser:
+        if (const auto* v = std::get_if<sensors::LaserScan>(&r.value)) {
+          fill_laser_scan(*v, o.row, o.scan);
+          o.scan.header.stamp = stamp;
+          o.scan.header.frame_id = o.frame;
+          o.triggers[0].publish(o.scan);
+          ++stats_.messages;
+        }
+        break;
+      case Kind::Imu:
+        if (const auto* v = std::get_if<sensors::ImuReading>(&r.value)) {
+          fill_imu(*v, o.imu);
+          o.imu.header.stamp = stamp;
+          o.imu.header.frame_id = o.frame;
+          o.triggers[0].publish(o.imu);
+          ++stats_.messages;
+        }
+        break;
+      case Kind::Contacts:
+        if (const auto* v = std::get_if<sensors::ContactsReading>(&r.value)) {
+          fill_contacts(*v, o.contacts);
+          o.contacts.header.stamp = stamp;
+          o.contacts.header.frame_id = o.frame;
+          o.triggers[0].publish(o.contacts);
+          ++stats_.messages;
+        }
+        break;
+      case Kind::Wrench:
+        if (const auto* v = std::get_if<sensors::WrenchReading>(&r.value)) {
+          fill_wrench(*v, o.wrench);
+          o.wrench.header.stamp = stamp;
+          o.wrench.header.frame_id = o.frame;
+          o.triggers[0].publish(o.wrench);
+          ++stats_.messages;
+        }
+        break;
+      case Kind::Odometry:
+        if (const auto* v = std::get_if<sensors::GroundTruthReading>(&r.value)) {
+          fill_odometry(*v, o.odometry);
+          o.odometry.header.stamp = stamp;
+          o.odometry.header.frame_id = o.frame;
+          o.odometry.child_frame_id = o.child_frame;
+          o.triggers[0].publish(o.odometry);
+          ++stats_.messages;
+        }
+        break;
+      case Kind::Camera: publish_camera(o, r); break;
+    }
+  }
+  stats_.seconds += seconds_since(start);
+}
+
+void SensorPublishers::publish_camera(Output& o, const sensors::SensorReading& r) {
+  const auto* reading = std::get_if<sensors::CameraReading>(&r.value);
+  if (reading == nullptr) return;
+  if (!reading->error.empty()) {
+    if (!o.error_logged) ROS_ERROR_STREAM("mechsim: camera '" << o.name << "' renders nothing: " << reading->error);
+    o.error_logged = true;
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const ::ros::Time stamp(r.stamp);
+  auto stamped = [&](auto& msg) -> auto& {
+    msg.header.stamp = stamp;
+    msg.header.frame_id = o.frame;
+    return msg;
+  };
+  // Each topic only for its own subscribers: a depth-only subscriber costs no colour copy.
+  for (std::size_t k = 0; k < reading->images.size(); ++k) {
+    const sensors::CameraImage& image = reading->images[k];
+    if (k < o.images.size() && o.images[k].getNumSubscribers() > 0) {
+      fill_image(image, o.encoding, stamped(o.image));
+      o.images[k].publish(o.image);
+      ++stats_.messages;
+    }
+    // camera_info goes with every frame, as the plugins publish it with the image.
+    if (k < o.infos.size() && o.infos[k].getNumSubscribers() > 0) {
+      fill_camera_info(image.info, stamped(o.info));
+      o.infos[k].publish(o.info);
+      ++stats_.messages;
+    }
+  }
+  if (!reading->images.empty()) {
+    const sensors::CameraImage& image = reading->images.front();
+    if (o.depth && o.depth.getNumSubscribers() > 0) {
+      fill_depth_image(image, stamped(o.depth_image));
+      o.depth.publish(o.depth_image);
+      ++stats_.messages;
+    }
+    if (o.depth_info && o.depth_info.getNumSubscribers() > 0) {
+      fill_camera_info(image.info, stamped(o.info));
+      o.depth_info.publish(o.info);
+      ++stats_.messages;
+    }
+    if (o.points && o.points.getNumSubscribers() > 0) {
+      fill_point_cloud(image, stamped(o.cloud));
+      o.points.publish(o.cloud);
+      ++stats_.messages;
+    }
+  }
+  ++stats_.camera_frames;
+  stats_.camera_seconds += seconds_since(start);
+}
+
+}  // namespace mechsim::ros

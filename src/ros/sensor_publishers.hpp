@@ -1,0 +1,75 @@
+#pragma once
+// The simulated sensors on ROS, as their Gazebo plugins publish them: sensor_msgs/LaserScan
+// (gazebo_ros_laser, gazebo_ros_gpu_laser), sensor_msgs/Imu (gazebo_ros_imu_sensor,
+// gazebo_ros_imu, hector's IMU), gazebo_msgs/ContactsState (gazebo_ros_bumper),
+// geometry_msgs/WrenchStamped (gazebo_ros_ft_sensor), nav_msgs/Odometry (gazebo_ros_p3d), and
+// sensor_msgs/Image + CameraInfo (+ a 32FC1 depth Image, its CameraInfo and a PointCloud2 for
+// depth cameras) of gazebo_ros_camera, _multicamera, _depth_camera, _openni_kinect and
+// _prosilica; on the topic and with the frame the plugin would use, stamped in simulated time.
+// Plain publishers on image_transport's raw topic names: Debian packages image_transport but no
+// transport plugin (compressed, theora), so it would add the same raw topic only.
+//
+// Cost: a sensor is sampled only while one of its topics has a subscriber (gazebo_ros_laser and
+// the camera plugins activate their sensor on the first connection; mechsim does it for every
+// sensor, as nothing else in the node reads them), so with nobody listening a tick pays one
+// relaxed atomic load per sensor. Subscriber counts are kept by roscpp's connect/disconnect
+// callbacks (spinner threads), not asked for in the tick. Publishing never waits on a subscriber:
+// roscpp serialises into each connection's queue (size 1 for cameras: a slow subscriber loses
+// frames, the tick goes on).
+//
+// Threads: publish() runs in the loop thread after each tick (an observer), as the node's other
+// publishers do.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+
+#include "ros/bridge/sim_bridge.hpp"
+
+namespace mechsim::ros {
+
+// What publishing cost so far (wall time of the loop thread inside publish()).
+struct SensorPublishStats {
+  std::uint64_t calls = 0;          // publish() calls (ticks)
+  double seconds = 0.0;             // in publish() in all
+  std::uint64_t camera_frames = 0;  // camera readings published (all of a sensor's topics)
+  double camera_seconds = 0.0;      // filling and publishing them (rendering is in the tick)
+  std::uint64_t messages = 0;       // messages published, cameras included
+};
+
+class SensorPublishers {
+ public:
+  // Advertises the topics of every published sensor (absolute names, robotNamespace + topicName
+  // as the plugins resolve them) and disables the sensors nobody consumes. Logs what it leaves
+  // out (not simulated; no ROS plugin; a plugin mechsim does not publish for).
+  SensorPublishers(::ros::NodeHandle root, SimBridge& bridge);
+  ~SensorPublishers();
+  SensorPublishers(const SensorPublishers&) = delete;
+  SensorPublishers& operator=(const SensorPublishers&) = delete;
+
+  // Enables the sensors that gained a subscriber, disables the others, and publishes every
+  // reading newer than the last one published. Loop thread.
+  void publish();
+
+  // "sensor -> topic (type, frame F)" per advertised topic, for the log.
+  const std::vector<std::string>& topics() const { return topics_; }
+  const SensorPublishStats& stats() const { return stats_; }
+
+  struct Output;  // sensor_publishers.cpp, camera_publishers.cpp
+
+ private:
+  void add_camera(std::size_t sensor, const description::SensorSpec& spec, const std::string& frame);
+  void publish_camera(Output& o, const sensors::SensorReading& r);
+
+  ::ros::NodeHandle root_;
+  SimBridge& bridge_;
+  std::vector<std::unique_ptr<Output>> outputs_;
+  std::vector<std::string> topics_;
+  SensorPublishStats stats_;
+};
+
+}  // namespace mechsim::ros
