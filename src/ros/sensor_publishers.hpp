@@ -14,11 +14,11 @@
 // sensor, as nothing else in the node reads them), so with nobody listening a tick pays one
 // relaxed atomic load per sensor. Subscriber counts are kept by roscpp's connect/disconnect
 // callbacks (spinner threads), not asked for in the tick. Publishing never waits on a subscriber:
-// roscpp serialises into each connection's queue (size 1 for cameras: a slow subscriber loses
-// frames, the tick goes on).
+// the tick fills a message and queues it for the sender thread, which hands it to roscpp (queue
+// size 1 for cameras: a slow subscriber loses frames, the tick goes on).
 //
 // Threads: publish() runs in the loop thread after each tick (an observer), as the node's other
-// publishers do.
+// publishers do; a sender thread of its own calls roscpp's publish (sensor_publishers.cpp says why).
 
 #include <atomic>
 #include <cstdint>
@@ -32,13 +32,18 @@
 
 namespace mechsim::ros {
 
-// What publishing cost so far (wall time of the loop thread inside publish()).
+// What publishing cost so far: the loop thread's wall time in publish() (what an unsubscribed
+// tick pays), and its CPU time filling and publishing messages (what a subscriber costs; CPU
+// time, as on a loaded machine wall time counts the other processes' turns).
 struct SensorPublishStats {
-  std::uint64_t calls = 0;          // publish() calls (ticks)
-  double seconds = 0.0;             // in publish() in all
-  std::uint64_t camera_frames = 0;  // camera readings published (all of a sensor's topics)
-  double camera_seconds = 0.0;      // filling and publishing them (rendering is in the tick)
-  std::uint64_t messages = 0;       // messages published, cameras included
+  std::uint64_t calls = 0;            // publish() calls (ticks)
+  double wall_seconds = 0.0;          // in publish() in all
+  double publish_cpu_seconds = 0.0;   // filling and publishing messages, cameras included
+  std::uint64_t messages = 0;         // messages published, cameras included
+  std::uint64_t dropped = 0;          // not published: the sender's queue was full
+  double sender_cpu_seconds = 0.0;    // the sender thread's CPU time (roscpp's serialisation and writes)
+  std::uint64_t camera_frames = 0;    // camera readings published (all of a sensor's topics)
+  double camera_seconds = 0.0;        // CPU filling and publishing them (rendering is in the tick)
 };
 
 class SensorPublishers {
@@ -57,19 +62,25 @@ class SensorPublishers {
 
   // "sensor -> topic (type, frame F)" per advertised topic, for the log.
   const std::vector<std::string>& topics() const { return topics_; }
-  const SensorPublishStats& stats() const { return stats_; }
+  SensorPublishStats stats() const;
 
   struct Output;  // sensor_publishers.cpp, camera_publishers.cpp
 
  private:
   void add_camera(std::size_t sensor, const description::SensorSpec& spec, const std::string& frame);
   void publish_camera(Output& o, const sensors::SensorReading& r);
+  // A new message of type M stamped and framed, filled by fill(M&), queued for the sender.
+  template <class M, class Fill>
+  void send(const ::ros::Publisher& publisher, const ::ros::Time& stamp, const std::string& frame, Fill&& fill);
+  class Sender;  // the thread that calls roscpp's publish
 
   ::ros::NodeHandle root_;
   SimBridge& bridge_;
   std::vector<std::unique_ptr<Output>> outputs_;
   std::vector<std::string> topics_;
   SensorPublishStats stats_;
+  bool pushed_ = false;  // this tick queued messages: wake the sender
+  std::unique_ptr<Sender> sender_;  // last: joined first, while the publishers exist
 };
 
 }  // namespace mechsim::ros

@@ -4,6 +4,10 @@
 #include <rosgraph_msgs/Clock.h>
 #include <std_srvs/Empty.h>
 
+#include <time.h>
+
+#include <cstdio>
+
 #include "ros/xmlrpc_params.hpp"
 
 namespace mechsim::ros {
@@ -35,18 +39,7 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
   }
 }
 
-SimNode::~SimNode() {
-  stop();
-  // What publishing the sensors cost (README: the figures of sensor publishing come from here).
-  const SensorPublishStats& s = sensors_->stats();
-  if (s.calls > 0) {
-    ROS_INFO("mechsim: sensor publishing: %llu ticks, %.3f us per tick, %llu messages; %llu camera frames, "
-             "%.3f ms each to fill and publish",
-             static_cast<unsigned long long>(s.calls), 1e6 * s.seconds / static_cast<double>(s.calls),
-             static_cast<unsigned long long>(s.messages), static_cast<unsigned long long>(s.camera_frames),
-             s.camera_frames > 0 ? 1e3 * s.camera_seconds / static_cast<double>(s.camera_frames) : 0.0);
-  }
-}
+SimNode::~SimNode() { stop(); }
 
 void SimNode::start() {
   stop_.store(false);
@@ -55,7 +48,22 @@ void SimNode::start() {
 
 void SimNode::stop() {
   stop_.store(true);
-  if (loop_thread_.joinable()) loop_thread_.join();
+  if (!loop_thread_.joinable()) return;
+  loop_thread_.join();
+  // What publishing the sensors cost (the figures in README.md, "Sensors", come from here).
+  // printf: after a SIGINT, roscpp has shut rosconsole down by now.
+  const SensorPublishStats s = sensors_->stats();
+  if (s.calls > 0) {
+    const double ticks = static_cast<double>(s.calls);
+    std::printf("mechsim: sensor publishing: %llu ticks; per tick %.3f us wall in the tick's publisher, %.3f us CPU "
+                "filling %llu messages (%llu dropped), of %.3f us CPU in all (loop thread); sender thread %.3f us CPU "
+                "per tick; %llu camera frames, %.3f ms CPU each to fill\n",
+                static_cast<unsigned long long>(s.calls), 1e6 * s.wall_seconds / ticks,
+                1e6 * s.publish_cpu_seconds / ticks, static_cast<unsigned long long>(s.messages),
+                static_cast<unsigned long long>(s.dropped), 1e6 * loop_cpu_seconds_ / ticks,
+                1e6 * s.sender_cpu_seconds / ticks, static_cast<unsigned long long>(s.camera_frames),
+                s.camera_frames > 0 ? 1e3 * s.camera_seconds / static_cast<double>(s.camera_frames) : 0.0);
+  }
 }
 
 void SimNode::loop() {
@@ -81,6 +89,9 @@ void SimNode::loop() {
       divergence_ = error;
     }
   }
+  timespec cpu{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &cpu);
+  loop_cpu_seconds_ = static_cast<double>(cpu.tv_sec) + 1e-9 * static_cast<double>(cpu.tv_nsec);
 }
 
 void SimNode::on_tick(double time) {

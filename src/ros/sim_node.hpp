@@ -112,6 +112,7 @@ class SimNode {
   std::thread loop_thread_;
   std::atomic<bool> stop_{false};
   std::string divergence_;
+  double loop_cpu_seconds_ = 0.0;  // CPU time of the loop thread, set when it ends
 };
 
 }  // namespace mechsim::ros

@@ -84,6 +84,12 @@ Rate rate_of(const std::vector<double>& stamps) {
   return r;
 }
 
+// The node's own account of what publishing cost, written when it stops (sim_node.cpp).
+void print_publish_cost(const std::string& log) {
+  const auto at = log.find("mechsim: sensor publishing");
+  if (at != std::string::npos) std::printf("%s\n", log.substr(at, log.find('\n', at) - at).c_str());
+}
+
 void expect_rate(const Rate& r, double hz, const char* topic) {
   EXPECT_NEAR(r.median_interval, 1.0 / hz, 1e-6) << topic;
   EXPECT_NEAR(r.hz, hz, 0.05 * hz) << topic;
@@ -107,6 +113,7 @@ class Pr2Sensors : public ::testing::Test {
   void TearDown() override {
     if (node_) {
       EXPECT_EQ(node_->stop(10.0), 0) << "mechsim_node did not stop cleanly; its log:\n" << node_->log();
+      print_publish_cost(node_->log());
     }
   }
   std::unique_ptr<ChildProcess> node_;
@@ -178,7 +185,13 @@ TEST_F(Pr2Sensors, NewSubscriberGetsFreshScansNotTheStaleOne) {
 }
 
 // The ZED2's IMU and one of its cameras on the CC8.
-class Cc8Sensors : public CC8Node {};
+class Cc8Sensors : public CC8Node {
+ protected:
+  void TearDown() override {
+    CC8Node::TearDown();
+    if (node_) print_publish_cost(node_->log());
+  }
+};
 
 TEST_F(Cc8Sensors, Zed2ImuAt100HzReadsGravity) {
   Stamps<sensor_msgs::Imu> imu(nh_, "/cc8/zed2/imu/data");
