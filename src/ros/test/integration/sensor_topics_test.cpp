@@ -10,6 +10,7 @@
 #include <gmock/gmock.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -182,6 +183,28 @@ TEST_F(Pr2Sensors, NewSubscriberGetsFreshScansNotTheStaleOne) {
   Stamps<sensor_msgs::LaserScan> second(nh_, "/base_scan");
   ASSERT_TRUE(wait_until([&] { return second.count() > 2; }, 30.0)) << node_->log();
   EXPECT_GE(second.stamps().front(), before) << "a stale scan from before the subscription";
+}
+
+// pr2_gazebo's own rostest of the Hokuyo rates (test/sensors/hztest_pr2_scan.launch: rostest's
+// hztest, 25 +- 20 Hz over 10 s of ROS time on /base_scan and /tilt_scan) with mechsim's PR2
+// launch in place of gazebo_ros' (robots/pr2/test/hztest_pr2_scan.test), run by Debian's rostest
+// on this program's master. At most 150 s (wall); rostest stops what it launched.
+TEST(Pr2Hztest, PassesPr2GazebosScanRateTest) {
+  const char* const rostest = "/usr/bin/rostest";
+  if (!std::filesystem::exists(rostest)) GTEST_SKIP() << rostest << " is missing (Debian's python3-rostest)";
+  ASSERT_TRUE(::ros::master::check()) << "no ROS master";
+  // rostest --reuse-master wants the run id that roscore (not a bare rosmaster) sets.
+  ::ros::param::set("/run_id", std::string("mechsim_hztest"));
+  // hztest starts with "#!/usr/bin/env python3": Debian's interpreter first on PATH.
+  const char* path = std::getenv("PATH");
+  ChildProcess run({"/usr/bin/env", "PATH=/usr/bin:" + std::string(path != nullptr ? path : ""), "/usr/bin/python3",
+                    rostest, "--reuse-master", "mechsim_pr2", "hztest_pr2_scan.test"},
+                   log_dir() + "/rostest_hztest_pr2_scan.log");
+  const int status = run.wait(150.0);
+  const std::string log = run.log();
+  EXPECT_EQ(status, 0) << log.substr(log.size() > 4000 ? log.size() - 4000 : 0);
+  EXPECT_THAT(log, ::testing::HasSubstr("* TESTS: 2"));
+  EXPECT_THAT(log, ::testing::HasSubstr("RESULT: SUCCESS"));
 }
 
 // The ZED2's IMU and one of its cameras on the CC8.
