@@ -42,6 +42,11 @@ class Stamps {
       last_ = *msg;
     });
   }
+  // The subscription ends before the members its callback writes (roscpp's shutdown waits for
+  // a callback in progress).
+  ~Stamps() { sub_.shutdown(); }
+  Stamps(const Stamps&) = delete;
+  Stamps& operator=(const Stamps&) = delete;
   std::vector<double> stamps() {
     std::lock_guard<std::mutex> l(m_);
     return stamps_;
