@@ -36,6 +36,10 @@ function(mechsim_test name)
     MECHSIM_BINARY_DIR="${PROJECT_BINARY_DIR}"
     MECHSIM_EXE="${PROJECT_BINARY_DIR}/bin/mechsim")
   mechsim_warnings(${name})
+  # GoogleTest/GoogleMock and the standard headers every test uses, parsed once per program
+  # instead of once per source (they were about half of a test source's compile time).
+  target_precompile_headers(${name} PRIVATE <gmock/gmock.h> <gtest/gtest.h> <filesystem> <fstream>
+                                            <functional> <map> <memory> <sstream> <string> <vector>)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
                        PROPERTIES TIMEOUT 300 LABELS "${ARG_LABELS}")
 endfunction()
