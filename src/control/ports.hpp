@@ -38,6 +38,7 @@ enum class PortKind : std::uint8_t {
   GripperCommand,       // GripperCommandPort (pr2_controllers_msgs/Pr2GripperCommand), pr2_gripper_ports.hpp
   GripperGoal,          // GripperGoalPort (control_msgs/GripperCommand action), pr2_gripper_ports.hpp
   PeriodicCommand,      // PeriodicCommandPort (pr2_msgs/PeriodicCmd), laser_scanner_traj_controller.hpp
+  TrajectoryQuery,      // TrajectoryQueryPort (query_state), controllers/trajectory/trajectory_query.hpp
 };
 
 class Port {

@@ -11,12 +11,15 @@
 //                     is false (diff_drive_controller's behaviour)
 //   trajectories      <robot ns>/<controller>/command (trajectory_msgs/JointTrajectory),
 //                     <robot ns>/<controller>/state (control_msgs/JointTrajectoryControllerState,
-//                     at the state rate), <robot ns>/<controller>/follow_joint_trajectory (action)
+//                     at the state rate), <robot ns>/<controller>/follow_joint_trajectory (action),
+//                     <robot ns>/<controller>/query_state (control_msgs/QueryTrajectoryState:
+//                     the desired state at a time; fails while the controller is not running)
 // PR2 controller types (robot_mechanism_controllers/*, pr2_mechanism_controllers/*) speak the
 // PR2's messages instead (pr2_actions.hpp):
 //   state topics      pr2_controllers_msgs/JointControllerState, JointTrajectoryControllerState
 //   JointTrajectoryActionController  also <controller>/joint_trajectory_action
-//                     (pr2_controllers_msgs/JointTrajectoryAction) beside follow_joint_trajectory
+//                     (pr2_controllers_msgs/JointTrajectoryAction) beside follow_joint_trajectory;
+//                     query_state is pr2_controllers_msgs/QueryTrajectoryState
 //   Pr2GripperController  <controller>/command (pr2_controllers_msgs/Pr2GripperCommand),
 //                     <controller>/gripper_action (pr2_controllers_msgs/Pr2GripperCommandAction)
 //   Pr2Odometry       <controller>/odom at odom_publish_rate (default 30 Hz) and odom ->
@@ -32,9 +35,11 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include <control_msgs/JointControllerState.h>
+#include <control_msgs/QueryTrajectoryState.h>
 #include <pr2_controllers_msgs/JointControllerState.h>
 #include <pr2_controllers_msgs/JointTrajectoryControllerState.h>
 #include <pr2_controllers_msgs/Pr2GripperCommand.h>
+#include <pr2_controllers_msgs/QueryTrajectoryState.h>
 
 #include "ros/pr2_actions.hpp"
 #include "ros/publish_helpers.hpp"
@@ -60,9 +65,35 @@ struct SimNode::Binding {
   std::unique_ptr<TrajectoryActionServer> action;
   std::unique_ptr<Pr2TrajectoryActionServer> pr2_action;  // JointTrajectoryActionController only
   std::unique_ptr<GripperActionServer> gripper_action;
+  ::ros::ServiceServer service;  // query_state
 };
 
 namespace {
+
+// query_state: the request's time sampled on the controller's trajectory (both message
+// packages define the service alike).
+template <class Srv, class Binding>
+::ros::ServiceServer advertise_query(::ros::NodeHandle& nh, const std::string& name, std::mutex& mutex,
+                                     std::weak_ptr<Binding> weak) {
+  using Req = typename Srv::Request;
+  using Res = typename Srv::Response;
+  return nh.advertiseService<Req, Res>(name, [&mutex, weak](Req& req, Res& res) {
+    std::lock_guard<std::mutex> lock(mutex);  // the port lives while its binding is alive
+    auto self = weak.lock();
+    if (!self || !self->alive) return false;
+    TrajectorySample sample;
+    std::string error;
+    if (!query_trajectory(self->port, req.time.toSec(), sample, &error)) {
+      ROS_WARN_STREAM("mechsim: " << self->port.controller << "/query_state: " << error);
+      return false;
+    }
+    res.name = sample.names;
+    res.position = sample.position;
+    res.velocity = sample.velocity;
+    res.acceleration = sample.acceleration;
+    return true;
+  });
+}
 
 double rate_param(const control::Params& params, const std::string& controller, const char* key, double fallback) {
   try {
@@ -242,6 +273,12 @@ void SimNode::bind(const std::string& controller) {
       case PortType::GripperGoal:
         b->gripper_action = std::make_unique<GripperActionServer>(controller_nh, topic, port);
         break;
+      case PortType::TrajectoryQuery:
+        b->service = b->pr2 ? advertise_query<pr2_controllers_msgs::QueryTrajectoryState>(controller_nh, topic,
+                                                                                        bindings_mutex_, weak)
+                            : advertise_query<control_msgs::QueryTrajectoryState>(controller_nh, topic,
+                                                                                  bindings_mutex_, weak);
+        break;
       case PortType::Other:
         continue;
     }
@@ -281,6 +318,7 @@ void SimNode::unbind(const std::string& controller) {
       b->gripper_action.reset();
     }
     b->subscriber.shutdown();
+    b->service.shutdown();
     b->publisher.shutdown();
     b->tf_publisher.shutdown();
   }

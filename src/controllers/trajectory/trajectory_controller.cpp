@@ -96,6 +96,7 @@ bool JointTrajectoryController::init(RobotHardware& hardware, const Params& para
   channel_ = std::make_unique<TrajectoryChannel>(std::move(config));
   command_ = std::make_unique<TrajectoryCommandPort>("command", channel_.get());
   goal_ = std::make_unique<TrajectoryGoalPort>("follow_joint_trajectory", channel_.get());
+  query_ = std::make_unique<TrajectoryQueryPort>("query_state", names, capacity);
   trajectories_[0] = Trajectory(n, capacity);
   trajectories_[1] = Trajectory(n, capacity);
   desired_.assign(n, SplineState{});
@@ -117,7 +118,7 @@ bool JointTrajectoryController::init(RobotHardware& hardware, const Params& para
 }
 
 std::vector<Port*> JointTrajectoryController::ports() {
-  std::vector<Port*> out{command_.get(), goal_.get(), &state_};
+  std::vector<Port*> out{command_.get(), goal_.get(), &state_, query_.get()};
   for (auto& g : gains_) out.push_back(g.get());
   return out;
 }
@@ -144,15 +145,19 @@ void JointTrajectoryController::starting(double time) {
   }
   active_goal_ = 0;
   hold_current(time);
+  query_stale_ = !query_->publish_from_rt(*active_);
+  query_->set_running_from_rt(true);
   channel_->set_running_from_rt(true);
 }
 
 void JointTrajectoryController::stopping(double time) {
   channel_->set_running_from_rt(false);
+  query_->set_running_from_rt(false);
   if (active_goal_ != 0) finish_goal(GoalStatus::Preempted, TrajectoryResultCode::Successful, "the controller stopped", time);
 }
 
 void JointTrajectoryController::hold_current(double time) noexcept {
+  query_stale_ = true;
   for (std::size_t j = 0; j < joints_.size(); ++j) {
     const double p = joints_[j].position();
     const double v = joints_[j].velocity();
@@ -223,6 +228,7 @@ void JointTrajectoryController::take(const TrajectoryRequest& r, double time) no
     return;  // the current trajectory and goal go on
   }
   std::swap(active_, spare_);
+  query_stale_ = true;
   if (active_goal_ != 0) finish_goal(GoalStatus::Preempted, TrajectoryResultCode::Successful, "preempted by a newer trajectory", time);
   if (r.goal_id == 0) return;
   active_goal_ = r.goal_id;
@@ -334,6 +340,7 @@ UpdateStatus JointTrajectoryController::update(double time, double period) {
   } else {
     for (std::size_t j = 0; j < joints_.size(); ++j) joints_[j].set_command(desired_[j].position);
   }
+  if (query_stale_) query_stale_ = !query_->publish_from_rt(*active_);
   publish(time);
   return UpdateStatus::Ok();
 }

@@ -28,8 +28,8 @@
 //   position: position = desired position
 //
 // Ports: "command" (TrajectoryCommandPort), "follow_joint_trajectory" (TrajectoryGoalPort),
-// "state" (StatePort<JointTrajectoryControllerState>), "gains/<joint>" (PidGainsPort, PID
-// variants). starting() holds the current position; so does the end of a cancelled or aborted
+// "state" (StatePort<JointTrajectoryControllerState>), "query_state" (TrajectoryQueryPort),
+// "gains/<joint>" (PidGainsPort, PID variants). starting() holds the current position; so does the end of a cancelled or aborted
 // goal. A finished trajectory holds its last point. update() neither allocates nor throws.
 
 #include <memory>
@@ -40,6 +40,7 @@
 #include "controllers/joint/pid_joint_controllers.hpp"
 #include "controllers/trajectory/trajectory.hpp"
 #include "controllers/trajectory/trajectory_goal.hpp"
+#include "controllers/trajectory/trajectory_query.hpp"
 
 namespace mechsim::control {
 
@@ -64,6 +65,7 @@ class JointTrajectoryController : public Controller {
   TrajectoryCommandPort& command_port() { return *command_; }
   TrajectoryGoalPort& goal_port() { return *goal_; }
   StatePort<JointTrajectoryControllerState>& state_port() { return state_; }
+  TrajectoryQueryPort& query_port() { return *query_; }
   const std::vector<std::string>& joint_names() const { return channel_->config().joints; }
   // The trajectory being run (read it only between ticks, e.g. in tests).
   const Trajectory& trajectory() const { return *active_; }
@@ -94,12 +96,14 @@ class JointTrajectoryController : public Controller {
   std::unique_ptr<TrajectoryChannel> channel_;
   std::unique_ptr<TrajectoryCommandPort> command_;
   std::unique_ptr<TrajectoryGoalPort> goal_;
+  std::unique_ptr<TrajectoryQueryPort> query_;
   StatePort<JointTrajectoryControllerState> state_{"state"};
 
   // Real-time state, sized at init.
   Trajectory trajectories_[2];
   Trajectory* active_ = &trajectories_[0];
   Trajectory* spare_ = &trajectories_[1];
+  bool query_stale_ = true;  // the active trajectory changed since query_ last took it
   std::vector<SplineState> desired_, actual_, error_;  // error = desired - actual
   std::vector<double> previous_velocity_;
   bool have_previous_velocity_ = false;

@@ -45,6 +45,7 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::JointTrajectoryState: return PortType::TrajectoryState;
     case control::PortKind::GripperCommand: return PortType::GripperCommand;
     case control::PortKind::GripperGoal: return PortType::GripperGoal;
+    case control::PortKind::TrajectoryQuery: return PortType::TrajectoryQuery;
     default: return PortType::Other;
   }
 }

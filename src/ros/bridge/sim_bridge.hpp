@@ -50,6 +50,7 @@ enum class PortType : std::uint8_t {
   TrajectoryState,    // control_msgs/JointTrajectoryControllerState ("state")
   GripperCommand,     // pr2_controllers_msgs/Pr2GripperCommand ("command" of the PR2 gripper)
   GripperGoal,        // pr2_controllers_msgs/Pr2GripperCommandAction ("gripper_action")
+  TrajectoryQuery,    // control_msgs/QueryTrajectoryState service ("query_state")
   Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
 };
 
@@ -249,6 +250,13 @@ bool cancel_goal(const PortRef& port, std::uint64_t id);
 std::optional<control::GoalStatus> goal_status(const PortRef& port, std::uint64_t id);
 std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::uint64_t id);
 bool read_goal_feedback(const PortRef& port, control::FollowJointTrajectoryFeedback& out, std::uint64_t* sequence);
+// query_state: the desired state of the controller's joints at `time` (s, simulation time).
+// False with `error` set when the controller is not running or the port is not a query port.
+struct TrajectorySample {
+  std::vector<std::string> names;
+  std::vector<double> position, velocity, acceleration;
+};
+bool query_trajectory(const PortRef& port, double time, TrajectorySample& out, std::string* error);
 
 // The PR2 gripper (controllers/gripper/pr2_gripper_controller.hpp explains the goal life: Succeeded when
 // reached, Aborted with stalled = true when it stalls first, Preempted by a cancel, a newer

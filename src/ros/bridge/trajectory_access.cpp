@@ -1,5 +1,6 @@
 // Trajectory ports through the opaque PortRef (C++20 side of the bridge).
 #include "controllers/trajectory/trajectory_goal.hpp"
+#include "controllers/trajectory/trajectory_query.hpp"
 #include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 
@@ -31,6 +32,26 @@ bool submit_goal(const PortRef& port, const control::FollowJointTrajectoryGoal& 
   ticket.id = s.id;
   ticket.accepted = s.accepted;
   ticket.result = s.result;
+  return true;
+}
+
+bool query_trajectory(const PortRef& port, double time, TrajectorySample& out, std::string* error) {
+  auto* p = port_as<control::TrajectoryQueryPort>(port);
+  if (!p) {
+    if (error) *error = "port '" + port.name + "' of '" + port.controller + "' samples no trajectory";
+    return false;
+  }
+  std::vector<control::SplineState> states;
+  if (!p->sample(time, states, error)) return false;
+  out.names = p->joint_names();
+  out.position.clear();
+  out.velocity.clear();
+  out.acceleration.clear();
+  for (const control::SplineState& s : states) {
+    out.position.push_back(s.position);
+    out.velocity.push_back(s.velocity);
+    out.acceleration.push_back(s.acceleration);
+  }
   return true;
 }
 

@@ -316,6 +316,49 @@ TEST(JointTrajectoryController, StoppingTheControllerPreemptsItsGoal) {
   EXPECT_EQ(rig.goals().status(s.id), GoalStatus::Preempted);
 }
 
+// query_state: the running trajectory sampled at any time, from outside the tick (the service's
+// thread); refused while the controller is stopped.
+TEST(JointTrajectoryController, QueryStateSamplesTheRunningTrajectoryAtAnyTime) {
+  Rig rig(2, kTwoJoints);
+  rig.robot->state.actuators[0].position = 0.1;
+  ASSERT_TRUE(rig.manager->load_controller("c").ok);
+  TrajectoryQueryPort& port = *rig.manager->controller("c")->port_as<TrajectoryQueryPort>("query_state");
+  std::vector<SplineState> s;
+  std::string error;
+  EXPECT_FALSE(port.sample(0.0, s, &error)) << "a loaded, stopped controller has nothing to sample";
+  EXPECT_THAT(error, HasSubstr("not running"));
+  ASSERT_TRUE(rig.manager->switch_controllers({"c"}, {}, SwitchStrictness::Strict).ok);
+  rig.tick(1);
+  EXPECT_EQ(port.joint_names(), (std::vector<std::string>{"j0", "j1"}));
+  ASSERT_TRUE(port.sample(rig.time + 10.0, s, &error)) << error;
+  EXPECT_DOUBLE_EQ(s[0].position, 0.1) << "holding where it started";
+  EXPECT_DOUBLE_EQ(s[1].position, 0.0);
+
+  const GoalSubmission g = rig.goals().submit(move({"j1", "j0"}, {-0.3, 0.5}, 1.0));
+  ASSERT_TRUE(g.accepted) << g.result.error_string;
+  rig.tick(1);  // taken at this tick: the move runs from about rig.time to rig.time + 1 s
+  const double start = rig.time;
+  ASSERT_TRUE(port.sample(start + 0.5, s, &error)) << error;
+  EXPECT_NEAR(s[0].position, 0.3, 0.01);  // half way from 0.1 to 0.5 (the cubic's symmetry)
+  EXPECT_NEAR(s[1].position, -0.15, 0.01);
+  EXPECT_GT(s[0].velocity, 0.5);
+  EXPECT_LT(s[1].velocity, -0.3);
+  ASSERT_TRUE(port.sample(start + 3.0, s, &error)) << error;
+  EXPECT_DOUBLE_EQ(s[0].position, 0.5);
+  EXPECT_DOUBLE_EQ(s[1].position, -0.3);
+  EXPECT_DOUBLE_EQ(s[0].velocity, 0.0);
+  // What the tick itself runs: the state port's desired position (within a tick's travel).
+  rig.tick(200);
+  const auto state = rig.state();
+  ASSERT_TRUE(port.sample(rig.time, s, &error)) << error;
+  EXPECT_NEAR(s[0].position, state.desired.positions[0], 0.002);
+
+  ASSERT_TRUE(rig.manager->switch_controllers({}, {"c"}, SwitchStrictness::Strict).ok);
+  rig.tick(1);
+  EXPECT_FALSE(port.sample(rig.time, s, &error));
+  EXPECT_THAT(error, HasSubstr("not running"));
+}
+
 TEST(JointTrajectoryController, StopTrajectoryDurationBringsTheJointsToRestSmoothly) {
   std::string yaml = kTwoJoints;
   yaml += "  stop_trajectory_duration: 0.5\n";

@@ -9,6 +9,7 @@
 #include <actionlib/client/simple_action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/JointTrajectoryControllerState.h>
+#include <control_msgs/QueryTrajectoryState.h>
 #include <controller_manager_msgs/ListControllers.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
@@ -103,6 +104,34 @@ steering_trajectory_controller:
       10.0))
       << "steering_FR desired " << (desired.size() > 1 ? desired[1] : NAN) << ", actual "
       << (actual.size() > 1 ? actual[1] : NAN);
+
+  // query_state: the trajectory at a later time is the command's end point; a new command
+  // changes what it answers.
+  control_msgs::QueryTrajectoryState query;
+  query.request.time = ::ros::Time(clock_now() + 5.0);
+  ASSERT_TRUE(call("/cc8/steering_trajectory_controller/query_state", query));
+  EXPECT_EQ(query.response.name, kSteering);
+  ASSERT_EQ(query.response.position.size(), 4u);
+  for (std::size_t j = 0; j < 4; ++j) {
+    EXPECT_NEAR(query.response.position[j], -0.2, 1e-9) << kSteering[j];
+    EXPECT_NEAR(query.response.velocity[j], 0.0, 1e-9) << kSteering[j];
+  }
+  cmd.publish(to(0.25, 2.0));
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return desired.size() == 4 && desired[1] > -0.19;
+      },
+      10.0));
+  const double now = clock_now();
+  query.request.time = ::ros::Time(now + 10.0);
+  ASSERT_TRUE(call("/cc8/steering_trajectory_controller/query_state", query));
+  EXPECT_NEAR(query.response.position[2], 0.25, 1e-9);
+  query.request.time = ::ros::Time(now);
+  ASSERT_TRUE(call("/cc8/steering_trajectory_controller/query_state", query));
+  EXPECT_GT(query.response.velocity[2], 0.0) << "under way at " << now << " s";
+  std::printf("query_state at t=%.3f s: steering_RL %.4f rad, %.4f rad/s\n", now, query.response.position[2],
+              query.response.velocity[2]);
 }
 
 }  // namespace
