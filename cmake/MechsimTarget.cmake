@@ -44,7 +44,7 @@ function(mechsim_test name)
     # Through the precompiled header, GCC 12 at -O3 reports its known false positives on inlined
     # std::string code ("literal" + std::string: GCC bugs 105329, 105651; memcpy bounds) that it
     # keeps quiet about when the same headers are parsed in the source. Test programs only.
-    target_compile_options(${name} PRIVATE -Wno-stringop-overflow -Wno-restrict -Wno-array-bounds)
+    target_compile_options(${name} PRIVATE -Wno-stringop-overflow -Wno-stringop-overread -Wno-restrict -Wno-array-bounds)
   endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
                        PROPERTIES TIMEOUT 300 LABELS "${ARG_LABELS}")
