@@ -14,7 +14,7 @@ cmake -S . -B "build/$flavour" -G Ninja "${flags[@]}" >/dev/null
 targets=()
 if [[ "${2:-}" == "unit-tests" ]]; then
   # <layer>_test programs hold the unit tests (conformance, scenario and cli programs are separate).
-  mapfile -t targets < <(ninja -C "build/$flavour" -t targets all | sed -n 's/^\([a-z0-9]*_test\): phony$/\1/p' \
+  mapfile -t targets < <(ninja -C "build/$flavour" -t targets all | sed -n 's/^\([a-z0-9]*_\(test\|fuzz\)\): phony$/\1/p' \
                            | grep -vE '_(conformance|scenario)_test$|^cli_test$' | sort -u)
   ((${#targets[@]})) || { echo "build.sh: no unit-test targets found" >&2; exit 1; }
   targets=(--target "${targets[@]}")

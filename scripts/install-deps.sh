@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package mechsim needs to build, test and run. Idempotent.
-# Usage: scripts/install-deps.sh [--with-ros]
+# Usage: scripts/install-deps.sh [--with-ros] [--with-fuzz]
 set -euo pipefail
 
 packages=(
@@ -12,7 +12,16 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )
-if [[ "${1:-}" == "--with-ros" ]]; then
+with_ros=0
+for arg in "$@"; do
+  case "$arg" in
+    --with-ros) with_ros=1 ;;
+    # scripts/fuzz.sh: Clang's libFuzzer and sanitizers.
+    --with-fuzz) packages+=(clang) ;;
+    *) echo "install-deps: unknown option '$arg' (--with-ros, --with-fuzz)" >&2; exit 2 ;;
+  esac
+done
+if ((with_ros)); then
   # ROS 1 (Noetic-era, as Debian packages it) for src/ros: roscpp and actionlib, the C++ headers
   # of the message packages mechsim exchanges, their .msg definitions under /usr/share/<pkg>/msg
   # (gencpp's include paths), and the generators (genaction.py ships with ros-actionlib-msgs).

@@ -51,7 +51,8 @@ Attrs check_attrs(Context& ctx, const Node* n, std::initializer_list<const char*
   }
   for (const char* o : optional) out.values.push_back(n->attr(o));
   std::string extra;
-  for (const auto& [k, v] : n->attrs) {
+  for (const auto& attr : n->attrs) {
+    const std::string& k = attr.first;  // a structured binding cannot be captured by Clang 14's lambdas
     const bool known = std::any_of(required.begin(), required.end(), [&](const char* r) { return k == r; }) ||
                        std::any_of(optional.begin(), optional.end(), [&](const char* o) { return k == o; });
     if (!known && !k.starts_with("xmlns:")) extra += (extra.empty() ? "" : ", ") + k;

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Fuzzes mechsim's readers with libFuzzer (Clang, AddressSanitizer + UBSan): each fuzz target
+# (src/<layer>/fuzz/NAME_fuzz.cpp) runs for SECONDS on a corpus seeded from fuzz/regressions/NAME,
+# the project's own robots and scenarios and, when present, ../shared (robots, xacro's conformance
+# cases, terrain). Crashes, hangs (> 1 s per input) and out-of-memory inputs are saved under
+# build/fuzz/artifacts/NAME; a fixed one is added to fuzz/regressions/NAME, which every ordinary
+# build replays as a unit test.
+# Usage: scripts/fuzz.sh [NAME|all] [SECONDS per target, default 60]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+which=${1:-all}
+seconds=${2:-60}
+[[ "$seconds" =~ ^[0-9]+$ ]] || { echo "fuzz.sh: SECONDS must be a whole number, not '$seconds'" >&2; exit 2; }
+scripts/install-deps.sh --with-fuzz
+build=build/fuzz
+# -O1 keeps asserts and sanitizer reports readable and fuzzes at nearly full speed.
+cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O1 \
+  -DMECHSIM_FUZZ=ON -DMECHSIM_ROS=OFF -DMECHSIM_BENCHMARKS=OFF -DMECHSIM_WERROR=OFF >/dev/null
+mapfile -t all < <(ninja -C "$build" -t targets all | sed -n 's/^\([a-z0-9]*_fuzz\): phony$/\1/p' | sort -u)
+if [[ "$which" == all ]]; then
+  targets=("${all[@]}")
+else
+  [[ " ${all[*]} " == *" $which "* ]] || { echo "fuzz.sh: no fuzz target '$which' (targets: ${all[*]})" >&2; exit 2; }
+  targets=("$which")
+fi
+cmake --build "$build" -j "${MECHSIM_JOBS:-2}" --target "${targets[@]}"
+
+shared=../shared
+# Seeds beyond the regression inputs: files each target reads in real use.
+seed() {
+  local name=$1 corpus=$2
+  case "$name" in
+    xacro_fuzz)
+      find robots -name '*.xacro' -o -name '*.urdf' 2>/dev/null | head -200
+      [[ -d $shared ]] && find "$shared/conformance/xacro" "$shared/robots" -name '*.xacro' -size -200k 2>/dev/null | head -400 ;;
+    urdf_fuzz | mjcf_fuzz)
+      find robots -name '*.urdf' 2>/dev/null
+      [[ -d $shared ]] && find "$shared/robots/reference" -name '*.urdf' 2>/dev/null ;;
+    scenario_fuzz) find robots -path '*scenarios*' -name '*.yaml' 2>/dev/null ;;
+    controllers_fuzz)
+      find robots -name '*.yaml' -not -path '*scenarios*' 2>/dev/null
+      [[ -d $shared ]] && find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100 ;;
+  esac | while read -r f; do cp -f "$f" "$corpus/seed_$(basename "$(dirname "$f")")_$(basename "$f")"; done
+}
+
+# Without the allocation stack of every malloc (ASan's default keeps 30 frames) the targets run
+# about twice as fast; a finding is then replayed through its regression test for the full report.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-malloc_context_size=0:quarantine_size_mb=16}
+status=0
+summary=()
+for t in "${targets[@]}"; do
+  corpus=$build/corpus/$t
+  artifacts=$build/artifacts/$t
+  mkdir -p "$corpus" "$artifacts"
+  cp -f fuzz/regressions/"$t"/* "$corpus"/ 2>/dev/null || true
+  seed "$t" "$corpus"
+  case "$t" in
+    xacro_fuzz) dict=(-dict=fuzz/dicts/xacro.dict) ;;
+    urdf_fuzz | mjcf_fuzz) dict=(-dict=fuzz/dicts/urdf.dict) ;;
+    controllers_fuzz | scenario_fuzz) dict=(-dict=fuzz/dicts/yaml.dict) ;;
+    *) dict=() ;;
+  esac
+  before=$(find "$artifacts" -type f | wc -l)
+  log=$build/$t.log
+  echo "fuzz.sh: $t for $seconds s (corpus $(find "$corpus" -type f | wc -l) inputs)" >&2
+  "$build/bin/$t" "$corpus" "${dict[@]}" -max_total_time="$seconds" -timeout=1 -rss_limit_mb=2048 -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1 || true
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  found=$(( $(find "$artifacts" -type f | wc -l) - before ))
+  summary+=("$(printf '%-18s %12s runs %8s/s  %d new finding(s)' "$t" "${runs:-?}" "${rate:-?}" "$found")")
+  if ((found > 0)) || [[ -z "$runs" ]]; then
+    status=1
+    echo "fuzz.sh: $t: see $log and $artifacts" >&2
+  fi
+done
+printf '%s\n' "${summary[@]}"
+exit $status
