@@ -8,6 +8,7 @@
 # Usage: scripts/fuzz.sh [NAME|all] [SECONDS per target, default 60]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root=$PWD
 which=${1:-all}
 seconds=${2:-60}
 [[ "$seconds" =~ ^[0-9]+$ ]] || { echo "fuzz.sh: SECONDS must be a whole number, not '$seconds'" >&2; exit 2; }
@@ -63,8 +64,9 @@ for t in "${targets[@]}"; do
   before=$(find "$artifacts" -type f | wc -l)
   log=$build/$t.log
   echo "fuzz.sh: $t for $seconds s (corpus $(find "$corpus" -type f | wc -l) inputs)" >&2
-  "$build/bin/$t" "$corpus" "${dict[@]}" -max_total_time="$seconds" -timeout=1 -rss_limit_mb=2048 -max_len=65536 \
-    -print_final_stats=1 -artifact_prefix="$artifacts/" >"$log" 2>&1 || true
+  # Run inside the build folder: MuJoCo writes MUJOCO_LOG.TXT into the working directory.
+  (cd "$build" && "bin/$t" "corpus/$t" "${dict[@]/-dict=/-dict=$root/}" -max_total_time="$seconds" -timeout=1 \
+     -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="artifacts/$t/") >"$log" 2>&1 || true
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   found=$(( $(find "$artifacts" -type f | wc -l) - before ))

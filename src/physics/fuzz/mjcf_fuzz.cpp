@@ -1,7 +1,7 @@
 // Fuzz target: a URDF that parses (leniently) is planned into bodies, written as MJCF, compiled by
 // MuJoCo and stepped: the path every robot takes into the physics. An input may fail only with
 // DescriptionError (the URDF) or PhysicsError (the model cannot be built); a model that builds
-// must step without crashing (a diverging step is reported by the step's status, not a crash).
+// must step without crashing (a diverging step or a full arena is reported by the step's status).
 
 #include <cstddef>
 #include <cstdint>
@@ -24,7 +24,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::string> warnings;
   try {
     const d::RobotModel robot = d::parse_urdf_string(xml, "fuzz.urdf", options, &warnings);
-    p::Physics physics(p::PhysicsModel::build(robot));
+    // The arena may grow to 1000 constraints (the default allows 8000, ~0.8 GB zeroed): a
+    // model whose every geom touches every other (a 1e9 m sphere) then takes its overflow path
+    // within the fuzzer's second instead of a run's worth of memory.
+    p::BuildOptions build;
+    build.max_arena = p::ArenaSize{2000, 1000};
+    p::Physics physics(p::PhysicsModel::build(robot, build));
     for (int i = 0; i < 20; ++i) (void)physics.step();
   } catch (const d::DescriptionError&) {
   } catch (const p::PhysicsError&) {
