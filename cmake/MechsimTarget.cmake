@@ -46,8 +46,15 @@ function(mechsim_test name)
     # keeps quiet about when the same headers are parsed in the source. Test programs only.
     target_compile_options(${name} PRIVATE -Wno-stringop-overflow -Wno-stringop-overread -Wno-restrict -Wno-array-bounds)
   endif()
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-                       PROPERTIES TIMEOUT 300 LABELS "${ARG_LABELS}")
+  if(MECHSIM_SANITIZE)
+    # One CTest test per program: under the sanitizers a process takes ~0.5 s to start, and
+    # one process per test (gtest_discover_tests) spent more time starting than testing.
+    add_test(NAME ${name} COMMAND ${name})
+    set_tests_properties(${name} PROPERTIES TIMEOUT 1800 LABELS "${ARG_LABELS}")
+  else()
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+                         PROPERTIES TIMEOUT 300 LABELS "${ARG_LABELS}")
+  endif()
 endfunction()
 
 # mechsim_fuzz(NAME SOURCES ... DEPS ...): a fuzz target (a source defining LLVMFuzzerTestOneInput).
