@@ -3,6 +3,7 @@
 // `command` topic, and the JointTrajectoryControllerState `state` topic.
 #include <gmock/gmock.h>
 
+#include <atomic>
 #include <cmath>
 #include <mutex>
 
@@ -68,14 +69,16 @@ steering_trajectory_controller:
   actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> client(
       "/cc8/steering_trajectory_controller/follow_joint_trajectory", true);
   ASSERT_TRUE(client.waitForServer(::ros::Duration(10.0)));
-  int feedback_count = 0;
+  // Feedback and result arrive on separate topics (separate connections, callbacks on the
+  // spinner's two threads): the last feedback may be handled after the result.
+  std::atomic<int> feedback_count{0};
   control_msgs::FollowJointTrajectoryGoal goal;
   goal.trajectory = to(0.3, 1.0);
   client.sendGoal(goal, {}, {}, [&](const control_msgs::FollowJointTrajectoryFeedbackConstPtr&) { ++feedback_count; });
   ASSERT_TRUE(client.waitForResult(::ros::Duration(15.0)));
   EXPECT_EQ(client.getState(), actionlib::SimpleClientGoalState::SUCCEEDED) << client.getState().getText();
   EXPECT_EQ(client.getResult()->error_code, control_msgs::FollowJointTrajectoryResult::SUCCESSFUL);
-  EXPECT_GT(feedback_count, 0);
+  EXPECT_TRUE(wait_until([&] { return feedback_count.load() > 0; }, 2.0)) << "no feedback for the goal";
   EXPECT_TRUE(wait_until(
       [&] {
         std::lock_guard<std::mutex> l(m);
