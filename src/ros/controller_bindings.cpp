@@ -22,6 +22,9 @@
 //                     query_state is pr2_controllers_msgs/QueryTrajectoryState
 //   Pr2GripperController  <controller>/command (pr2_controllers_msgs/Pr2GripperCommand),
 //                     <controller>/gripper_action (pr2_controllers_msgs/Pr2GripperCommandAction)
+//   LaserScannerTrajController  <controller>/set_periodic_cmd and set_traj_cmd, each a topic
+//                     (pr2_msgs/PeriodicCmd, LaserTrajCmd) and a service (pr2_msgs/SetPeriodicCmd,
+//                     SetLaserTrajCmd: start_time is the sim time of the call; false when refused)
 //   Pr2Odometry       <controller>/odom at odom_publish_rate (default 30 Hz) and odom ->
 //                     base_footprint on /tf unless publish_tf is false (the PR2's parameters)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
@@ -40,6 +43,10 @@
 #include <pr2_controllers_msgs/JointTrajectoryControllerState.h>
 #include <pr2_controllers_msgs/Pr2GripperCommand.h>
 #include <pr2_controllers_msgs/QueryTrajectoryState.h>
+#include <pr2_msgs/LaserTrajCmd.h>
+#include <pr2_msgs/PeriodicCmd.h>
+#include <pr2_msgs/SetLaserTrajCmd.h>
+#include <pr2_msgs/SetPeriodicCmd.h>
 
 #include "ros/pr2_actions.hpp"
 #include "ros/publish_helpers.hpp"
@@ -65,7 +72,10 @@ struct SimNode::Binding {
   std::unique_ptr<TrajectoryActionServer> action;
   std::unique_ptr<Pr2TrajectoryActionServer> pr2_action;  // JointTrajectoryActionController only
   std::unique_ptr<GripperActionServer> gripper_action;
-  ::ros::ServiceServer service;  // query_state
+  ::ros::ServiceServer service;  // query_state; set_periodic_cmd
+  // The laser tilt controller's second topic and service (set_traj_cmd).
+  ::ros::Subscriber subscriber2;
+  ::ros::ServiceServer service2;
 };
 
 namespace {
@@ -151,6 +161,38 @@ template <class Msg, class B, class Write>
     if (self && self->alive && !write(self->port, *msg, &error)) {
       ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << self->port.controller << ": " << what << " rejected: " << error);
     }
+  });
+}
+
+bool write_scan(const PortRef& p, const pr2_msgs::PeriodicCmd& c, std::string* error) {
+  return write_periodic_command(p, c.profile, c.period, c.amplitude, c.offset, error);
+}
+
+bool write_scan(const PortRef& p, const pr2_msgs::LaserTrajCmd& c, std::string* error) {
+  std::vector<double> times;
+  times.reserve(c.time_from_start.size());
+  for (const ::ros::Duration& d : c.time_from_start) times.push_back(d.toSec());
+  return write_laser_traj_command(p, c.profile, c.position, times, c.max_velocity, c.max_acceleration, error);
+}
+
+// set_periodic_cmd / set_traj_cmd as services: the command is written to the port; start_time
+// is `now()` (the sim time of the call, as the PR2's node answers ros::Time::now()).
+template <class Srv, class Binding, class Now>
+::ros::ServiceServer advertise_scan(::ros::NodeHandle& nh, const std::string& name, std::mutex& mutex,
+                                    std::weak_ptr<Binding> weak, Now now) {
+  using Req = typename Srv::Request;
+  using Res = typename Srv::Response;
+  return nh.advertiseService<Req, Res>(name, [&mutex, weak, name, now](Req& req, Res& res) {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto self = weak.lock();
+    if (!self || !self->alive) return false;
+    std::string error;
+    if (!write_scan(self->port, req.command, &error)) {
+      ROS_WARN_STREAM("mechsim: " << self->port.controller << "/" << name << ": " << error);
+      return false;
+    }
+    res.start_time = ::ros::Time(now());
+    return true;
   });
 }
 
@@ -279,6 +321,18 @@ void SimNode::bind(const std::string& controller) {
                             : advertise_query<control_msgs::QueryTrajectoryState>(controller_nh, topic,
                                                                                   bindings_mutex_, weak);
         break;
+      case PortType::ScanCommand: {
+        const auto now = [this] { return bridge_->time(); };
+        b->subscriber = subscribe_command<pr2_msgs::PeriodicCmd>(
+            controller_nh, "set_periodic_cmd", bindings_mutex_, weak, "set_periodic_cmd",
+            [](const PortRef& p, const pr2_msgs::PeriodicCmd& msg, std::string* error) { return write_scan(p, msg, error); });
+        b->subscriber2 = subscribe_command<pr2_msgs::LaserTrajCmd>(
+            controller_nh, "set_traj_cmd", bindings_mutex_, weak, "set_traj_cmd",
+            [](const PortRef& p, const pr2_msgs::LaserTrajCmd& msg, std::string* error) { return write_scan(p, msg, error); });
+        b->service = advertise_scan<pr2_msgs::SetPeriodicCmd>(controller_nh, "set_periodic_cmd", bindings_mutex_, weak, now);
+        b->service2 = advertise_scan<pr2_msgs::SetLaserTrajCmd>(controller_nh, "set_traj_cmd", bindings_mutex_, weak, now);
+        break;
+      }
       case PortType::Other:
         continue;
     }
@@ -318,7 +372,9 @@ void SimNode::unbind(const std::string& controller) {
       b->gripper_action.reset();
     }
     b->subscriber.shutdown();
+    b->subscriber2.shutdown();
     b->service.shutdown();
+    b->service2.shutdown();
     b->publisher.shutdown();
     b->tf_publisher.shutdown();
   }

@@ -13,7 +13,11 @@
 
 #include <boost/make_shared.hpp>
 
+#include <pr2_msgs/PressureState.h>
+
+#include "ros/publish_helpers.hpp"
 #include "ros/sensor_messages.hpp"
+#include "sensors/pr2_fingertip_pressure.hpp"
 
 namespace mechsim::ros {
 
@@ -66,7 +70,19 @@ struct SensorPublishers::Output {
   std::mutex recount_mutex;
 };
 
+// /pressure/<side>_gripper_motor from the side's two fingertip contact sensors.
+struct SensorPublishers::Pressure {
+  std::string topic;
+  Output* left = nullptr;   // <side>_gripper_l_finger_tip_contact_sensor
+  Output* right = nullptr;  // <side>_gripper_r_finger_tip_contact_sensor
+  ::ros::Publisher publisher;
+  std::atomic<int> subscribers{0};  // kept by the connect/disconnect callbacks
+  double next_due = 0.0;            // s of sim time
+};
+
 namespace {
+
+constexpr double kPressurePeriod = 1.0 / 25.0;  // s of sim time: the real PR2's 25 Hz
 
 // advertise() with callbacks that recount the output's subscribers.
 template <class M>
@@ -207,7 +223,56 @@ SensorPublishers::SensorPublishers(::ros::NodeHandle root, SimBridge& bridge)
     topics_.push_back(spec.name + " -> " + topic + " (" + type + ", frame " + o.frame + ")");
     outputs_.push_back(std::move(out));
   }
+  add_pressure("l");
+  add_pressure("r");
   for (const std::string& t : topics_) ROS_INFO_STREAM("mechsim: sensor " << t);
+}
+
+void SensorPublishers::add_pressure(const std::string& side) {
+  auto p = std::make_unique<Pressure>();
+  for (const std::unique_ptr<Output>& o : outputs_) {
+    if (o->kind != Kind::Contacts) continue;
+    if (o->name == side + "_gripper_l_finger_tip_contact_sensor") p->left = o.get();
+    if (o->name == side + "_gripper_r_finger_tip_contact_sensor") p->right = o.get();
+  }
+  if (!p->left || !p->right) return;
+  // The pads' geometry is in the fingertip link's frame: the bumpers must report in it.
+  for (Output* o : {p->left, p->right}) {
+    const std::string link = tf_frame(bridge_.sensor_spec(o->sensor).link);
+    if (o->frame != link) {
+      ROS_WARN_STREAM("mechsim: " << o->name << " reports contacts in '" << o->frame << "', not in its link '" << link
+                                  << "': no /pressure/" << side << "_gripper_motor");
+      return;
+    }
+  }
+  p->topic = "/pressure/" + side + "_gripper_motor";
+  Pressure& ref = *p;
+  // A pressure subscriber makes both fingertip sensors sample.
+  auto count = [&ref](int change) {
+    ref.subscribers.fetch_add(change, std::memory_order_relaxed);
+    ref.left->recount();
+    ref.right->recount();
+  };
+  p->publisher = root_.advertise<pr2_msgs::PressureState>(
+      p->topic, 10, [count](const ::ros::SingleSubscriberPublisher&) { count(1); },
+      [count](const ::ros::SingleSubscriberPublisher&) { count(-1); });
+  p->left->triggers.push_back(p->publisher);
+  p->right->triggers.push_back(p->publisher);
+  topics_.push_back(p->left->name + " + " + p->right->name + " -> " + p->topic + " (pr2_msgs/PressureState, 25 Hz)");
+  pressures_.push_back(std::move(p));
+}
+
+void SensorPublishers::publish_pressure(Pressure& p, double time) {
+  p.next_due = next_due_after(time, kPressurePeriod);
+  const auto* l = std::get_if<sensors::ContactsReading>(&bridge_.sensor_reading(p.left->sensor).value);
+  const auto* r = std::get_if<sensors::ContactsReading>(&bridge_.sensor_reading(p.right->sensor).value);
+  if (!l || !r) return;
+  const auto left = sensors::fingertip_pressure(*l, sensors::Fingertip::Left);
+  const auto right = sensors::fingertip_pressure(*r, sensors::Fingertip::Right);
+  send<pr2_msgs::PressureState>(p.publisher, ::ros::Time(time), "", [&](pr2_msgs::PressureState& m) {
+    m.l_finger_tip.assign(left.begin(), left.end());
+    m.r_finger_tip.assign(right.begin(), right.end());
+  });
 }
 
 SensorPublishers::~SensorPublishers() = default;
@@ -293,6 +358,8 @@ void SensorPublishers::publish() {
           send<sensor_msgs::Imu>(pub, stamp, o.frame, [&](auto& m) { fill_imu(*v, m); });
         break;
       case Kind::Contacts:
+        // A fingertip's sensor may sample for /pressure only.
+        if (pub.getNumSubscribers() == 0) break;
         if (const auto* v = std::get_if<sensors::ContactsReading>(&r.value))
           send<gazebo_msgs::ContactsState>(pub, stamp, o.frame, [&](auto& m) { fill_contacts(*v, m); });
         break;
@@ -310,6 +377,13 @@ void SensorPublishers::publish() {
         break;
       case Kind::Camera: publish_camera(o, r); break;
     }
+  }
+  for (const std::unique_ptr<Pressure>& p : pressures_) {
+    if (p->subscribers.load(std::memory_order_relaxed) <= 0) continue;
+    const double time = bridge_.time();
+    if (time + 1e-9 < p->next_due) continue;
+    if (cpu_start < 0.0) cpu_start = thread_cpu_seconds();
+    publish_pressure(*p, time);
   }
   if (pushed_) sender_->wake();
   pushed_ = false;

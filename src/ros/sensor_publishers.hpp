@@ -6,6 +6,9 @@
 // sensor_msgs/Image + CameraInfo (+ a 32FC1 depth Image, its CameraInfo and a PointCloud2 for
 // depth cameras) of gazebo_ros_camera, _multicamera, _depth_camera, _openni_kinect and
 // _prosilica; on the topic and with the frame the plugin would use, stamped in simulated time.
+// The PR2's fingertip pressure (pr2_msgs/PressureState on /pressure/<side>_gripper_motor, 25 Hz
+// of sim time, as the real grippers publish it) is made from the fingertip contact sensors, as
+// pr2_gazebo's contact-to-pressure translator did (sensors/pr2_fingertip_pressure.hpp).
 // Plain publishers on image_transport's raw topic names: Debian packages image_transport but no
 // transport plugin (compressed, theora), so it would add the same raw topic only.
 //
@@ -64,11 +67,14 @@ class SensorPublishers {
   const std::vector<std::string>& topics() const { return topics_; }
   SensorPublishStats stats() const;
 
-  struct Output;  // sensor_publishers.cpp, camera_publishers.cpp
+  struct Output;    // sensor_publishers.cpp, camera_publishers.cpp
+  struct Pressure;  // sensor_publishers.cpp
 
  private:
   void add_camera(std::size_t sensor, const description::SensorSpec& spec, const std::string& frame);
   void publish_camera(Output& o, const sensors::SensorReading& r);
+  void add_pressure(const std::string& side);
+  void publish_pressure(Pressure& p, double time);
   // A new message of type M stamped and framed, filled by fill(M&), queued for the sender.
   template <class M, class Fill>
   void send(const ::ros::Publisher& publisher, const ::ros::Time& stamp, const std::string& frame, Fill&& fill);
@@ -77,6 +83,7 @@ class SensorPublishers {
   ::ros::NodeHandle root_;
   SimBridge& bridge_;
   std::vector<std::unique_ptr<Output>> outputs_;
+  std::vector<std::unique_ptr<Pressure>> pressures_;
   std::vector<std::string> topics_;
   SensorPublishStats stats_;
   bool pushed_ = false;  // this tick queued messages: wake the sender

@@ -1,87 +1,43 @@
 #include "controllers/pr2/laser_scanner_traj_controller.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "control/angles.hpp"
 
 namespace mechsim::control {
 
-const char* periodic_profile_name(PeriodicProfile p) noexcept {
-  switch (p) {
-    case PeriodicProfile::Hold: return "hold";
-    case PeriodicProfile::Linear: return "linear";
-    case PeriodicProfile::Sine: return "sine";
-  }
-  return "?";
-}
-
-bool parse_periodic_profile(std::string_view text, PeriodicProfile& out) {
-  if (text == "linear") {
-    out = PeriodicProfile::Linear;
-  } else if (text == "sine") {
-    out = PeriodicProfile::Sine;
-  } else {
-    return false;
-  }
+bool ScanCommandPort::publish(const LaserScanProfile& profile) {
+  std::lock_guard<std::mutex> lock(write_mutex_);
+  const std::uint64_t sequence = accepted_.load(std::memory_order_relaxed) + 1;
+  buffer_.write(Tagged{profile, sequence});
+  accepted_.store(sequence, std::memory_order_release);
   return true;
 }
 
-void periodic_profile_sample(const PeriodicCommand& c, double t, double& position, double& velocity) noexcept {
-  const double phase = std::fmod(std::fmax(t, 0.0), c.period) / c.period;  // [0, 1)
-  switch (c.profile) {
-    case PeriodicProfile::Hold:
-      position = c.offset;
-      velocity = 0.0;
-      return;
-    case PeriodicProfile::Linear: {
-      const double speed = 4.0 * c.amplitude / c.period;
-      if (phase < 0.5) {
-        position = c.offset - c.amplitude + 4.0 * c.amplitude * phase;
-        velocity = speed;
-      } else {
-        position = c.offset + c.amplitude - 4.0 * c.amplitude * (phase - 0.5);
-        velocity = -speed;
-      }
-      return;
-    }
-    case PeriodicProfile::Sine: {
-      const double w = 2.0 * std::numbers::pi / c.period;
-      position = c.offset + c.amplitude * std::sin(2.0 * std::numbers::pi * phase);
-      velocity = c.amplitude * w * std::cos(2.0 * std::numbers::pi * phase);
-      return;
-    }
-  }
-  position = c.offset;
-  velocity = 0.0;
-}
-
-bool PeriodicCommandPort::write(const PeriodicCommand& c, std::string* error) {
-  const auto fail = [&](const std::string& why) {
+bool ScanCommandPort::write(const PeriodicCommand& c, std::string* error) {
+  LaserScanProfile p;
+  std::string why;
+  if (!LaserScanProfile::from_periodic(c, limits_, p, &why)) {
     return reject("port '" + name() + "': rejected periodic command (" + why + "); the previous profile stays", error);
-  };
-  if (!std::isfinite(c.period) || !std::isfinite(c.amplitude) || !std::isfinite(c.offset)) return fail("a value is not finite");
-  if (!(c.period > 0.0)) return fail("period " + std::to_string(c.period) + " s is not > 0");
-  if (c.amplitude < 0.0) return fail("amplitude " + std::to_string(c.amplitude) + " rad is negative");
-  switch (c.profile) {
-    case PeriodicProfile::Hold:
-    case PeriodicProfile::Linear:
-    case PeriodicProfile::Sine:
-      break;
-    default:
-      return fail("unknown profile " + std::to_string(static_cast<int>(c.profile)));
   }
-  buffer_.write(c);
-  accepted_.fetch_add(1, std::memory_order_acq_rel);
-  return true;
+  return publish(p);
 }
 
-bool PeriodicCommandPort::write(std::string_view profile, double period, double amplitude, double offset,
-                                std::string* error) {
+bool ScanCommandPort::write(const LaserTrajCommand& c, std::string* error) {
+  LaserScanProfile p;
+  std::string why;
+  if (!LaserScanProfile::from_trajectory(c, limits_, p, &why)) {
+    return reject("port '" + name() + "': rejected trajectory command (" + why + "); the previous profile stays", error);
+  }
+  return publish(p);
+}
+
+bool ScanCommandPort::write(std::string_view profile, double period, double amplitude, double offset,
+                            std::string* error) {
   PeriodicCommand c{PeriodicProfile::Hold, period, amplitude, offset};
   if (!parse_periodic_profile(profile, c.profile)) {
     return reject("port '" + name() + "': rejected unknown profile '" + std::string(profile) +
-                      "' (linear or sine); the previous profile stays",
+                      "' (linear, blended_linear or sine); the previous profile stays",
                   error);
   }
   return write(c, error);
@@ -92,12 +48,25 @@ bool LaserScannerTrajController::init(RobotHardware& hardware, const Params& par
   if (!params.has("joint")) throw ControllerConfigError("no joint given: parameter " + joint_path + " not found");
   joint_ = hardware.claim_joint(params.get<std::string>("joint"), HardwareInterface::Effort, joint_path);
   pid_.init(params, "pid");
+  ScanLimits limits;
+  const double urdf_velocity = joint_.info().limits ? joint_.info().limits->velocity : 0.0;
+  if (urdf_velocity > 0.0) limits.max_velocity = urdf_velocity;
+  limits.max_velocity = params.get<double>("max_velocity", limits.max_velocity);
+  limits.max_acceleration = params.get<double>("max_acceleration", limits.max_acceleration);
+  if (!(limits.max_velocity > 0.0) || !std::isfinite(limits.max_velocity)) {
+    throw ControllerConfigError("parameter " + join_param_path(params.path(), "max_velocity") + " must be finite and > 0 (rad/s)");
+  }
+  if (!(limits.max_acceleration > 0.0) || !std::isfinite(limits.max_acceleration)) {
+    throw ControllerConfigError("parameter " + join_param_path(params.path(), "max_acceleration") +
+                                " must be finite and > 0 (rad/s^2)");
+  }
+  command_.set_limits(limits);
   if (params.has("profile")) {
     const std::string profile = params.get<std::string>("profile");
     PeriodicCommand c;
     if (!parse_periodic_profile(profile, c.profile)) {
       throw ControllerConfigError("parameter " + join_param_path(params.path(), "profile") + ": unknown profile '" +
-                                  profile + "' (linear or sine)");
+                                  profile + "' (linear, blended_linear or sine)");
     }
     c.period = params.get<double>("period");
     c.amplitude = params.get<double>("amplitude");
@@ -109,6 +78,11 @@ bool LaserScannerTrajController::init(RobotHardware& hardware, const Params& par
       throw ControllerConfigError("parameter " + join_param_path(params.path(), "amplitude") +
                                   " must be finite and >= 0 (rad), offset finite");
     }
+    LaserScanProfile checked;
+    std::string why;
+    if (!LaserScanProfile::from_periodic(c, limits, checked, &why)) {
+      throw ControllerConfigError("parameters " + join_param_path(params.path(), "profile") + ": " + why);
+    }
     initial_ = c;
   }
   state_.init(JointControllerState{});
@@ -116,25 +90,27 @@ bool LaserScannerTrajController::init(RobotHardware& hardware, const Params& par
 }
 
 void LaserScannerTrajController::starting(double time) {
-  active_ = initial_;
-  if (active_.profile == PeriodicProfile::Hold) active_.offset = joint_.position();
-  command_.reset_from_rt(active_);
-  last_command_seq_ = command_.accepted();
+  LaserScanProfile start = LaserScanProfile::hold(joint_.position());
+  if (initial_) {
+    // Checked in init(): it cannot fail here.
+    LaserScanProfile::from_periodic(*initial_, command_.limits(), start, nullptr);
+  }
+  command_.reset_from_rt(start);
+  active_ = &command_.read_from_rt();
+  active_sequence_ = active_->sequence;
   profile_start_ = time;
   pid_.reset();
 }
 
 UpdateStatus LaserScannerTrajController::update(double time, double period) {
   if (!(period > 0.0)) return UpdateStatus::Ok();
-  const PeriodicCommand& c = command_.read_from_rt();
-  const std::uint64_t seq = command_.accepted();
-  if (seq != last_command_seq_) {
-    last_command_seq_ = seq;
-    active_ = c;
+  active_ = &command_.read_from_rt();
+  if (active_->sequence != active_sequence_) {
+    active_sequence_ = active_->sequence;
     profile_start_ = time;
   }
   double set_point = 0.0, rate = 0.0;
-  periodic_profile_sample(active_, time - profile_start_, set_point, rate);
+  active_->profile.sample(time - profile_start_, set_point, rate);
   const double limited = enforce_position_limits(joint_.info(), set_point);
   if (limited != set_point) rate = 0.0;
   const double error = position_error(joint_.info(), joint_.position(), limited);

@@ -1,74 +1,80 @@
 #pragma once
 // pr2_mechanism_controllers/LaserScannerTrajController: sweeps the PR2's tilting laser
-// (laser_tilt_mount_joint) through a periodic profile with a position PID on the effort
-// interface. The profile is set at run time through the "command" port (pr2_msgs/PeriodicCmd:
-// profile, period, amplitude, offset; the set_periodic_cmd service and topic of the PR2) and
-// restarts from phase 0 at the tick that takes it.
-//
-// Profiles (t = time since the profile was taken, T = period, A = amplitude, c = offset):
-//   "linear"  the PR2's: a triangle wave from c - A up to c + A at T/2 and back down at T,
-//             at constant speed 4A/T
-//   "sine"    c + A sin(2 pi t / T) (smooth; starts at c going up)
-// The set point is clamped into the joint's URDF limits; the PID gets the profile's rate as
-// the error rate (error_dot = desired rate - joint rate).
+// (laser_tilt_mount_joint) through a looping profile (laser_scan_profile.hpp) with a position PID
+// on the effort interface. The profile is set at run time through the "command" port: a periodic
+// command (pr2_msgs/PeriodicCmd: linear, blended_linear, or mechsim's sine) or a via-point
+// trajectory (pr2_msgs/LaserTrajCmd: linear or blended_linear); the PR2's set_periodic_cmd and
+// set_traj_cmd services and topics. A new profile starts from its beginning at the tick that
+// takes it.
+// The set point is clamped into the joint's URDF limits; the PID gets the profile's rate as the
+// error rate (error_dot = desired rate - joint rate).
 //
 // Parameters (under the controller's namespace; units in brackets):
 //   type       pr2_mechanism_controllers/LaserScannerTrajController
 //   joint      e.g. laser_tilt_mount_joint
 //   pid        {p, i, d, i_clamp, ...}  [N m/rad ...]
+//   max_velocity [rad/s], max_acceleration [rad/s^2]
+//              the limits trajectories are timed with when a command gives none (defaults:
+//              the joint's URDF velocity limit, else 2 rad/s; 20 rad/s^2)
 //   profile, period [s], amplitude [rad], offset [rad]
 //              optional (a mechsim addition): a profile to run from start; without them the
 //              controller holds the position it started at until a command arrives
 //
 // Ports:
-//   "command"  PeriodicCommandPort (non-finite values, period <= 0, amplitude < 0 and unknown
-//              profiles are rejected and counted; the previous profile stays)
+//   "command"  ScanCommandPort (bad values, unknown profiles: rejected and counted; the previous
+//              profile stays)
 //   "state"    StatePort<JointControllerState>: set point (rad), position, velocity, error =
 //              set point - position, effort command (N m), gains
 //   "gains"    PidGainsPort
 
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "control/controller.hpp"
 #include "control/pid.hpp"
+#include "controllers/pr2/laser_scan_profile.hpp"
 
 namespace mechsim::control {
 
 inline constexpr const char* kLaserScannerTrajControllerType = "pr2_mechanism_controllers/LaserScannerTrajController";
 
-enum class PeriodicProfile : unsigned char { Hold, Linear, Sine };
-const char* periodic_profile_name(PeriodicProfile p) noexcept;  // "hold", "linear", "sine"
-bool parse_periodic_profile(std::string_view text, PeriodicProfile& out);  // "linear", "sine"
-
-// pr2_msgs/PeriodicCmd. Hold keeps `offset` (rad).
-struct PeriodicCommand {
-  PeriodicProfile profile = PeriodicProfile::Hold;
-  double period = 1.0;     // s, > 0
-  double amplitude = 0.0;  // rad, >= 0
-  double offset = 0.0;     // rad
-};
-
-// The profile's position (rad) and rate (rad/s) at `t` seconds from its start (t >= 0).
-void periodic_profile_sample(const PeriodicCommand& command, double t, double& position, double& velocity) noexcept;
-
-class PeriodicCommandPort : public Port, public RejectionLog {
+// The profile port: commands are checked and timed (laser_scan_profile.hpp) when written, outside
+// the tick; the tick swaps in the newest one.
+class ScanCommandPort : public Port, public RejectionLog {
  public:
   using Port::Port;
   PortKind kind() const override { return PortKind::PeriodicCommand; }
+  // Non-real-time, before the tick uses the port: the limits commands without their own are
+  // timed with.
+  void set_limits(const ScanLimits& limits) { limits_ = limits; }
+  const ScanLimits& limits() const { return limits_; }
   // Non-real-time. False (and `error` set) when rejected.
   bool write(const PeriodicCommand& command, std::string* error = nullptr);
-  // The message's form: profile by name ("linear", "sine").
+  bool write(const LaserTrajCommand& command, std::string* error = nullptr);
+  // The message's form: profile by name ("linear", "blended_linear", "sine").
   bool write(std::string_view profile, double period, double amplitude, double offset, std::string* error = nullptr);
-  PeriodicCommand latest() const { return buffer_.latest(); }
   std::uint64_t accepted() const noexcept { return accepted_.load(std::memory_order_acquire); }
-  const PeriodicCommand& read_from_rt() noexcept { return buffer_.read_from_rt(); }
-  void reset_from_rt(const PeriodicCommand& c) noexcept {
-    buffer_.reset_from_rt([&c](PeriodicCommand& v) { v = c; });
+
+  // A profile and the number of the write that made it (0: set by the controller).
+  struct Tagged {
+    LaserScanProfile profile;
+    std::uint64_t sequence = 0;
+  };
+  const Tagged& read_from_rt() noexcept { return buffer_.read_from_rt(); }
+  void reset_from_rt(const LaserScanProfile& p) noexcept {
+    buffer_.reset_from_rt([&p](Tagged& v) { v.profile = p; v.sequence = 0; });
   }
 
  private:
-  RealtimeBuffer<PeriodicCommand> buffer_;
+  bool publish(const LaserScanProfile& profile);
+
+  ScanLimits limits_;
+  std::mutex write_mutex_;  // orders sequence numbers with the buffer's writes
+  RealtimeBuffer<Tagged> buffer_;
   std::atomic<std::uint64_t> accepted_{0};
 };
 
@@ -79,21 +85,21 @@ class LaserScannerTrajController : public Controller {
   UpdateStatus update(double time, double period) override;
   std::vector<Port*> ports() override { return {&command_, &state_, &gains_}; }
 
-  PeriodicCommandPort& command_port() { return command_; }
+  ScanCommandPort& command_port() { return command_; }
   StatePort<JointControllerState>& state_port() { return state_; }
   Pid& pid() { return pid_; }
   // The profile being run (real-time side; for tests and reports from the tick's thread).
-  const PeriodicCommand& active_profile() const noexcept { return active_; }
+  const LaserScanProfile& active_profile() const noexcept { return active_->profile; }
 
  private:
   JointHandle joint_;
   Pid pid_;
-  PeriodicCommand initial_;  // from the parameters (Hold when none)
-  PeriodicCommand active_;
+  std::optional<PeriodicCommand> initial_;  // from the parameters (hold the start position when none)
+  const ScanCommandPort::Tagged* active_ = nullptr;
   double profile_start_ = 0.0;  // s
-  std::uint64_t last_command_seq_ = 0;
+  std::uint64_t active_sequence_ = 0;
 
-  PeriodicCommandPort command_{"command"};
+  ScanCommandPort command_{"command"};
   StatePort<JointControllerState> state_{"state"};
   PidGainsPort gains_{"gains", &pid_};
 };

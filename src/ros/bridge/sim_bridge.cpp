@@ -46,6 +46,7 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::GripperCommand: return PortType::GripperCommand;
     case control::PortKind::GripperGoal: return PortType::GripperGoal;
     case control::PortKind::TrajectoryQuery: return PortType::TrajectoryQuery;
+    case control::PortKind::PeriodicCommand: return PortType::ScanCommand;
     default: return PortType::Other;
   }
 }

@@ -51,6 +51,7 @@ enum class PortType : std::uint8_t {
   GripperCommand,     // pr2_controllers_msgs/Pr2GripperCommand ("command" of the PR2 gripper)
   GripperGoal,        // pr2_controllers_msgs/Pr2GripperCommandAction ("gripper_action")
   TrajectoryQuery,    // control_msgs/QueryTrajectoryState service ("query_state")
+  ScanCommand,        // pr2_msgs/PeriodicCmd and LaserTrajCmd (the PR2 laser tilt controller's "command")
   Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
 };
 
@@ -273,5 +274,14 @@ std::optional<control::GoalStatus> gripper_goal_status(const PortRef& port, std:
 std::optional<GripperStateData> gripper_goal_result(const PortRef& port, std::uint64_t id);
 // The latest feedback (about goal `*goal_id`, 0: none yet) when newer than `*sequence`.
 bool read_gripper_feedback(const PortRef& port, GripperStateData& out, std::uint64_t* goal_id, std::uint64_t* sequence);
+
+// The PR2 laser tilt controller's profile (pr2_msgs/PeriodicCmd, LaserTrajCmd): profile by name
+// ("linear", "blended_linear"; "sine" for periodic ones), rad, s. False (and `error` set) when
+// the port refuses it; the previous profile stays.
+bool write_periodic_command(const PortRef& port, const std::string& profile, double period, double amplitude,
+                            double offset, std::string* error);
+bool write_laser_traj_command(const PortRef& port, const std::string& profile, const std::vector<double>& positions,
+                              const std::vector<double>& times_from_start, double max_velocity,
+                              double max_acceleration, std::string* error);
 
 }  // namespace mechsim::ros

@@ -35,7 +35,7 @@ std::map<std::string, TsvRow> readChecksumTable(const std::filesystem::path& pat
   int number = 0;
   while (std::getline(in, line)) {
     ++number;
-    if (number == 1 || line.empty()) continue;
+    if (line.empty() || line[0] == '#' || line.rfind("type\t", 0) == 0) continue;
     std::istringstream cols(line);
     std::string type;
     TsvRow row;
@@ -55,6 +55,8 @@ std::map<std::string, TsvRow> readChecksumTable(const std::filesystem::path& pat
 
 const std::filesystem::path kTablePath =
     std::filesystem::path(MECHSIM_SHARED_DIR) / "msgs" / "md5sums.tsv";
+const std::filesystem::path kUpstreamPath =
+    std::filesystem::path(MECHSIM_SOURCE_DIR) / "src" / "ros" / "test" / "upstream_md5s.tsv";
 const std::filesystem::path kPinnedPath =
     std::filesystem::path(MECHSIM_SOURCE_DIR) / "src" / "ros" / "test" / "pinned_types.tsv";
 
@@ -128,16 +130,23 @@ TEST(RosTypeChecksums, EveryBuiltTypeMatchesTheTable) {
   const auto table = generatedTypeChecksums();
   const auto built = builtTypes(table);
 
+  // Types the shared table lacks are checked against upstream's published checksums.
+  const auto upstream = readChecksumTable(kUpstreamPath);
   std::size_t matching = 0;
   for (const auto& [type, entry] : built) {
-    const auto it = reference.find(type);
+    auto it = reference.find(type);
+    std::string source = kTablePath.string();
     if (it == reference.end()) {
-      ADD_FAILURE() << type << " is built but missing from " << kTablePath.string();
-      continue;
+      it = upstream.find(type);
+      source = kUpstreamPath.string();
+      if (it == upstream.end()) {
+        ADD_FAILURE() << type << " is built but missing from " << kTablePath.string() << " and " << kUpstreamPath.string();
+        continue;
+      }
     }
     const TsvRow& row = it->second;
-    EXPECT_EQ(entry->kind, row.kind) << "kind of " << type << " (table line " << row.line << ")";
-    EXPECT_EQ(entry->md5, row.md5) << "MD5Sum of " << type << " (table line " << row.line << ")";
+    EXPECT_EQ(entry->kind, row.kind) << "kind of " << type << " (" << source << ":" << row.line << ")";
+    EXPECT_EQ(entry->md5, row.md5) << "MD5Sum of " << type << " (" << source << ":" << row.line << ")";
     if (entry->md5 == row.md5 && entry->kind == row.kind) ++matching;
   }
   EXPECT_EQ(matching, built.size()) << "built types whose kind and MD5 match the table";
@@ -154,6 +163,24 @@ TEST(RosTypeChecksums, EveryBuiltTypeMatchesTheTable) {
     for (const auto& type : not_built) std::cout << " " << type;
   }
   std::cout << "\n";
+}
+
+// The project's own table holds only what the shared one lacks (no type checked against two
+// references), and only types the build produces.
+TEST(RosTypeChecksums, UpstreamTableOnlyAddsBuiltTypesTheSharedTableLacks) {
+  const auto upstream = readChecksumTable(kUpstreamPath);
+  ASSERT_FALSE(upstream.empty()) << kUpstreamPath;
+  const auto table = generatedTypeChecksums();
+  const auto built = builtTypes(table);
+  for (const auto& [type, row] : upstream) {
+    EXPECT_TRUE(built.count(type)) << kUpstreamPath.string() << ":" << row.line << ": " << type << " is not built";
+  }
+  if (!std::filesystem::exists(kTablePath)) GTEST_SKIP() << "shared checksum table not found at " << kTablePath;
+  const auto reference = readChecksumTable(kTablePath);
+  for (const auto& [type, row] : upstream) {
+    EXPECT_FALSE(reference.count(type)) << kUpstreamPath.string() << ":" << row.line << ": " << type
+                                        << " is in the shared table already: remove it here";
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <mutex>
 #include <set>
@@ -22,6 +23,10 @@
 #include <pr2_controllers_msgs/Pr2GripperCommandAction.h>
 #include <pr2_mechanism_msgs/ListControllers.h>
 #include <pr2_mechanism_msgs/MechanismStatistics.h>
+#include <pr2_msgs/PeriodicCmd.h>
+#include <pr2_msgs/PressureState.h>
+#include <pr2_msgs/SetLaserTrajCmd.h>
+#include <pr2_msgs/SetPeriodicCmd.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 #include <tf2_msgs/TFMessage.h>
@@ -215,6 +220,138 @@ TEST_F(Pr2Node, GripperActionOpensAndJointTrajectoryActionMovesTheArm) {
   arm.sendGoal(goal);
   ASSERT_TRUE(arm.waitForResult(::ros::Duration(10.0)));
   EXPECT_EQ(arm.getState(), actionlib::SimpleClientGoalState::REJECTED);
+}
+
+// The laser tilt controller's pr2_msgs interface: set_periodic_cmd and set_traj_cmd as services
+// (start_time in sim time; a bad command refused) and as topics; the set point follows each
+// profile (from the controller's state, stamped in sim time).
+TEST_F(Pr2Node, LaserTiltSetPeriodicAndSetTrajCommandsReshapeTheSweep) {
+  ASSERT_TRUE(spawn({"laser_tilt_controller"}));
+  std::mutex m;
+  std::vector<std::pair<double, double>> set_points;  // (stamp, set point)
+  ::ros::Subscriber state = nh_.subscribe<pcm::JointControllerState>(
+      "/pr2/laser_tilt_controller/state", 100, [&](const pcm::JointControllerState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        set_points.emplace_back(msg->header.stamp.toSec(), msg->set_point);
+      });
+  // Extremes of the set point over [from, from + span] of sim time, once that much has come.
+  const auto extremes = [&](double from, double span, double& low, double& high) {
+    const bool done = wait_until(
+        [&] {
+          std::lock_guard<std::mutex> l(m);
+          return !set_points.empty() && set_points.back().first > from + span;
+        },
+        30.0);
+    std::lock_guard<std::mutex> l(m);
+    low = 1e9;
+    high = -1e9;
+    for (const auto& [t, p] : set_points) {
+      if (t < from || t > from + span) continue;
+      low = std::min(low, p);
+      high = std::max(high, p);
+    }
+    return done;
+  };
+
+  pr2_msgs::SetPeriodicCmd periodic;
+  periodic.request.command.profile = "linear";
+  periodic.request.command.period = 2.0;
+  periodic.request.command.amplitude = 0.5;
+  periodic.request.command.offset = 0.3;
+  ASSERT_TRUE(call("/pr2/laser_tilt_controller/set_periodic_cmd", periodic, 10.0));
+  const double t1 = periodic.response.start_time.toSec();
+  EXPECT_GT(t1, 0.0);
+  double low = 0.0, high = 0.0;
+  ASSERT_TRUE(extremes(t1 + 0.1, 2.0, low, high));
+  EXPECT_NEAR(low, -0.2, 0.01);
+  EXPECT_NEAR(high, 0.8, 0.01);
+
+  pr2_msgs::SetLaserTrajCmd traj;
+  traj.request.command.profile = "blended_linear";
+  traj.request.command.position = {0.0, 1.0, 0.0};
+  traj.request.command.time_from_start = {::ros::Duration(0.0), ::ros::Duration(1.0), ::ros::Duration(2.0)};
+  traj.request.command.max_acceleration = 20.0;
+  ASSERT_TRUE(call("/pr2/laser_tilt_controller/set_traj_cmd", traj, 10.0));
+  const double t2 = traj.response.start_time.toSec();
+  EXPECT_GE(t2, t1 + 2.0);
+  ASSERT_TRUE(extremes(t2 + 0.1, 2.0, low, high));
+  // Blends of 2 rad/s over 20 rad/s^2 (0.1 s) cut the corners by (2 x 0.1) / 8 = 0.025 rad.
+  EXPECT_NEAR(high, 1.0 - 0.025, 0.01);
+  EXPECT_NEAR(low, 0.025, 0.01);
+
+  // A command the controller cannot run is refused (the service call fails); the sweep goes on.
+  pr2_msgs::SetLaserTrajCmd bad;
+  bad.request.command.profile = "linear";
+  bad.request.command.position = {0.0, 1.0};
+  bad.request.command.time_from_start = {::ros::Duration(0.0)};
+  EXPECT_FALSE(call("/pr2/laser_tilt_controller/set_traj_cmd", bad, 10.0));
+
+  // The topic form.
+  ::ros::Publisher topic =
+      nh_.advertise<pr2_msgs::PeriodicCmd>("/pr2/laser_tilt_controller/set_periodic_cmd", 1, true);
+  pr2_msgs::PeriodicCmd narrow;
+  narrow.profile = "linear";
+  narrow.period = 1.0;
+  narrow.amplitude = 0.2;
+  narrow.offset = 0.5;
+  ASSERT_TRUE(wait_until([&] { return topic.getNumSubscribers() > 0; }, 10.0));
+  topic.publish(narrow);
+  // Once taken, the last second of set points spans the new profile's range.
+  const bool reshaped = wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        const double last = set_points.back().first;
+        low = 1e9;
+        high = -1e9;
+        for (const auto& [t, p] : set_points) {
+          if (t < last - 1.05) continue;
+          low = std::min(low, p);
+          high = std::max(high, p);
+        }
+        return std::abs(low - 0.3) < 0.01 && std::abs(high - 0.7) < 0.01;
+      },
+      30.0);
+  EXPECT_TRUE(reshaped) << "the last second's set points span [" << low << ", " << high << "]";
+}
+
+// The PR2 with its meshes (ROS_PACKAGE_PATH finds pr2_description in the shared data): the
+// fingertips have collision shapes, so their contact sensors (and the pressure pads) exist.
+class Pr2NodeWithMeshes : public Pr2Node {
+ protected:
+  void SetUp() override {
+    const char* old = std::getenv("ROS_PACKAGE_PATH");
+    std::string path = std::string(MECHSIM_SHARED_DIR) + "/robots";
+    if (old && *old) path += std::string(":") + old;
+    setenv("ROS_PACKAGE_PATH", path.c_str(), 1);
+    Pr2Node::SetUp();
+  }
+};
+
+// /pressure/<side>_gripper_motor (pr2_msgs/PressureState): 22 pads per fingertip at 25 Hz of sim
+// time, all zero with nothing between the fingers (the fingertips do not collide with each other).
+TEST_F(Pr2NodeWithMeshes, FingertipPressureAt25HzWith22PadsPerFingertip) {
+  std::mutex m;
+  std::vector<double> stamps;
+  std::size_t bad_sizes = 0, nonzero = 0;
+  ::ros::Subscriber pressure = nh_.subscribe<pr2_msgs::PressureState>(
+      "/pressure/r_gripper_motor", 100, [&](const pr2_msgs::PressureState::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        stamps.push_back(msg->header.stamp.toSec());
+        if (msg->l_finger_tip.size() != 22 || msg->r_finger_tip.size() != 22) ++bad_sizes;
+        for (const auto v : msg->l_finger_tip) nonzero += v != 0;
+        for (const auto v : msg->r_finger_tip) nonzero += v != 0;
+      });
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return stamps.size() >= 30;
+      },
+      30.0));
+  std::lock_guard<std::mutex> l(m);
+  EXPECT_NEAR(median_interval(stamps), 0.04, 1e-6);
+  EXPECT_GT(whole_periods(stamps, 0.04), 0.8);
+  EXPECT_EQ(bad_sizes, 0u);
+  EXPECT_EQ(nonzero, 0u);
 }
 
 TEST_F(Pr2Node, BaseCommandTwistDrivesBaseOdometry) {

@@ -10,10 +10,13 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "controllers/gripper/pr2_gripper_controller.hpp"
 #include "mechanism/pr2_gripper_transmission.hpp"
+#include "sensors/pr2_fingertip_pressure.hpp"
 #include "sim/test/scenario/pr2_util.hpp"
 
 namespace mechsim::sim {
@@ -143,6 +146,31 @@ TEST(Pr2Gripper, ClosingOnABoxStallsAndHoldsWithMaxEffort) {
   EXPECT_NEAR(state.effort, -kMaxEffort, 1e-6);  // still squeezing at max_effort
   EXPECT_GE(finger_contacts, 2);
   EXPECT_GT(squeeze, 10.0);
+
+  // The fingertip pressure pads (pr2_msgs/PressureState's values) from the fingertip contact
+  // sensors: the box presses on the front arrays of both fingertips, carrying the squeeze (the
+  // raw readings saturate: MuJoCo's one contact point per fingertip loads one element).
+  double front_newtons = 0.0, other_newtons = 0.0;
+  for (const auto& [name, finger] : {std::pair{"r_gripper_l_finger_tip_contact_sensor", sensors::Fingertip::Left},
+                                     std::pair{"r_gripper_r_finger_tip_contact_sensor", sensors::Fingertip::Right}}) {
+    const auto index = sim->sensors().find(name);
+    ASSERT_TRUE(index) << name;
+    const auto* reading = std::get_if<sensors::ContactsReading>(&sim->sensors().reading(*index).value);
+    ASSERT_NE(reading, nullptr) << name;
+    const auto pads = sensors::fingertip_pad_forces(*reading, finger);
+    double front = 0.0;
+    for (int k = 0; k < sensors::kFingertipPressureElements; ++k) {
+      (k >= 7 ? front : other_newtons) += pads[static_cast<std::size_t>(k)];
+    }
+    const auto raw = sensors::fingertip_pressure(*reading, finger);
+    std::cout << "[ figures  ] " << name << " raw pads:";
+    for (const auto v : raw) std::cout << " " << v;
+    std::cout << " (front array " << front << " N)\n";
+    EXPECT_GT(front, 5.0) << name;
+    front_newtons += front;
+  }
+  EXPECT_NEAR(front_newtons, squeeze, 0.35 * squeeze);  // the pads see the squeeze (mesh and pads differ)
+  EXPECT_LT(other_newtons, 0.1 * front_newtons);
 }
 
 }  // namespace
