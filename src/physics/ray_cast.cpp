@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 
 #include "physics/mujoco_internal.hpp"
 #include "physics/sensing_internal.hpp"
@@ -134,12 +136,26 @@ RayFilter make_ray_filter(const PhysicsModel& model, int exclude_body, RayTarget
   RayFilter f;
   // Groups as the MJCF writer assigns them: 0 robot collision, 1 robot visual, 2 world.
   const int robot_group = targets == RayTargets::Collision ? 0 : 1;
+  std::map<int, std::shared_ptr<const MeshBvh>> bvh_of_mesh;
   for (int g = 0; g < m->ngeom; ++g) {
     const int body = m->geom_bodyid[g];
-    if (body == exclude_body && body != 0) continue;
     const int group = m->geom_group[g];
+    if (exclude_body >= 0 && group != 2 && m->body_weldid[body] == m->body_weldid[exclude_body]) continue;
     if (group != 2 && group != robot_group) continue;
-    (m->geom_type[g] == mjGEOM_HFIELD ? f.hfields : f.geoms).push_back(g);
+    if (m->geom_type[g] == mjGEOM_HFIELD) {
+      f.hfields.push_back(g);
+    } else if (m->geom_type[g] == mjGEOM_MESH) {
+      const int mesh = m->geom_dataid[g];
+      std::shared_ptr<const MeshBvh>& bvh = bvh_of_mesh[mesh];
+      if (!bvh) {
+        bvh = std::make_shared<const MeshBvh>(m->mesh_vert + 3 * m->mesh_vertadr[mesh], m->mesh_vertnum[mesh],
+                                              m->mesh_face + 3 * m->mesh_faceadr[mesh], m->mesh_facenum[mesh]);
+      }
+      f.meshes.push_back(g);
+      f.mesh_bvhs.push_back(bvh);
+    } else {
+      f.geoms.push_back(g);
+    }
   }
   return f;
 }
@@ -152,54 +168,128 @@ HfieldGrid hfield_grid(const mjModel* m, int geom) {
   return {m->hfield_nrow[h], m->hfield_ncol[h], size[0], size[1], size[2], size[3], m->hfield_data + m->hfield_adr[h]};
 }
 
-double ray_hfield_geom(const mjModel* m, const mjData* d, int geom, const mjtNum pnt[3], const mjtNum vec[3]) {
+namespace {
+
+// The ray in geom g's frame.
+void to_geom_frame(const mjData* d, int geom, const mjtNum pnt[3], const mjtNum vec[3], double lp[3], double lv[3]) {
   const mjtNum* pos = d->geom_xpos + 3 * geom;
   const mjtNum* mat = d->geom_xmat + 9 * geom;  // row-major: world axis i . geom axis j at [3 i + j]
   const double dif[3] = {pnt[0] - pos[0], pnt[1] - pos[1], pnt[2] - pos[2]};
-  double lp[3], lv[3];
   for (int j = 0; j < 3; ++j) {
     lp[j] = mat[j] * dif[0] + mat[3 + j] * dif[1] + mat[6 + j] * dif[2];
     lv[j] = mat[j] * vec[0] + mat[3 + j] * vec[1] + mat[6 + j] * vec[2];
   }
+}
+
+// Whether the ray can reach geom g's bounding sphere before `best` (planes: always).
+bool may_hit(const mjModel* m, const mjData* d, int g, const mjtNum pnt[3], const mjtNum vec[3], double best) {
+  if (m->geom_type[g] == mjGEOM_PLANE) return true;
+  const mjtNum* pos = d->geom_xpos + 3 * g;
+  const double wx = pos[0] - pnt[0], wy = pos[1] - pnt[1], wz = pos[2] - pnt[2];
+  const double tc = wx * vec[0] + wy * vec[1] + wz * vec[2];
+  const double rb = m->geom_rbound[g];
+  if (tc + rb < 0.0 || tc - rb > best) return false;
+  return wx * wx + wy * wy + wz * wz - tc * tc <= rb * rb;
+}
+
+}  // namespace
+
+double ray_hfield_geom(const mjModel* m, const mjData* d, int geom, const mjtNum pnt[3], const mjtNum vec[3]) {
+  double lp[3], lv[3];
+  to_geom_frame(d, geom, pnt, vec, lp, lv);
   return ray_hfield(hfield_grid(m, geom), lp, lv);
 }
 
+
+namespace {
+
+// The unit normal of the plane through the origin that holds every direction (a one-row scan),
+// or false when there is none.
+bool scan_plane(const description::Vec3* dirs, std::size_t count, double n[3]) {
+  if (count < 2) return false;
+  const description::Vec3& a = dirs[0];
+  // The direction farthest from parallel to the first one spans the plane with it.
+  double best = 0.0;
+  for (std::size_t i = 1; i < count; ++i) {
+    const description::Vec3& b = dirs[i];
+    const double c[3] = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (len > best) {
+      best = len;
+      for (int k = 0; k < 3; ++k) n[k] = c[k] / len;
+    }
+  }
+  if (best < 1e-6) return false;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (std::abs(dirs[i].x * n[0] + dirs[i].y * n[1] + dirs[i].z * n[2]) > 1e-9) return false;
+  }
+  return true;
+}
+
+// Whether any ray of the call may reach geom g: its bounding sphere within `far` of the origin
+// and, for a one-row scan, within its radius of the scan's plane.
+bool may_reach(const mjModel* m, const mjData* d, int g, const description::Vec3& origin, double far, const double* plane) {
+  if (m->geom_type[g] == mjGEOM_PLANE || m->geom_type[g] == mjGEOM_HFIELD) return true;
+  const mjtNum* c = d->geom_xpos + 3 * g;
+  const double w[3] = {c[0] - origin.x, c[1] - origin.y, c[2] - origin.z};
+  const double rb = m->geom_rbound[g];
+  if (std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) - rb > far) return false;
+  return plane == nullptr || std::abs(w[0] * plane[0] + w[1] * plane[1] + w[2] * plane[2]) <= rb;
+}
+
+}  // namespace
+
 void cast_rays(const mjModel* m, const mjData* d, const RayFilter& filter, const description::Vec3& origin,
                const description::Vec3* directions, std::size_t count, double near, double far, double* ranges) {
-  for (std::size_t i = 0; i < count; ++i) {
+  // Shape by shape over all rays: a shape no ray can reach is dropped once for the whole call
+  // (a planar scan passes by most of a robot). ranges[i] holds ray i's nearest hit so far,
+  // measured from its start at `near`; `none` (just beyond far - near) means no hit yet.
+  const double reach = far - near;
+  const double none = std::nextafter(reach, kInf);
+  for (std::size_t i = 0; i < count; ++i) ranges[i] = none;
+  double normal[3];
+  const double* plane = scan_plane(directions, count, normal) ? normal : nullptr;
+  // Gazebo's rays start at the sensor's minimum range: nothing nearer is seen.
+  const auto ray = [&](std::size_t i, mjtNum pnt[3], mjtNum vec[3]) {
     const description::Vec3& u = directions[i];
-    const mjtNum vec[3] = {u.x, u.y, u.z};
-    // Gazebo's rays start at the sensor's minimum range: nothing nearer is seen.
-    const mjtNum pnt[3] = {origin.x + near * u.x, origin.y + near * u.y, origin.z + near * u.z};
-    double best = far - near;
-    bool hit = false;
-    for (const int g : filter.geoms) {
-      const int type = m->geom_type[g];
-      const mjtNum* pos = d->geom_xpos + 3 * g;
-      if (type != mjGEOM_PLANE) {
-        // Bounding sphere: skip shapes the ray passes by, lies behind or cannot reach.
-        const double wx = pos[0] - pnt[0], wy = pos[1] - pnt[1], wz = pos[2] - pnt[2];
-        const double tc = wx * vec[0] + wy * vec[1] + wz * vec[2];
-        const double rb = m->geom_rbound[g];
-        if (tc + rb < 0.0 || tc - rb > best) continue;
-        if (wx * wx + wy * wy + wz * wz - tc * tc > rb * rb) continue;
-      }
-      const double x = type == mjGEOM_MESH ? mj_rayMesh(m, d, g, pnt, vec)
-                                           : mju_rayGeom(pos, d->geom_xmat + 9 * g, m->geom_size + 3 * g, pnt, vec, type);
-      if (x >= 0.0 && x <= best) {
-        best = x;
-        hit = true;
-      }
+    vec[0] = u.x;
+    vec[1] = u.y;
+    vec[2] = u.z;
+    pnt[0] = origin.x + near * u.x;
+    pnt[1] = origin.y + near * u.y;
+    pnt[2] = origin.z + near * u.z;
+  };
+  const auto keep = [&](std::size_t i, double x) {
+    if (x >= 0.0 && x <= reach && x < ranges[i]) ranges[i] = x;
+  };
+  mjtNum pnt[3], vec[3];
+  for (const int g : filter.geoms) {
+    if (!may_reach(m, d, g, origin, far, plane)) continue;
+    for (std::size_t i = 0; i < count; ++i) {
+      ray(i, pnt, vec);
+      if (!may_hit(m, d, g, pnt, vec, std::min(ranges[i], reach))) continue;
+      keep(i, mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g, pnt, vec, m->geom_type[g]));
     }
-    for (const int g : filter.hfields) {
-      const double x = ray_hfield_geom(m, d, g, pnt, vec);
-      if (x >= 0.0 && x <= best) {
-        best = x;
-        hit = true;
-      }
-    }
-    ranges[i] = hit ? near + best : kInf;
   }
+  for (std::size_t k = 0; k < filter.meshes.size(); ++k) {
+    const int g = filter.meshes[k];
+    if (!may_reach(m, d, g, origin, far, plane)) continue;
+    for (std::size_t i = 0; i < count; ++i) {
+      ray(i, pnt, vec);
+      const double best = std::min(ranges[i], reach);
+      if (!may_hit(m, d, g, pnt, vec, best)) continue;
+      double lp[3], lv[3];
+      to_geom_frame(d, g, pnt, vec, lp, lv);
+      keep(i, filter.mesh_bvhs[k]->intersect(lp, lv, best));
+    }
+  }
+  for (const int g : filter.hfields) {
+    for (std::size_t i = 0; i < count; ++i) {
+      ray(i, pnt, vec);
+      keep(i, ray_hfield_geom(m, d, g, pnt, vec));
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) ranges[i] = ranges[i] <= reach ? near + ranges[i] : kInf;
 }
 
 }  // namespace detail

@@ -6,10 +6,13 @@
 // mj_ray: that one tests each triangle with a tolerance-free inside test in a projected plane, so
 // a ray lying exactly on a grid line (or a cell's diagonal) can fall between two triangles, miss
 // them both and report the bottom of the terrain block instead (metres too far). Every other
-// shape goes through MuJoCo's own per-geom routines (mju_rayGeom, mj_rayMesh).
+// primitive goes through MuJoCo's own per-geom routine (mju_rayGeom); meshes through a
+// bounding-volume hierarchy of their triangles (mesh_bvh.hpp: mj_rayMesh tests every triangle).
 
+#include <memory>
 #include <vector>
 
+#include "physics/mesh_bvh.hpp"
 #include "physics/physics_model.hpp"
 
 namespace mechsim::physics {
@@ -22,12 +25,17 @@ enum class RayTargets { Collision, Visual };
 // The shapes one sensor's rays may hit: built once per sensor (allocates), then used by every
 // cast. MuJoCo geom ids, valid for the PhysicsModel it was made from.
 struct RayFilter {
-  std::vector<int> geoms;    // tested with MuJoCo's routines
+  std::vector<int> geoms;    // primitives: tested with mju_rayGeom
   std::vector<int> hfields;  // height-field geoms: tested with ray_hfield
+  std::vector<int> meshes;   // mesh geoms, tested with mesh_bvhs[k] (shared by geoms of one mesh)
+  std::vector<std::shared_ptr<const MeshBvh>> mesh_bvhs;
 };
 
-// Every shape of `targets` and of the world except those on `exclude_body` (the MuJoCo body of
-// PhysicsModel::links(); -1 excludes none). The world body (0) cannot be excluded.
+// Every shape of `targets` and of the world except the robot's shapes rigidly attached to
+// `exclude_body` (the MuJoCo body of PhysicsModel::links(); -1 excludes none): that body and every
+// body welded to it through fixed joints (MuJoCo's body_weldid), as Gazebo lumps the links of a
+// fixed joint into one and its ray sensors ignore their own link's collisions. World shapes are
+// never excluded.
 RayFilter make_ray_filter(const PhysicsModel& model, int exclude_body, RayTargets targets);
 
 // A height field as MuJoCo defines its surface, in the height field's own frame (origin at the

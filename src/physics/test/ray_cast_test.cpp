@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <random>
 
@@ -223,18 +224,76 @@ TEST(PhysicsSensing, CastRaysHitsTheWallTheGroundAndNotTheExcludedBody) {
   const RayFilter own_excluded = make_ray_filter(*model, base_body, RayTargets::Collision);
   const RayFilter all = make_ray_filter(*model, -1, RayTargets::Collision);
   const Vec3 origin{0.0, 0.0, 0.1};  // inside the base box
-  const Vec3 dirs[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, -1}, {std::cos(0.3), std::sin(0.3), 0}};
-  double r[4];
-  p.cast_rays(own_excluded, origin, dirs, 4, 0.0, 10.0, r);
+  const Vec3 dirs[5] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, -1}, {std::cos(0.3), std::sin(0.3), 0}, {0, 0, 1}};
+  double r[5];
+  p.cast_rays(own_excluded, origin, dirs, 5, 0.0, 10.0, r);
   EXPECT_NEAR(r[0], 2.9, 1e-9);                 // the wall's near face
   EXPECT_EQ(r[1], kInf);                        // nothing behind
   EXPECT_NEAR(r[2], 0.1, 1e-9);                 // the ground, through the excluded base
   EXPECT_NEAR(r[3], 2.9 / std::cos(0.3), 1e-9);  // the face, obliquely
-  p.cast_rays(all, origin, dirs, 4, 0.0, 10.0, r);
+  EXPECT_EQ(r[4], kInf);  // the head, on a fixed joint to the base, is the sensor's own too (Gazebo lumps it)
+  p.cast_rays(all, origin, dirs, 5, 0.0, 10.0, r);
   EXPECT_NEAR(r[1], 0.2, 1e-9);  // the base box's own face, from inside
+  EXPECT_NEAR(r[4], 0.3, 1e-9);  // its top face
   // Nearer than `near` is not seen; beyond `far` is nothing.
   p.cast_rays(own_excluded, origin, dirs, 1, 0.0, 2.5, r);
   EXPECT_EQ(r[0], kInf);
+}
+
+// Rays against a real mesh (the PR2's torso collision mesh, 1 m ahead): cast_rays (the mesh's BVH,
+// mju_rayGeom for the rest) agrees with MuJoCo's own mj_ray (mj_rayMesh: every triangle).
+TEST(PhysicsSensing, CastRaysOnAMeshAgreesWithMujocoRayMesh) {
+  const std::string mesh = std::string(MECHSIM_SHARED_DIR) + "/robots/pr2_description/meshes/torso_v0/torso_lift_L.stl";
+  if (!std::ifstream(mesh)) GTEST_SKIP() << "shared data absent: no " << mesh;
+  const std::string urdf = R"(<robot name="m">
+  <link name="base"><inertial><mass value="10"/><inertia ixx="0.27" ixy="0" ixz="0" iyy="0.27" iyz="0" izz="0.27"/></inertial>
+    <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision></link>
+  <joint name="j" type="fixed"><parent link="base"/><child link="torso"/><origin xyz="1.0 0.1 0.3" rpy="0.3 -0.2 0.7"/></joint>
+  <link name="torso"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    <collision><geometry><mesh filename=")" + mesh + R"("/></geometry></collision></link>
+</robot>)";
+  BuildOptions o;
+  o.spawn.z = 0.2;
+  const auto model = test::build(urdf, o);
+  const mjModel* m = model->impl().model;
+  Physics p(model);
+  // Nothing excluded: the torso is welded to the base, so excluding the base would drop it.
+  const RayFilter filter = make_ray_filter(*model, -1, RayTargets::Collision);
+  ASSERT_EQ(filter.meshes.size(), 1u);
+  const int g = filter.meshes[0];
+  mjData* d = mj_makeData(m);
+  mj_forward(m, d);
+  const Vec3 origin{0.0, 1.0, 0.5};  // beside the base: no ray towards the mesh passes over it
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n(0.0, 1.0);
+  int hits = 0, disagree = 0;
+  double worst = 0.0;
+  for (int i = 0; i < 4000; ++i) {
+    // Towards the mesh, spread over its bounding sphere and beyond.
+    const mjtNum* c = d->geom_xpos + 3 * g;
+    Vec3 u{c[0] - origin.x + 0.3 * n(rng), c[1] - origin.y + 0.3 * n(rng), c[2] - origin.z + 0.3 * n(rng)};
+    const double len = std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+    u = {u.x / len, u.y / len, u.z / len};
+    double r = 0.0;
+    p.cast_rays(filter, origin, &u, 1, 0.0, 10.0, &r);
+    const mjtNum pnt[3] = {origin.x, origin.y, origin.z}, vec[3] = {u.x, u.y, u.z};
+    // MuJoCo's own ray over the same shapes (collision group 0, world group 2): mj_rayMesh for
+    // the mesh, its box and plane routines for the base and the ground.
+    const mjtByte groups[mjNGROUP] = {1, 0, 1, 0, 0, 0};
+    int hit_geom = -1;
+    double want = mj_ray(m, d, pnt, vec, groups, 1, -1, &hit_geom);
+    if (want > 10.0) want = -1.0;  // beyond the cast's range
+    if (hit_geom == g) ++hits;
+    if ((want < 0.0) != (r == kInf)) {
+      ++disagree;
+      continue;
+    }
+    if (want >= 0.0) worst = std::max(worst, std::abs(r - want));
+  }
+  mj_deleteData(d);
+  EXPECT_GT(hits, 1000);
+  EXPECT_EQ(disagree, 0);
+  EXPECT_LT(worst, 1e-6);
 }
 
 TEST(PhysicsSensing, AccelerationAtRestIsGravityUpAndZeroInFreeFall) {

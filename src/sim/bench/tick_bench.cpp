@@ -8,11 +8,19 @@
 // and 40 Hz, the torso IMU at 100 Hz and six bumpers at 100 Hz; the reference CC8 two IMUs at
 // 100 Hz; cameras are not simulated here). PR2/FullTickNoSensors is the same tick with
 // SimulationOptions::sensors off: FullTick / FullTickNoSensors is what the sensors cost.
+// PR2/LasersImuShare is the measure on a loaded machine: two PR2s in one loop, one with
+// only its two Hokuyos and the torso IMU on (bumpers and ground truth off, as on ROS until they
+// are subscribed), one without sensors, stepped in alternating blocks of 50 ticks and timed by
+// the thread's CPU clock, so that the load of the machine falls on both alike; counters: CPU us
+// per tick of each and their ratio.
 
 #include <benchmark/benchmark.h>
 
+#include <time.h>
+
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "control/params.hpp"
 #include "description/urdf/urdf_parser.hpp"
@@ -90,11 +98,54 @@ void BM_FullTick(benchmark::State& state) {
   state.counters["steps/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+void BM_LasersImuShare(benchmark::State& state) {
+  if (!fs::exists(kShared)) {
+    state.SkipWithError("shared data absent");
+    return;
+  }
+  auto with = make_pr2(true);
+  auto without = make_pr2(false);
+  sensors::SensorSet& set = with->sensors();
+  int kept = 0;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    const std::string kind = set.spec(i).kind_name();
+    const bool keep = kind == "ray" || kind == "imu";
+    set.set_enabled(i, keep);
+    kept += keep ? 1 : 0;
+  }
+  for (int i = 0; i < 200; ++i) {
+    with->step();
+    without->step();
+  }
+  constexpr int kBlock = 50;
+  double cpu_with = 0.0, cpu_without = 0.0;
+  for (auto _ : state) {
+    double t = thread_cpu_seconds();
+    for (int i = 0; i < kBlock; ++i) benchmark::DoNotOptimize(with->step());
+    const double mid = thread_cpu_seconds();
+    cpu_with += mid - t;
+    for (int i = 0; i < kBlock; ++i) benchmark::DoNotOptimize(without->step());
+    cpu_without += thread_cpu_seconds() - mid;
+  }
+  const double ticks = static_cast<double>(state.iterations()) * kBlock;
+  state.counters["sensors"] = kept;
+  state.counters["with_us"] = 1e6 * cpu_with / ticks;
+  state.counters["without_us"] = 1e6 * cpu_without / ticks;
+  state.counters["ratio"] = cpu_with / cpu_without;
+}
+
 BENCHMARK(BM_BareStep<make_cc8>)->Name("CC8/BareStep")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_cc8>)->Name("CC8/FullTick")->MinTime(2.0);
 BENCHMARK(BM_BareStep<make_pr2_with_sensors>)->Name("PR2/BareStep")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_pr2_with_sensors>)->Name("PR2/FullTick")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_pr2_without_sensors>)->Name("PR2/FullTickNoSensors")->MinTime(2.0);
+BENCHMARK(BM_LasersImuShare)->Name("PR2/LasersImuShare")->MinTime(4.0);
 
 }  // namespace
 

@@ -261,10 +261,12 @@ TEST_F(Pr2Node, LaserTiltSetPeriodicAndSetTrajCommandsReshapeTheSweep) {
   ASSERT_TRUE(call("/pr2/laser_tilt_controller/set_periodic_cmd", periodic, 10.0));
   const double t1 = periodic.response.start_time.toSec();
   EXPECT_GT(t1, 0.0);
+  // Set points come at 50 Hz of sim time (0.02 rad apart at 1 rad/s) and a loaded machine may
+  // drop a few: two whole periods, and the corners within 0.03 rad.
   double low = 0.0, high = 0.0;
-  ASSERT_TRUE(extremes(t1 + 0.1, 2.0, low, high));
-  EXPECT_NEAR(low, -0.2, 0.01);
-  EXPECT_NEAR(high, 0.8, 0.01);
+  ASSERT_TRUE(extremes(t1 + 0.1, 4.0, low, high));
+  EXPECT_NEAR(low, -0.2, 0.03);
+  EXPECT_NEAR(high, 0.8, 0.03);
 
   pr2_msgs::SetLaserTrajCmd traj;
   traj.request.command.profile = "blended_linear";
@@ -273,11 +275,14 @@ TEST_F(Pr2Node, LaserTiltSetPeriodicAndSetTrajCommandsReshapeTheSweep) {
   traj.request.command.max_acceleration = 20.0;
   ASSERT_TRUE(call("/pr2/laser_tilt_controller/set_traj_cmd", traj, 10.0));
   const double t2 = traj.response.start_time.toSec();
-  EXPECT_GE(t2, t1 + 2.0);
-  ASSERT_TRUE(extremes(t2 + 0.1, 2.0, low, high));
-  // Blends of 2 rad/s over 20 rad/s^2 (0.1 s) cut the corners by (2 x 0.1) / 8 = 0.025 rad.
-  EXPECT_NEAR(high, 1.0 - 0.025, 0.01);
-  EXPECT_NEAR(low, 0.025, 0.01);
+  EXPECT_GE(t2, t1 + 4.0);
+  ASSERT_TRUE(extremes(t2 + 0.1, 4.0, low, high));
+  // Blends of 2 rad/s over 20 rad/s^2 (0.1 s) cut the corners by (2 x 0.1) / 8 = 0.025 rad: the
+  // top at 0.975 (sampled, maybe short of it), not the linear corner at 1; likewise the bottom.
+  EXPECT_GT(high, 0.94);
+  EXPECT_LT(high, 0.985);
+  EXPECT_GT(low, 0.015);
+  EXPECT_LT(low, 0.06);
 
   // A command the controller cannot run is refused (the service call fails); the sweep goes on.
   pr2_msgs::SetLaserTrajCmd bad;
@@ -296,7 +301,7 @@ TEST_F(Pr2Node, LaserTiltSetPeriodicAndSetTrajCommandsReshapeTheSweep) {
   narrow.offset = 0.5;
   ASSERT_TRUE(wait_until([&] { return topic.getNumSubscribers() > 0; }, 10.0));
   topic.publish(narrow);
-  // Once taken, the last second of set points spans the new profile's range.
+  // Once taken, the last two seconds of set points span the new profile's range.
   const bool reshaped = wait_until(
       [&] {
         std::lock_guard<std::mutex> l(m);
@@ -304,14 +309,14 @@ TEST_F(Pr2Node, LaserTiltSetPeriodicAndSetTrajCommandsReshapeTheSweep) {
         low = 1e9;
         high = -1e9;
         for (const auto& [t, p] : set_points) {
-          if (t < last - 1.05) continue;
+          if (t < last - 2.05) continue;
           low = std::min(low, p);
           high = std::max(high, p);
         }
-        return std::abs(low - 0.3) < 0.01 && std::abs(high - 0.7) < 0.01;
+        return std::abs(low - 0.3) < 0.03 && std::abs(high - 0.7) < 0.03;
       },
       30.0);
-  EXPECT_TRUE(reshaped) << "the last second's set points span [" << low << ", " << high << "]";
+  EXPECT_TRUE(reshaped) << "the last two seconds' set points span [" << low << ", " << high << "]";
 }
 
 // The PR2 with its meshes (ROS_PACKAGE_PATH finds pr2_description in the shared data): the
