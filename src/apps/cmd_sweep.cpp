@@ -251,8 +251,8 @@ void add_sweep_command(CLI::App& app, CommandResult& result) {
   point_cmd->callback([args, &result] {
     const batch::Plan plan = batch::read_plan(args->dir);
     if (args->index >= plan.points.size()) throw UserError("the sweep has no point " + std::to_string(args->index));
-    inject_test_fault(args->index);
     const StopOnSignals stop_on_signals;
+    inject_test_fault(args->index);
     result.exit_code = batch::run_point(args->dir, plan, args->index, &g_interrupt);
   });
   CLI::App* task_cmd = cmd->add_subcommand("run-task", "Run a Slurm array task's points")->group("");
