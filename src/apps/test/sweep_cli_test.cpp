@@ -127,6 +127,25 @@ TEST_F(SweepCli, ACrashAndAHangAreRecordedWithTheirLogsAndResumeRunsOnlyThem) {
   EXPECT_EQ(fs::last_write_time(out / "points/00000/point.json"), kept);
 }
 
+TEST_F(SweepCli, CtrlCStopsCleanlyAndResumeFinishes) {
+  const std::string sweep = write_sweep("set: {duration: 3}\naxes:\n  - {path: timeline.0.twist.vx, list: [0.3, 0.35, 0.4, 0.45]}\n");
+  const fs::path out = dir_ / "out";
+  // SIGINT to the sweep alone (a terminal's Ctrl-C reaches the points too; the sweep forwards it).
+  const ProcessResult r = run_process({"/bin/sh", "-c", std::string(MECHSIM_EXE) + " sweep " + sweep + " -o " + out.string() +
+                                           " -j 1 --no-plots & pid=$!; sleep 1.5; kill -INT $pid; wait $pid; echo exit=$?"},
+                                      60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("exit=130"));
+  EXPECT_THAT(r.out, HasSubstr("interrupted: continue with"));
+  const std::string csv = read(out / "results.csv");
+  EXPECT_THAT(csv, HasSubstr(",interrupted,0,"));
+  EXPECT_THAT(csv, HasSubstr(",missing,0,"));
+  const ProcessResult resumed = run_process({MECHSIM_EXE, "sweep", sweep, "-o", out.string(), "--resume", "--no-plots"}, 120.0);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
+  const auto rows = table(out / "results.csv");
+  for (std::size_t i = 1; i <= 4; ++i) EXPECT_EQ(rows[i][1], "passed") << i;
+}
+
 TEST_F(SweepCli, BadSweepFilesAreErrorsNamingFileLineAndKey) {
   const auto error_of = [&](const std::string& body) {
     const ProcessResult r = run_process({MECHSIM_EXE, "sweep", write_sweep(body), "-o", (dir_ / "bad").string()});

@@ -3,8 +3,9 @@
 # machine (munged, slurmctld and slurmd from Debian's munge and slurm-wlm; a generated munge key
 # and slurm.conf for localhost; every file in a temporary folder; run as the current user),
 # runs a 20-point sweep locally and through `mechsim sweep --slurm` (a throttled job array and a
-# dependent collect job), checks `mechsim sweep status` and that the collected table equals the
-# local run's (but for the measured wall_time column), and stops everything it started.
+# dependent collect job) with one point crashing, resubmits the failed task alone (--resume),
+# checks `mechsim sweep status` and that the collected table equals the local run's (but for the
+# measured wall_time column), and stops everything it started.
 # Cgroups are not needed: proctrack/linuxproc and task/none track the tasks as plain processes.
 # Usage: slurm_sweep_test.sh MECHSIM_EXE SWEEP_FILE
 set -euo pipefail
@@ -96,25 +97,41 @@ for _ in $(seq 150); do
 done
 [[ $(sinfo -h -o %T) == idle ]] || fail "the node did not become idle: $(sinfo -h -o '%T %E')"
 
-# The same sweep locally, then on Slurm: 10 array tasks of 2 points, 2 running at once.
+# The same sweep locally, then on Slurm: 10 array tasks of 2 points, 2 running at once; point 5
+# (task 2) crashes there (the test-only fault, passed to the jobs in sbatch's environment).
 "$exe" sweep "$sweep" -o "$work/local" -j 2 --no-plots > "$work/local.out" 2>&1 || { cat "$work/local.out"; fail "local sweep"; }
-"$exe" sweep "$sweep" -o "$work/slurm" --slurm --array-limit 2 --points-per-task 2 > "$work/submit.out" 2>&1 ||
-  { cat "$work/submit.out"; fail "submission"; }
+MECHSIM_SWEEP_TEST_FAULT=crash@5 "$exe" sweep "$sweep" -o "$work/slurm" --slurm --array-limit 2 --points-per-task 2 \
+  > "$work/submit.out" 2>&1 || { cat "$work/submit.out"; fail "submission"; }
 cat "$work/submit.out"
 grep -q -- "--array=0-9%2" "$work/submit.out" || fail "expected a 10-task array throttled to 2"
-collect_job=$(sed -n 's/.*collect job \([0-9]*\).*/\1/p' "$work/submit.out")
-[[ -n $collect_job ]] || fail "no collect job id"
 "$exe" sweep status "$work/slurm" > "$work/status.out" 2>&1 || { cat "$work/status.out"; fail "status"; }
 grep -q "slurm array job" "$work/status.out" || { cat "$work/status.out"; fail "status names no array job"; }
-for _ in $(seq 900); do
-  [[ -z $(squeue -h -j "$collect_job" 2>/dev/null) && -f $work/slurm/results.csv ]] && break
-  sleep 0.2
-done
-[[ -f $work/slurm/results.csv ]] || fail "the collect job wrote no table; squeue: $(squeue -h)"
+wait_for_collect() {
+  local job
+  job=$(sed -n 's/.*collect job \([0-9]*\).*/\1/p' "$1")
+  [[ -n $job ]] || fail "no collect job id in $1"
+  for _ in $(seq 900); do
+    [[ -z $(squeue -h -j "$job" 2>/dev/null) && -f $work/slurm/slurm/logs/collect_$job.out ]] && break
+    sleep 0.2
+  done
+  [[ -z $(squeue -h -j "$job" 2>/dev/null) ]] || fail "collect job $job still queued; squeue: $(squeue -h)"
+  [[ -f $work/slurm/slurm/logs/collect_$job.out ]] || fail "collect job $job left no log"
+}
+wait_for_collect "$work/submit.out"
+grep -q "^5,crashed,0," "$work/slurm/results.csv" || fail "point 5 is not recorded as crashed: $(sed -n 7p "$work/slurm/results.csv")"
 "$exe" sweep status "$work/slurm" > "$work/status.out" 2>&1
 cat "$work/status.out"
-grep -q "20 points: " "$work/status.out" || fail "status does not count 20 points"
-grep -q "not run yet" "$work/status.out" && fail "status: points were not run"
+grep -q "20 points: 1 crashed" "$work/status.out" || fail "status does not count the crash"
+
+# Only the failed task goes again.
+"$exe" sweep "$sweep" -o "$work/slurm" --slurm --resume --array-limit 2 --points-per-task 2 > "$work/resubmit.out" 2>&1 ||
+  { cat "$work/resubmit.out"; fail "resubmission"; }
+cat "$work/resubmit.out"
+grep -q -- "--array=2%2" "$work/resubmit.out" || fail "expected task 2 alone"
+wait_for_collect "$work/resubmit.out"
+"$exe" sweep status "$work/slurm" > "$work/status.out" 2>&1
+cat "$work/status.out"
+grep -q "20 points: 5 failed, 15 passed" "$work/status.out" || fail "status after the resubmission"
 
 # Tables equal but for the measured column (wall_time: the sweep file's metrics hold no other).
 strip() { python3 -c '
