@@ -122,10 +122,11 @@ void run_sweep(const SweepArgs& args, CommandResult& result) {
     if (!args.resume) {
       throw UserError(dir.string() + " already holds a sweep: give --resume to continue it, or another -o folder");
     }
-    if (batch::plan_json(batch::read_plan(dir)) != batch::plan_json(plan)) {
-      throw UserError(dir.string() + " holds another sweep (its plan.json differs from what " + args.sweep_file +
+    if (!batch::same_points(batch::read_plan(dir), plan)) {
+      throw UserError(dir.string() + " holds another sweep (its points differ from what " + args.sweep_file +
                       " gives now): use another -o folder");
     }
+    batch::write_plan(dir, plan);  // the metrics, maps and time limit may have changed
   } else {
     batch::write_plan(dir, plan);
     fs::copy_file(spec.file, dir / "sweep.yaml", fs::copy_options::overwrite_existing);
@@ -205,6 +206,15 @@ void status(const SweepArgs& args) {
     first = false;
   }
   std::cout << "\n" << batch::slurm_status(dir);
+  const std::vector<batch::Submission> subs = batch::read_submissions(dir);
+  if (!subs.empty()) {
+    // Known from the points themselves (sacct needs the cluster's accounting).
+    const std::vector<std::size_t> tasks = batch::tasks_to_run(dir, plan, subs.back().points_per_task);
+    if (!tasks.empty()) {
+      std::cout << "array tasks with points crashed, timed out or not run: " << batch::array_spec(tasks, 0)
+                << " (once the jobs have ended: mechsim sweep SWEEP.yaml -o " << dir.string() << " --slurm --resume)\n";
+    }
+  }
   if (fs::exists(dir / "results.csv")) std::cout << "table: " << (dir / "results.csv").string() << "\n";
 }
 

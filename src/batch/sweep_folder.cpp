@@ -95,6 +95,20 @@ std::string plan_json(const Plan& plan) {
   return j.dump(1) + "\n";
 }
 
+bool same_points(const Plan& a, const Plan& b) {
+  Plan x = a, y = b;
+  for (Plan* p : {&x, &y}) {
+    p->time_limit = 0;
+    p->plots_per_point = false;
+    p->metrics.clear();
+    p->maps.clear();
+    // Where the axes are written does not change what they give.
+    for (FixedValue& f : p->set) f.location.clear();
+    for (PlanAxis& ax : p->axes) ax.location.clear();
+  }
+  return plan_json(x) == plan_json(y);
+}
+
 void write_plan(const fs::path& dir, const Plan& plan) {
   fs::create_directories(dir / "points");
   const fs::path tmp = dir / "plan.json.tmp";

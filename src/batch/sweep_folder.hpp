@@ -47,8 +47,11 @@ std::vector<Override> point_overrides(const Plan& plan, std::size_t index);
 // SweepError naming the sweep file's line and the key.
 void check_plan(const Plan& plan);
 
-// plan.json's text (the same plan, the same text: --resume compares them).
+// plan.json's text (the same plan, the same text).
 std::string plan_json(const Plan& plan);
+// Whether two plans run the same points (scenario, set values, axes, values): --resume continues
+// a sweep whose metrics, maps or time limit changed, not one whose points did.
+bool same_points(const Plan& a, const Plan& b);
 void write_plan(const std::filesystem::path& dir, const Plan& plan);
 // Throws SweepError when DIR holds no sweep.
 Plan read_plan(const std::filesystem::path& dir);

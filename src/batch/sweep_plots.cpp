@@ -149,29 +149,31 @@ std::vector<std::string> write_plots(const fs::path& dir, const Plan& plan, std:
     // The first metric over the two map axes.
     const std::string metric = plan.metrics[0];
     std::ostringstream gp;
+    const bool grid = axes[mx].discrete && axes[my].discrete;
     gp << head << "900,700 font 'DejaVu Sans,10' noenhanced\nset output " << quoted((plots / ("heatmap_" + metric + ".png")).string())
-       << "\nset title " << quoted(plan.name + ": " + metric + (axes[mx].discrete && axes[my].discrete ? " (mean per cell)" : ""))
+       << "\nset title " << quoted(plan.name + ": " + metric + " (mean of the points at each pair of values)")
        << "\nset xlabel " << quoted(plan.maps[0]) << "\nset ylabel " << quoted(plan.maps[1]) << "\nset cblabel " << quoted(metric)
-       << "\nset palette rgb 33,13,10\n" << xtics(axes[mx], "x") << xtics(axes[my], "y");
-    if (axes[mx].discrete && axes[my].discrete) {
-      std::map<std::pair<double, double>, std::pair<double, int>> cells;
-      for (const Point& p : plan.points) {
-        const auto r = read_point_result(point_dir(dir, p.index));
-        if (!r) continue;
-        const auto it = r->metrics.find(metric);
-        if (it == r->metrics.end()) continue;
-        auto& cell = cells[{axes[mx].x[p.index], axes[my].x[p.index]}];
-        cell.first += it->second;
-        ++cell.second;
-      }
-      std::vector<double> xs, ys;
-      for (const auto& [key, cell] : cells) xs.push_back(key.first), ys.push_back(key.second);
-      std::sort(xs.begin(), xs.end());
-      xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-      std::sort(ys.begin(), ys.end());
-      ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
-      const fs::path grid = plots / "heatmap.dat";
-      std::ofstream out(grid);
+       << "\nset palette rgb 33,13,10\n";
+    // The mean per pair of values: other axes (and common random draws) put several points on one.
+    std::map<std::pair<double, double>, std::pair<double, int>> cells;
+    for (const Point& p : plan.points) {
+      const auto r = read_point_result(point_dir(dir, p.index));
+      if (!r) continue;
+      const auto it = r->metrics.find(metric);
+      if (it == r->metrics.end()) continue;
+      auto& cell = cells[{axes[mx].x[p.index], axes[my].x[p.index]}];
+      cell.first += it->second;
+      ++cell.second;
+    }
+    std::vector<double> xs, ys;
+    for (const auto& [key, cell] : cells) xs.push_back(key.first), ys.push_back(key.second);
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    std::sort(ys.begin(), ys.end());
+    ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+    const fs::path mean_file = plots / "heatmap.dat";
+    std::ofstream out(mean_file);
+    if (grid) {
       // Cells by position (the values as tic labels): even cells whatever the spacing.
       for (std::size_t j = 0; j < ys.size(); ++j) {
         for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -180,20 +182,25 @@ std::vector<std::string> write_plots(const fs::path& dir, const Plan& plan, std:
         }
         out << '\n';
       }
-      gp << "set xtics (";
-      for (std::size_t i = 0; i < xs.size(); ++i) {
-        gp << (i ? ", " : "") << quoted(axes[mx].labels.empty() ? table_number(xs[i]) : axes[mx].labels[static_cast<std::size_t>(xs[i])]) << " " << i;
-      }
-      gp << ")\nset ytics (";
-      for (std::size_t j = 0; j < ys.size(); ++j) {
-        gp << (j ? ", " : "") << quoted(axes[my].labels.empty() ? table_number(ys[j]) : axes[my].labels[static_cast<std::size_t>(ys[j])]) << " " << j;
-      }
-      gp << ")\nset xrange [-0.5:" << static_cast<double>(xs.size()) - 0.5 << "]\nset yrange [-0.5:" << static_cast<double>(ys.size()) - 0.5 << "]\nplot "
-         << quoted(grid.string()) << " using 1:2:3 with image notitle\n";
+      const auto tics = [&](const char* which, const NumericAxis& a, const std::vector<double>& values) {
+        gp << "set " << which << "tics (";
+        for (std::size_t i = 0; i < values.size(); ++i) {
+          gp << (i ? ", " : "") << quoted(a.labels.empty() ? table_number(values[i]) : a.labels[static_cast<std::size_t>(values[i])]) << " " << i;
+        }
+        gp << ")\n";
+      };
+      tics("x", axes[mx], xs);
+      tics("y", axes[my], ys);
+      gp << "set xrange [-0.5:" << static_cast<double>(xs.size()) - 0.5 << "]\nset yrange [-0.5:" << static_cast<double>(ys.size()) - 0.5
+         << "]\nplot " << quoted(mean_file.string()) << " using 1:2:3 with image notitle\n";
     } else {
-      gp << "plot " << quoted(data.string()) << " using " << 3 + mx << ":" << 3 + my << ":" << first_metric
-         << " with points pt 5 ps 1.6 palette notitle\n";
+      for (const auto& [key, cell] : cells) {
+        out << gp_number(key.first) << ' ' << gp_number(key.second) << ' ' << gp_number(cell.first / cell.second) << '\n';
+      }
+      gp << xtics(axes[mx], "x") << xtics(axes[my], "y") << "plot " << quoted(mean_file.string())
+         << " using 1:2:3 with points pt 5 ps 2.2 lc palette z notitle\n";
     }
+    out.close();
     run("heatmap_" + metric, gp.str());
   }
 

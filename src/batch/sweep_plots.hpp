@@ -2,8 +2,9 @@
 // A sweep's pictures, drawn by gnuplot into DIR/plots/:
 //   <metric>.png     the metric against each axis, a panel per axis (passed points green, the
 //                    others red)
-//   heatmap_<metric>.png   the first metric over the two map axes (the sweep's `maps`): the mean
-//                    per cell where both are lists or grids, else each point coloured by value
+//   heatmap_<metric>.png   the first metric over the two map axes (the sweep's `maps`), the mean
+//                    of the points at each pair of values: cells where both axes are lists or
+//                    grids, else a coloured square at each pair
 //   pass_fail.png    every point over the two map axes: passed, failed a check, did not finish
 //                    (diverged, left the ground, crashed, timed out); list and grid values are
 //                    spread a little within their cell so that stacked points show

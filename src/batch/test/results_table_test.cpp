@@ -78,6 +78,14 @@ TEST(ResultsTable, PlanJsonRoundTrips) {
   EXPECT_EQ(plan_json(back), plan_json(plan));
   EXPECT_EQ(back.points[2].values, plan.points[2].values);
   EXPECT_THROW(read_plan(dir.path() / "nothing"), SweepError);
+  // Resuming with other metrics, maps, time limit or lines is the same sweep; other values are not.
+  Plan other = plan;
+  other.metrics = {"wall_time"};
+  other.time_limit = 5;
+  other.axes[0].location = "s.yaml:9";
+  EXPECT_TRUE(same_points(plan, other));
+  other.points[1].values[0] = "0.25";
+  EXPECT_FALSE(same_points(plan, other));
 }
 
 TEST(Slurm, ArraySpecsAndTasks) {

@@ -122,6 +122,7 @@ grep -q "^5,crashed,0," "$work/slurm/results.csv" || fail "point 5 is not record
 "$exe" sweep status "$work/slurm" > "$work/status.out" 2>&1
 cat "$work/status.out"
 grep -q "20 points: 1 crashed" "$work/status.out" || fail "status does not count the crash"
+grep -q "array tasks with points crashed, timed out or not run: 2 " "$work/status.out" || fail "status does not name task 2"
 
 # Only the failed task goes again.
 "$exe" sweep "$sweep" -o "$work/slurm" --slurm --resume --array-limit 2 --points-per-task 2 > "$work/resubmit.out" 2>&1 ||
