@@ -11,6 +11,8 @@ packages=(
   libsdformat-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  # mechsim sweep --slurm and its test (a single-node Slurm started by the test itself).
+  slurm-wlm munge
 )
 with_ros=0
 for arg in "$@"; do

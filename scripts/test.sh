@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh Debian 12 machine: installs what it needs (ROS 1 included,
 # for the optional ROS layer), builds the release flavour and runs every test (unit, conformance,
-# scenario, cli, ros), then builds the unit-test programs with AddressSanitizer + UBSan and runs
-# the unit tests there.
+# scenario, cli, ros, slurm: a single-node Slurm the test starts), then builds the unit-test
+# programs with AddressSanitizer + UBSan and runs the unit tests there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --with-ros

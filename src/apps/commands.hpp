@@ -26,5 +26,6 @@ void add_run_command(CLI::App& app, CommandResult& result);
 void add_tune_command(CLI::App& app, CommandResult& result);
 void add_spawner_command(CLI::App& app, CommandResult& result);  // ROS builds: mechsim_spawner
 void add_bench_command(CLI::App& app, CommandResult& result);
+void add_sweep_command(CLI::App& app, CommandResult& result);
 
 }  // namespace mechsim::apps

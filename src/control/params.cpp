@@ -78,6 +78,7 @@ Params::Node* Params::resolve(std::string_view key, std::string* resolved_path) 
   for_each_component(key, [&](std::string_view part) {
     path = join_param_path(path, part);
     node = node != nullptr ? map_child(node, part) : nullptr;
+    if (node != nullptr) node->read.store(true, std::memory_order_relaxed);
   });
   if (resolved_path != nullptr) *resolved_path = std::move(path);
   return node;
@@ -141,6 +142,7 @@ Params Params::at(std::size_t index) const {
   if (index >= node_->list.size()) {
     fail(path, nullptr, "index out of range (the list has " + std::to_string(node_->list.size()) + " items)");
   }
+  node_->list[index]->read.store(true, std::memory_order_relaxed);
   return Params(tree_, node_->list[index].get(), path);
 }
 
@@ -148,10 +150,14 @@ std::vector<Params> Params::items() const {
   std::vector<Params> out;
   if (node_->kind == Kind::List) {
     for (std::size_t i = 0; i < node_->list.size(); ++i) {
+      node_->list[i]->read.store(true, std::memory_order_relaxed);
       out.push_back(Params(tree_, node_->list[i].get(), path_ + "[" + std::to_string(i) + "]"));
     }
   } else if (node_->kind == Kind::Map) {
-    for (auto& [key, child] : node_->map) out.push_back(Params(tree_, child.get(), join_param_path(path_, key)));
+    for (auto& [key, child] : node_->map) {
+      child->read.store(true, std::memory_order_relaxed);
+      out.push_back(Params(tree_, child.get(), join_param_path(path_, key)));
+    }
   }
   return out;
 }
@@ -353,6 +359,7 @@ void reset_node(Params::Node& n) {
   n.list.clear();
   n.text.clear();
   n.line = 0;
+  n.read.store(false, std::memory_order_relaxed);
 }
 
 void set_scalar(Params::Node& n, ScalarType type, std::string text) {

@@ -1,6 +1,7 @@
 #pragma once
 // Internal: the node storage behind control::Params (params.cpp, params_yaml.cpp).
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <utility>
@@ -24,6 +25,9 @@ struct Params::Node {
   std::vector<std::pair<std::string, std::unique_ptr<Node>>> map;  // document order
   std::vector<std::unique_ptr<Node>> list;
   int line = 0;  // 1-based line in the source, 0 when built in code
+  // Looked up through a handle (Params::was_read). Atomic: handles to one tree may be read from
+  // several threads, and a lookup marks the node.
+  mutable std::atomic<bool> read{false};
 };
 
 struct Params::Tree {
@@ -33,6 +37,7 @@ struct Params::Tree {
 
 struct ParamsAccess {
   static const Params::Node* node(const Params& p) { return p.node_; }
+  static Params::Node* mutable_node(const Params& p) { return p.node_; }
   [[noreturn]] static void fail(const Params& p, const std::string& what) { p.fail(p.path_, p.node_, what); }
   static Params make(std::shared_ptr<Params::Tree> tree) {
     Params::Node* root = tree->root.get();

@@ -382,6 +382,28 @@ std::vector<physics::WorldBox> read_boxes(const Params& list) {
   return boxes;
 }
 
+// controllers.params: every leaf (scalar or list) must name a parameter of the controllers file.
+void read_controller_params(const Params& overlay, const Params& file_params, const std::string& key,
+                            std::vector<ControllerParam>& out) {
+  if (!overlay.is_map()) fail(overlay, "expected a map of controller name -> parameters");
+  for (const std::string& k : overlay.keys()) {
+    const Params value = overlay.child(k);
+    const std::string path = key.empty() ? k : key + "/" + k;
+    const std::optional<Params> target = file_params.find(path);
+    if (!target) {
+      fail(value, "the controllers file has no parameter " + control::join_param_path(file_params.path(), path) +
+                      " (write it there to override it)");
+    }
+    if (value.is_map() && target->is_map()) {
+      read_controller_params(value, file_params, path, out);
+    } else if (value.is_map()) {
+      fail(value, "is a map, but " + target->path() + " in the controllers file is not");
+    } else {
+      out.push_back({path, value});
+    }
+  }
+}
+
 }  // namespace
 
 Scenario load_scenario(const std::string& path) {
@@ -392,6 +414,10 @@ Scenario load_scenario(const std::string& path) {
   } catch (const std::exception& e) {
     throw ScenarioError(e.what());
   }
+  return load_scenario(root, path);
+}
+
+Scenario load_scenario(const Params& root, const std::string& path) {
   const fs::path base = fs::absolute(path).parent_path();
   Scenario s;
   s.file = path;
@@ -453,6 +479,16 @@ Scenario load_scenario(const std::string& path) {
     if (!fs::exists(s.controllers_file)) fail(controllers.child("file"), "no such file: " + s.controllers_file);
     s.controllers_namespace = controllers.get<std::string>("namespace", "");
     s.start = controllers.get<std::vector<std::string>>("start");
+    if (auto overlay = controllers.find("params")) {
+      Params file_params;
+      try {
+        file_params = Params::from_yaml_file(s.controllers_file);
+        if (!s.controllers_namespace.empty()) file_params = file_params.child(s.controllers_namespace);
+      } catch (const std::exception& e) {
+        fail(*overlay, std::string("cannot read the controllers file: ") + e.what());
+      }
+      read_controller_params(*overlay, file_params, "", s.controller_params);
+    }
 
     s.duration = root.get<double>("duration");
     if (!(s.duration > 0.0) || s.duration > 1e6) fail(root.child("duration"), "must be in (0, 1e6] s");

@@ -32,6 +32,10 @@
 //     file: ../robots/cc8/config/controllers.yaml
 //     namespace: cc8
 //     start: [joint_state_controller, rover_drive_controller]
+//     # Optional: values laid over the file's parameters (under `namespace`) before the controllers
+//     # load, as a second `rosparam load` would. Each must name a parameter the file has (a
+//     # misspelt gain must not pass silently); lists and scalars replace, maps merge.
+//     params: {rover_drive_controller: {wheel_pid: {p: 5.0}}}
 //   duration: 30        # s of simulation time
 //   period: 0.001       # s
 //   integrator: euler   # euler | implicit | rk4: MuJoCo's integrator; default physics::BuildOptions' (see there)
@@ -115,6 +119,7 @@
 #include <string>
 #include <vector>
 
+#include "control/params.hpp"
 #include "control/ports.hpp"
 #include "controllers/gripper/pr2_gripper_ports.hpp"
 #include "controllers/trajectory/trajectory_msgs.hpp"
@@ -186,6 +191,13 @@ struct SensorBlock {
   int line = 0;  // of the block's first line
 };
 
+// One controllers.params value: `key` is its path under the controllers namespace
+// ("rover_drive_controller/wheel_pid/p"), `value` a scalar or a list.
+struct ControllerParam {
+  std::string key;
+  control::Params value;
+};
+
 // What a run does when the robot leaves the usable ground.
 enum class LeavingTerrain { Stop, Continue };
 
@@ -206,6 +218,7 @@ struct Scenario {
   std::string controllers_file;  // absolute
   std::string controllers_namespace;
   std::vector<std::string> start;
+  std::vector<ControllerParam> controller_params;  // controllers.params, in document order
   double duration = 10.0;
   double period = 0.001;
   physics::Integrator integrator = physics::BuildOptions{}.integrator;  // the project default
@@ -220,5 +233,8 @@ struct Scenario {
 
 // Reads and validates a scenario file. Errors name the file and the parameter path.
 Scenario load_scenario(const std::string& path);
+// The same from a tree already read (and perhaps changed: mechsim sweep's overrides); `path` is
+// the file it came from (relative paths in it are resolved against its folder).
+Scenario load_scenario(const control::Params& root, const std::string& path);
 
 }  // namespace mechsim::sim

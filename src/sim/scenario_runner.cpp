@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "control/params.hpp"
+#include "control/params_edit.hpp"
 #include "controllers/drive/rover_drive_ports.hpp"
 #include "description/robot_loader.hpp"
 #include "description/sensor_spec.hpp"
@@ -146,6 +147,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   try {
     params = control::Params::from_yaml_file(s.controllers_file);
     if (!s.controllers_namespace.empty()) params = params.child(s.controllers_namespace);
+    for (const ControllerParam& p : s.controller_params) control::replace(params, p.key, p.value);
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": controllers: " + e.what());
   }

@@ -1,0 +1,21 @@
+#pragma once
+// Editing a Params tree beyond Params::set: what a scenario's `controllers.params` overlay and
+// mechsim sweep's overrides need. Configuration-time code (allocates, throws ParamsError).
+
+#include <string_view>
+
+#include "control/params.hpp"
+
+namespace mechsim::control {
+
+// Whether the node behind `p` was looked up (child, find, has, get, at, items) through any handle
+// since it was read or last replaced: a reader can tell which keys it never consumed.
+bool was_read(const Params& p);
+
+// Replaces the value at `key` under `at` (created, with the maps on the way, when absent; an
+// empty key replaces `at`'s own node, a list item say) by a deep copy of `value`'s subtree:
+// scalar types are kept (a plain YAML scalar still converts on demand); line numbers are dropped,
+// as they belong to another source.
+void replace(Params at, std::string_view key, const Params& value);
+
+}  // namespace mechsim::control
