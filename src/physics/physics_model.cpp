@@ -13,6 +13,7 @@
 #include "physics/mujoco_internal.hpp"
 #include "physics/physics_error.hpp"
 #include "physics/terrain_tiles.hpp"
+#include "physics/wheel_terrain_contact.hpp"
 
 namespace mechsim::physics {
 namespace {
@@ -161,6 +162,7 @@ PhysicsModel::~PhysicsModel() = default;
 std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::RobotModel& robot,
                                                         const BuildOptions& options) {
   validate_options(options);
+  detail::install_wheel_terrain_contact();
   StageTimer timer;
   StageTime mjcf_time, compile_time;
   const std::string who = "robot '" + robot.name + "' (" + robot.source + ")";
