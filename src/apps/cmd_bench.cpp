@@ -34,6 +34,7 @@ struct BenchArgs {
   double seconds = 5.0;
   double spawn_z = 0.02;
   std::vector<double> spawn_xy;  // empty: the Mars Yard's start pad, the origin elsewhere
+  std::string soil;              // a named soil (physics/soil.hpp); empty: rigid ground
   std::string integrator = physics::integrator_name(physics::BuildOptions{}.integrator);
 };
 
@@ -101,6 +102,10 @@ void run(const BenchArgs& args) {
   }
   sim::WorldConfig world_config;
   world_config.name = args.world;
+  if (!args.soil.empty()) {
+    world_config.soil = physics::find_soil(args.soil);
+    if (!world_config.soil) throw UserError("--soil: no soil named '" + args.soil + "' (mechsim world soils lists them)");
+  }
   sim::SimulationOptions options;
   options.spawn.z = args.spawn_z;
   // On a height field the robot stands on the ground fitted under it, as a scenario puts it.
@@ -165,8 +170,9 @@ void run(const BenchArgs& args) {
   const double bare_rate = static_cast<double>(ticks) / bare, full_rate = static_cast<double>(ticks) / full;
   std::printf("robot %s, %zu controllers running, %ld steps of %.4g s, %s integrator\n", sim.robot().name.c_str(),
               s.starting.size(), ticks, sim.period(), physics::integrator_name(options.integrator));
-  std::printf("spawned at (%.3g, %.3g) in %s; full ticks and bare steps alternate in blocks of %ld\n",
-              sim.options().spawn.x, sim.options().spawn.y, args.world.c_str(), kBlock);
+  std::printf("spawned at (%.3g, %.3g) in %s%s%s; full ticks and bare steps alternate in blocks of %ld\n",
+              sim.options().spawn.x, sim.options().spawn.y, args.world.c_str(), args.soil.empty() ? "" : ", soil ",
+              args.soil.c_str(), kBlock);
   std::printf("bare physics step: %10.0f steps/s (%.2f us)\n", bare_rate, 1e6 / bare_rate);
   std::printf("full tick:         %10.0f steps/s (%.2f us)\n", full_rate, 1e6 / full_rate);
   std::printf("tick overhead:     %+.1f %% over the bare step\n", 100.0 * (bare_rate / full_rate - 1.0));
@@ -190,6 +196,7 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   cmd->add_option("--start", args->start, "Controllers to start (default: the widest conflict-free set of the namespace's controllers, e.g. the CC8's rover drive)");
   cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
   cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
+  cmd->add_option("--soil", args->soil, "Wheels on this soil instead of rigid ground (mechsim world soils lists them)");
   cmd->add_option("--spawn", args->spawn_xy, "Spawn position X Y (m; default: the Mars Yard's start pad, else the origin)")
       ->expected(2);
   cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: euler (default), implicit or rk4")

@@ -156,12 +156,36 @@ int rim_contacts(const HfieldSurface& surface, const double c[3], const double a
 
 namespace {
 
-// MuJoCo's own routine for a height field against a geom of `type`, kept by install below (the
-// cylinder's for cylinders standing on a flat end).
+// MuJoCo's own routine for a geom of type1 against one of type2, kept by install below (the
+// height field-cylinder one for cylinders standing on a flat end).
+template <int type1, int type2>
+mjfCollision mujoco_routine() {
+  static const mjfCollision original = mjCOLLISIONFUNC[type1][type2];
+  return original;
+}
+
 template <int type>
 mjfCollision mujoco_hfield_routine() {
-  static const mjfCollision original = mjCOLLISIONFUNC[mjGEOM_HFIELD][type];
-  return original;
+  return mujoco_routine<mjGEOM_HFIELD, type>();
+}
+
+// The depth (m) below the ground where geom g's rigid contact with it starts: a soil wheel's
+// bedrock (Physics::set_soil writes it into the geom's user number), 0 on rigid ground.
+double bedrock(const mjModel* m, int g) { return m->nuser_geom > 0 ? m->geom_user[g * m->nuser_geom] : 0.0; }
+
+// MuJoCo's plane-cylinder routine, its contacts moved down to a soil wheel's bedrock.
+int collide_plane_cylinder(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2, mjtNum margin) {
+  const int n = mujoco_routine<mjGEOM_PLANE, mjGEOM_CYLINDER>()(m, d, con, g1, g2, margin);
+  const double depth = bedrock(m, g2);
+  if (depth <= 0.0) return n;
+  int kept = 0;
+  for (int i = 0; i < n; ++i) {
+    if (con[i].dist + depth >= margin) continue;
+    con[kept] = con[i];
+    con[kept].dist += depth;
+    ++kept;
+  }
+  return kept;
 }
 
 // The geom's centre c and the half extents of its box aligned with the height field's frame.
@@ -253,13 +277,14 @@ int collide_hfield_cylinder(const mjModel* m, const mjData* d, mjContact* con, i
   const auto deepest = [&](int i) { return count[i] > 0 ? rc[i][0].gap : -r; };
   const double between = 0.5 * (deepest(0) + deepest(1)) + kBulge;
 
+  const double soil = bedrock(m, g2);
   int n = 0;
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < count[i] && n < mjMAXCONPAIR; ++k) {
       const RimContact& h = rc[i][k];
-      if (h.depth <= -margin || (i == 2 && h.gap <= between)) continue;
+      if (h.depth - soil <= -margin || (i == 2 && h.gap <= between)) continue;
       mjContact& out = con[n++];
-      out.dist = -h.depth;
+      out.dist = soil - h.depth;
       const double mid[3] = {h.point[0] + 0.5 * h.depth * h.normal[0], h.point[1] + 0.5 * h.depth * h.normal[1],
                              h.point[2] + 0.5 * h.depth * h.normal[2]};
       for (int j = 0; j < 3; ++j) {
@@ -289,6 +314,8 @@ void install_wheel_terrain_contact() {
     mjCOLLISIONFUNC[mjGEOM_HFIELD][mjGEOM_CYLINDER] = collide_hfield_cylinder;
     mjCOLLISIONFUNC[mjGEOM_HFIELD][mjGEOM_BOX] = collide_hfield_convex<mjGEOM_BOX>;
     mjCOLLISIONFUNC[mjGEOM_HFIELD][mjGEOM_MESH] = collide_hfield_convex<mjGEOM_MESH>;
+    (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_CYLINDER>();
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_CYLINDER] = collide_plane_cylinder;
   });
 }
 
