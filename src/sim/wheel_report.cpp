@@ -72,7 +72,7 @@ CheckOutcome WheelReport::judge(const Check& c) const {
   CheckOutcome out;
   out.name = c.text;
   const std::size_t k = static_cast<std::size_t>(&c - scenario_.checks.data());
-  const std::string which = c.wheel.empty() ? "the wheels'" : c.wheel + "'s";
+  const std::string which = c.wheel.empty() ? "every wheel" : c.wheel;
   char buf[512];
   if (!active_ || k >= windows_.size() || windows_[k].samples == 0) {
     std::snprintf(buf, sizeof buf, "mean slip of %s in [%.2f, %.3g] s: %s", which.c_str(), c.from, c.to,
@@ -82,8 +82,10 @@ CheckOutcome WheelReport::judge(const Check& c) const {
   }
   const double mean = windows_[k].sum / static_cast<double>(windows_[k].samples);
   out.passed = (!c.min_mean || mean >= *c.min_mean) && (!c.max_mean || mean <= *c.max_mean);
-  std::snprintf(buf, sizeof buf, "mean slip of %s in [%.2f, %.3g] s: %.4f (bounds [%s, %s])", which.c_str(), c.from, c.to, mean,
-                c.min_mean ? std::to_string(*c.min_mean).c_str() : "-", c.max_mean ? std::to_string(*c.max_mean).c_str() : "-");
+  char lo[32] = "-", hi[32] = "-";
+  if (c.min_mean) std::snprintf(lo, sizeof lo, "%.3g", *c.min_mean);
+  if (c.max_mean) std::snprintf(hi, sizeof hi, "%.3g", *c.max_mean);
+  std::snprintf(buf, sizeof buf, "mean slip of %s in [%.2f, %.3g] s: %.4f (bounds [%s, %s])", which.c_str(), c.from, c.to, mean, lo, hi);
   out.detail = buf;
   return out;
 }
