@@ -16,11 +16,13 @@
 //     the rate a slip ratio divided by nothing would allow. Integrated exactly over the step
 //     (the exponential), so it is stable at any speed;
 //  4. the Bekker-Wong forces at the slip j_x / L (terramechanics.hpp), in the frame of the
-//     direction the wheel moves (a wheel driven backwards mirrors the model); the compaction
-//     resistance (the horizontal part of the normal stress) opposes travel and fades below
-//     2 cm/s (a wheel at rest is not pushed back by the rut it has not made); damping on the
-//     sinkage rate and the shear rate (critical for the wheel's share of the load, capped for
-//     the explicit step);
+//     direction the wheel rolls (a wheel driven backwards mirrors the model). The rolling rim's
+//     own shear and the compaction resistance (the horizontal part of the normal stress, against
+//     the travel) build up as states over the contact length and over 5 mm of travel, so that a
+//     wheel at rest is neither driven by a rim that does not roll nor pushed back by a rut it has
+//     not made, and a wheel jittering about rest does not switch them from side to side each step;
+//     damping on the sinkage rate and the shear rate (critical for the wheel's share of the load,
+//     bounded for the explicit step by the wheel body's mass and its spin inertia at the rim);
 //  5. the force and moment on the wheel's body (xfrc_applied), at its centre of mass.
 // The shear state becomes the state only when the step succeeds (commit_soil).
 #include <algorithm>
@@ -40,7 +42,6 @@ constexpr double kPushLength = 0.005;  // m of travel over which the compaction 
 constexpr double kMinContactLength = 0.005;  // m: shortest contact patch the shear relaxes over
 constexpr double kDampingCap = 0.25;    // damping x dt / mass: the explicit step's bound
 
-using Vec = double[3];
 
 double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 void cross(const double* a, const double* b, double* out) {
