@@ -2,7 +2,8 @@
 //   mechsim world stats WORLD [--seed N] [--size-x M --size-y M] [--z-min M --z-max M]
 //   mechsim world export WORLD -o FILE.png|FILE.tif [same options]
 //   mechsim world features WORLD [--seed N]
-// WORLD is `empty`, `mars_yard_2024` or a heightmap image (PNG or TIFF).
+//   mechsim world soils
+// WORLD is `empty`, `mars_yard_2024`, `slope` or a heightmap image (PNG or TIFF).
 
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "apps/commands.hpp"
 #include "physics/heightmap_io.hpp"
+#include "physics/soil.hpp"
 #include "physics/terrain_world.hpp"
 
 namespace mechsim::apps {
@@ -29,7 +31,7 @@ struct WorldArgs {
 };
 
 void add_world_options(CLI::App* cmd, WorldArgs& args) {
-  cmd->add_option("WORLD", args.world, "empty, mars_yard_2024, or a heightmap file (PNG/TIFF)")->required();
+  cmd->add_option("WORLD", args.world, "empty, mars_yard_2024, slope, or a heightmap file (PNG/TIFF)")->required();
   cmd->add_option("--seed", args.seed, "mars_yard_2024: generator seed (default 2024)");
   cmd->add_option("--size-x", args.size_x, "heightmap file: footprint along x (m)");
   cmd->add_option("--size-y", args.size_y, "heightmap file: footprint along y (m)");
@@ -191,6 +193,15 @@ void add_world_command(CLI::App& app, CommandResult& /*result*/) {
       throw UserError("world '" + args->world + "' has no feature list (only mars_yard_2024 has)");
     }
     print_features(*loaded.terrain.yard);
+  });
+
+  CLI::App* soils = world->add_subcommand("soils", "List the named soils a world can have (world.soil) and their sources");
+  soils->callback([] {
+    std::printf("# name n k_c(N/m^(n+1)) k_phi(N/m^(n+2)) c(Pa) phi(deg) K(m)  source\n");
+    for (const ph::SoilParameters& s : ph::named_soils()) {
+      std::printf("%-15s %5.2f %10.4g %12.6g %7.4g %5.1f %7.4g  %s\n", s.name.c_str(), s.n, s.k_c, s.k_phi, s.cohesion,
+                  s.friction_angle * 180.0 / std::numbers::pi, s.shear_modulus, s.source.c_str());
+    }
   });
 }
 

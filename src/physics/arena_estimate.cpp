@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "physics/wheel_terrain_contact.hpp"
+
 namespace mechsim::physics {
 namespace {
 
@@ -32,6 +34,7 @@ bool can_collide(const mjModel& m, int g1, int g2) {
 // the spawn pose, every joint at 0).
 struct GeomBox {
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  double axis_z = 1.0;  // world z of the geom's z axis
 };
 
 std::vector<GeomBox> geom_bounds(const mjModel& m) {
@@ -54,6 +57,7 @@ std::vector<GeomBox> geom_bounds(const mjModel& m) {
     mju_quat2Mat(R, q);
     const mjtNum* s = m.geom_size + 3 * g;
     GeomBox& out_g = out[static_cast<std::size_t>(g)];
+    out_g.axis_z = R[8];
     const int mesh = m.geom_dataid[g];
     if (m.geom_type[g] == mjGEOM_MESH && mesh >= 0 && m.mesh_vertnum[mesh] > 0) {  // exact, from the vertices
       for (int k = 0; k < 3; ++k) out_g.lo[k] = 1e300, out_g.hi[k] = -1e300;
@@ -96,6 +100,12 @@ bool is_ground(const mjModel& m, int g) {
 // most mjMAXCONPAIR per pair); a geom meets about half of them (the CC8's wheels on the Mars Yard:
 // at most 14 of the 40 prisms under each over the 60 s route; 20 estimated).
 int ground_contacts(const mjModel& m, int ground, int g, const GeomBox& b) {
+  if (m.geom_type[ground] == mjGEOM_HFIELD && m.geom_type[g] == mjGEOM_CYLINDER &&
+      std::fabs(b.axis_z) <= detail::kWheelMaxAxisZ) {
+    // mechsim's wheel contact (wheel_terrain_contact.hpp): two rims, and up to two more where a
+    // circle touches twice or the middle meets a bulge (the CC8 on the Mars Yard route: at most 3).
+    return 4;
+  }
   if (m.geom_type[ground] == mjGEOM_HFIELD) {
     const int f = m.geom_dataid[ground];
     if (f < 0) return mjMAXCONPAIR;

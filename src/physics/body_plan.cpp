@@ -80,7 +80,11 @@ class Planner {
 
   // The link frame is its parent joint's frame, so the joint axis is given in it.
   bool is_narrow_wheel(const Link& link, const description::Collision& c) const {
-    if (c.geometry.type != description::GeometryType::Cylinder || !(c.geometry.length <= c.geometry.radius)) return false;
+    return is_wheel(link, c) && c.geometry.length <= c.geometry.radius;
+  }
+
+  bool is_wheel(const Link& link, const description::Collision& c) const {
+    if (c.geometry.type != description::GeometryType::Cylinder) return false;
     const description::Joint* j = link.parent_joint.empty() ? nullptr : robot_.joint(link.parent_joint);
     if (j == nullptr || (j->type != description::JointType::Continuous && j->type != description::JointType::Revolute))
       return false;
@@ -113,6 +117,7 @@ class Planner {
       geom.geometry = link.collisions[i].geometry;
       geom.self_collide = g.self_collide.value_or(false);
       geom.friction = mu;
+      geom.wheel = is_wheel(link, link.collisions[i]);
       geom.narrow_wheel = is_narrow_wheel(link, link.collisions[i]);
       out.push_back(std::move(geom));
     }

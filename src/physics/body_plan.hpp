@@ -38,8 +38,10 @@ struct PlannedGeom {
   bool visual = false;
   bool self_collide = false;  // the source link's gazebo <selfCollide>
   double friction = 1.0;      // sliding
-  // A narrow wheel: a collision cylinder no longer than its radius whose link turns about the
-  // cylinder's axis on a revolute or continuous joint (see ContactDefaults::point_contact_wheels).
+  // A wheel: a collision cylinder whose link turns about the cylinder's axis on a revolute or
+  // continuous joint (the wheel-soil model acts on these). A narrow one is no longer than its
+  // radius (see ContactDefaults::point_contact_wheels).
+  bool wheel = false;
   bool narrow_wheel = false;
   std::optional<std::array<double, 4>> rgba;
 };

@@ -112,6 +112,9 @@ class Writer {
        << "\" gravity=\"0 0 " << num(-options_.world.gravity) << "\" cone=\""
        << (c.elliptic_cone ? "elliptic" : "pyramidal") << "\"/>\n";
     x_ << "  " << mjcf_size_element(arena_) << "\n";
+    // One user number per geom: the depth (m) below the ground where a soil wheel's rigid contact
+    // starts (Physics::set_soil writes it in its own copy of the model; 0 is rigid ground).
+    x_ << "  <size nuser_geom=\"1\"/>\n";
     x_ << "  <default>\n    <geom condim=\"" << c.condim << "\" friction=\"" << num(c.sliding_friction) << " "
        << num(c.torsional_friction) << " " << num(c.rolling_friction) << "\" solref=\"" << num(c.solref[0]) << " "
        << num(c.solref[1]) << "\" solimp=\"" << num(c.solimp[0]) << " " << num(c.solimp[1]) << " "

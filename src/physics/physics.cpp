@@ -94,6 +94,9 @@ void Physics::spawn_state() {
   // body's centre of mass (xfrc_applied persists across steps).
   const double g = model_->options().world.gravity;
   for (int b : model_->gravity_off_bodies()) data_->d->xfrc_applied[6 * b + 2] = m->body_mass[b] * g;
+  data_->xfrc_base.assign(data_->d->xfrc_applied, data_->d->xfrc_applied + 6 * m->nbody);
+  std::fill(data_->soil_state.begin(), data_->soil_state.end(), Data::SoilWheel{});
+  std::fill(data_->soil_readings.begin(), data_->soil_readings.end(), WheelSoilReading{});
   forward();
   diff_tau_a_ = diff_tau_b_ = 0.0;
 }
@@ -158,6 +161,7 @@ StepStatus Physics::step() {
   }
   if (status.ok()) {
     note_mujoco_warnings();
+    commit_soil();
   } else {
     restore_saved_state();
     forward();

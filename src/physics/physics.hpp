@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "description/robot_model.hpp"
 #include "physics/physics_model.hpp"
 #include "physics/ray_cast.hpp"
+#include "physics/soil.hpp"
 
 namespace mechsim::physics {
 
@@ -91,6 +93,20 @@ struct Contact {
   double normal_force = 0.0;        // N, >= 0
   double friction_force[2] = {0.0, 0.0};  // N, along the contact frame's tangents
   description::Vec3 force;          // world frame (N): normal and friction, the force a exerts on b
+};
+
+// What the soil did to one wheel (PhysicsModel::wheels()) in the last step (Physics::set_soil).
+// Heading: the direction the wheel rolls, across its axle, along the ground.
+struct WheelSoilReading {
+  bool contact = false;       // in the soil
+  double slip = 0.0;          // (r w - v) / max(|r w|, |v|): > 0 spinning faster than it travels
+                              // (driving), < 0 slower (braking); v along the heading
+  double slip_angle = 0.0;    // rad: atan2(sideways velocity, |velocity along the heading|)
+  double sinkage = 0.0;       // m, of the wheel's lowest point below the soil surface
+  double normal_force = 0.0;  // N, the load the soil carries
+  double traction = 0.0;      // N, net drawbar pull along the heading (> 0 pulls forward)
+  double lateral_force = 0.0; // N, along the axle
+  double torque = 0.0;        // N m about the axle (< 0 resists a wheel driven forward)
 };
 
 // Acceleration of a point (Physics::link_acceleration), world frame.
@@ -189,6 +205,19 @@ class Physics {
   // is its x-y extent.
   Bounds robot_bounds() const;
 
+  // Wheel-soil: with a soil, every wheel of the model (PhysicsModel::wheels()) meets the ground
+  // through the Bekker-Wong model (terramechanics.hpp) instead of rigid contact: step() computes
+  // each wheel's sinkage, slip and slip angle from the state and applies the soil's force and
+  // moment to the wheel's body within the step (MuJoCo's mj_step1, the forces, mj_step2). The
+  // wheels' rigid contact with the ground then starts soil.bedrock_depth below its surface (a
+  // bound on sinkage); other contacts are untouched. nullopt (the default): rigid ground. Set-up
+  // only (allocates); the soil's state (shear displacements) restarts on reset(). Throws
+  // std::invalid_argument naming the bad parameter (check_soil).
+  void set_soil(std::optional<SoilParameters> soil);
+  const std::optional<SoilParameters>& soil() const;
+  // One reading per PhysicsModel::wheels() for the last step; empty without a soil.
+  const std::vector<WheelSoilReading>& wheel_soil() const;
+
   // Contacts of the last step. Fills `out` (cleared first); allocates only when `out` has
   // too little capacity. Returns the number of contacts.
   std::size_t contacts(std::vector<Contact>& out) const;
@@ -234,6 +263,10 @@ class Physics {
   // Runs mj_step (step) or mj_forward from the saved state until it fits the arena, growing it
   // as ArenaOverflow allows; false when it did not fit.
   bool compute_in_arena(bool step);
+  // One mj_step, with the soil's forces on the wheels when there is a soil (wheel_soil.cpp).
+  void mujoco_step();
+  void apply_soil();     // from the state at the start of the step: forces, pending soil state
+  void commit_soil();    // the step succeeded: its soil state becomes the state
   bool grow_arena(bool contacts_full, bool constraints_full, const char* what);
   void note_mujoco_warnings();
   std::shared_ptr<const PhysicsModel> model_;

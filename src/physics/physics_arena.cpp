@@ -24,7 +24,7 @@ void Physics::save_state() {
 
 bool Physics::compute_in_arena(bool step) {
   for (;;) {
-    if (step) mj_step(data_->m, data_->d);
+    if (step) mujoco_step();
     else mj_forward(data_->m, data_->d);
     const mjData* d = data_->d;
     const bool contacts_full = d->warning[mjWARN_CONTACTFULL].number != data_->saved_warnings[mjWARN_CONTACTFULL];

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,20 @@ struct Physics::Data {
   ArenaSize peak;
   int growths = 0;
   int warning_notice[mjNWARNING] = {};  // index + 1 into Physics::notices_ of each MuJoCo warning
+
+  // Wheel-soil (wheel_soil.cpp): the soil, each wheel's state as of the state and as the running
+  // step would leave it; the readings; the world geom the soil lies on (plane or height field, -1:
+  // none); xfrc_applied as spawn_state() leaves it (the gravity-off forces), under the soil's.
+  struct SoilWheel {
+    double shear_x = 0.0, shear_y = 0.0;  // m: soil shear at the rim's exit, along heading and axle
+    double rolling = 0.0;   // [-1, 1]: how far into rolling forward (+) or backward (-) the wheel is
+    double pushing = 0.0;   // [-1, 1]: the same for the compaction ahead of it (travel only)
+  };
+  std::optional<SoilParameters> soil;
+  std::vector<SoilWheel> soil_state, soil_pending;
+  std::vector<WheelSoilReading> soil_readings, soil_pending_readings;
+  int soil_ground = -1;
+  std::vector<mjtNum> xfrc_base;
 
   ~Data() {
     if (d != nullptr) mj_deleteData(d);

@@ -13,6 +13,7 @@
 #include "physics/mujoco_internal.hpp"
 #include "physics/physics_error.hpp"
 #include "physics/terrain_tiles.hpp"
+#include "physics/wheel_terrain_contact.hpp"
 
 namespace mechsim::physics {
 namespace {
@@ -161,6 +162,7 @@ PhysicsModel::~PhysicsModel() = default;
 std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::RobotModel& robot,
                                                         const BuildOptions& options) {
   validate_options(options);
+  detail::install_wheel_terrain_contact();
   StageTimer timer;
   StageTime mjcf_time, compile_time;
   const std::string who = "robot '" + robot.name + "' (" + robot.source + ")";
@@ -256,6 +258,15 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     if (f.body >= 0 && info.body < 0) throw PhysicsError("internal: body '" + plan.bodies[f.body].name + "' not compiled");
     pm->links_.push_back(std::move(info));
   }
+  for (const PlannedBody& b : plan.bodies)
+    for (const PlannedGeom& g : b.geoms) {
+      const int geom = g.wheel ? mj_name2id(m, mjOBJ_GEOM, g.name.c_str()) : -1;
+      if (geom < 0 || m->geom_type[geom] != mjGEOM_CYLINDER) continue;
+      const description::Link* link = robot.link(g.link);
+      const auto joint = link != nullptr ? pm->joint_index(link->parent_joint) : std::nullopt;
+      if (!joint) continue;
+      pm->wheels_.push_back({g.link, *joint, geom, m->geom_bodyid[geom], m->geom_size[3 * geom], 2.0 * m->geom_size[3 * geom + 1]});
+    }
   for (const std::string& link : plan.gravity_off_links) {
     const int body = mj_name2id(m, mjOBJ_BODY, link.c_str());
     if (body <= 0) continue;

@@ -38,6 +38,15 @@ struct LinkInfo {
   description::Pose X_BL;  // link frame in the MuJoCo body frame
 };
 
+// A wheel: a collision cylinder turning about its axis on its link's revolute or continuous
+// joint (the wheel-soil model acts on these; physics/soil.hpp).
+struct WheelInfo {
+  std::string link;         // URDF link
+  std::size_t joint = 0;    // index into PhysicsModel::joints(): the joint it turns on
+  int geom = -1, body = -1;  // MuJoCo geom (a cylinder) and body
+  double radius = 0.0, width = 0.0;  // m
+};
+
 // The gazebo differential plugin's law, when the description names one.
 struct DifferentialInfo {
   std::string plugin;
@@ -102,6 +111,9 @@ class PhysicsModel {
   const std::vector<int>& gravity_off_bodies() const { return gravity_off_bodies_; }
   // URDF joints that are not simulated (massless child link merged into its parent).
   const std::vector<std::string>& dropped_joints() const { return dropped_joints_; }
+  // The robot's wheels (WheelInfo), in document order. Narrow wheels given to MuJoCo as
+  // ellipsoids (ContactDefaults::point_contact_wheels) are not among them.
+  const std::vector<WheelInfo>& wheels() const { return wheels_; }
 
   const std::string& mjcf() const { return mjcf_; }  // the generated document (arena size included)
   const ArenaEstimate& arena() const { return arena_; }
@@ -131,6 +143,7 @@ class PhysicsModel {
   std::vector<JointInfo> joints_;
   std::vector<LinkInfo> links_;
   std::optional<DifferentialInfo> differential_;
+  std::vector<WheelInfo> wheels_;
   std::vector<std::string> dropped_joints_, warnings_, gravity_off_links_;
   std::vector<int> gravity_off_bodies_;
   bool fixed_to_world_ = false;

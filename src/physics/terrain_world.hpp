@@ -2,6 +2,9 @@
 // The terrain of a named world, as `mechsim world` and the simulation look it up:
 //   "empty"           flat ground plane at z = 0, no heightmap;
 //   "mars_yard_2024"  generated from a seed (mars_yard.hpp);
+//   "slope"           a plane rising along +x at slope_deg (default 10 deg): 40 m x 12 m, 5 cm
+//                     cells, z = tan(slope) (x + 20) (0 at the west edge), for climbing and
+//                     standing tests;
 //   anything else     a heightmap image file (heightmap_io.hpp).
 
 #include <cstdint>
@@ -16,6 +19,7 @@ namespace mechsim::physics {
 
 struct WorldTerrainOptions {
   std::optional<std::uint64_t> seed;  // mars_yard_2024 only; default kMarsYardDefaultSeed
+  std::optional<double> slope_deg;    // slope only; default 10, in [0, 60)
   HeightmapOptions heightmap;         // heightmap files only
 };
 
@@ -25,6 +29,9 @@ struct WorldTerrain {
   std::optional<MarsYard> yard;        // the generated yard's features (its heights are in `heightmap`)
   std::optional<Region> usable;        // region to take statistics over (the yard's usable ground)
 };
+
+// The "slope" world's plane (see above).
+Heightmap make_slope(double slope_deg);
 
 // Throws std::invalid_argument for an unknown world or options that do not apply to it, and
 // HeightmapError for a bad heightmap file.

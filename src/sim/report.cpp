@@ -386,6 +386,14 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
     j["odometry_error_m"] = result.odometry_error;
     j["odometry_yaw_error_rad"] = result.odometry_yaw_error;
   }
+  if (sim.world().soil) {
+    j["soil"] = {{"name", sim.world().soil->name}, {"source", sim.world().soil->source}};
+    j["wheels"] = nlohmann::ordered_json::array();
+    for (const WheelOutcome& w : result.wheels) {
+      j["wheels"].push_back({{"link", w.link}, {"mean_slip", w.mean_slip}, {"mean_traction_N", w.mean_traction},
+                             {"max_sinkage_m", w.max_sinkage}, {"time_in_soil_s", w.time_in_soil}});
+    }
+  }
   j["tracking"] = nlohmann::ordered_json::array();
   for (const TrackingError& t : result.tracking) {
     j["tracking"].push_back({{"controller", t.controller}, {"rms_error", t.rms}, {"max_error", t.max}, {"samples", t.samples}});

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "control/params.hpp"
+#include "sim/soil_config.hpp"
 
 namespace mechsim::sim {
 namespace {
@@ -339,8 +340,18 @@ Check read_check(const Params& c) {
       check.within_angle = p.get<double>("within_deg") * kDeg;
       if (!(check.within_angle >= 0.0)) fail(p.child("within_deg"), "must be >= 0 deg");
     }
+  } else if (kind == "slip") {
+    check.kind = Check::Kind::Slip;
+    only_keys(p, {"wheel", "from", "to", "min_mean", "max_mean"});
+    check.wheel = p.get<std::string>("wheel", "");
+    check.from = finite(p, "from", 0.0);
+    check.to = finite(p, "to", 1e300);
+    if (!(check.from >= 0.0 && check.to > check.from)) fail(p, "needs 0 <= from < to (s)");
+    if (p.has("min_mean")) check.min_mean = finite(p, "min_mean", 0.0);
+    if (p.has("max_mean")) check.max_mean = finite(p, "max_mean", 0.0);
+    if (!check.min_mean && !check.max_mean) fail(p, "needs min_mean and/or max_mean");
   } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, laser_range, imu_tilt)");
+    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, laser_range, imu_tilt, slip)");
   }
   return check;
 }
@@ -445,7 +456,9 @@ Scenario load_scenario(const Params& root, const std::string& path) {
     s.seed = static_cast<std::uint64_t>(root.get<int>("seed", 1));
     if (auto world = root.find("world")) {
       const std::string name = world->get<std::string>("name", "empty");
-      s.world.name = (name == "empty" || name == "mars_yard_2024") ? name : resolve_path(base, name);
+      s.world.name = (name == "empty" || name == "mars_yard_2024" || name == "slope") ? name : resolve_path(base, name);
+      if (world->has("slope_deg")) s.world.slope_deg = finite(*world, "slope_deg", 10.0);
+      if (auto soil = world->find("soil")) s.world.soil = read_soil(*soil);
       s.world.seed = static_cast<std::uint64_t>(world->get<int>("seed", static_cast<int>(physics::kMarsYardDefaultSeed)));
       if (world->has("size_x")) s.world.heightmap.size_x = world->get<double>("size_x");
       if (world->has("size_y")) s.world.heightmap.size_y = world->get<double>("size_y");

@@ -9,7 +9,10 @@
 //     packages: {mechsim_cc8: ../robots/cc8}           # optional; --package NAME=DIR
 //     lenient: false
 //   world:
-//     name: empty                     # empty | mars_yard_2024 (seed) | heightmap file (size_x ...)
+//     name: empty                     # empty | mars_yard_2024 (seed) | slope (slope_deg: a plane
+//                                     # rising along +x, 40 m x 12 m) | heightmap file (size_x ...)
+//     soil: dry_sand                  # optional: the wheels meet this soil, not rigid ground
+//                                     # (sim/soil_config.hpp: named sets or your own values)
 //     # Leaving the usable ground (a height field's footprint, or the Mars Yard's ground inside its
 //     # 1.5 m flat border; `empty` has no edge) is an event, recorded in summary.json:
 //     on_leaving: stop                # stop (default): the run ends there, not completed;
@@ -89,6 +92,10 @@
 //     # far from level it reads).
 //     - {laser_range: {sensor: front_laser, angle_deg: 0, range: 2.0, within: 0.01, at: 1.0}}
 //     - {imu_tilt: {sensor: zed2_imu_sensor, tilt_deg: 0, within_deg: 1, at: 2.0}}
+//     # With a soil (world.soil): the mean slip (physics::WheelSoilReading: > 0 spinning faster
+//     # than travelling) over [from, to] s of a wheel (its link; default every wheel), sampled
+//     # every tick while the wheel is in the soil.
+//     - {slip: {wheel: wheel_FL_1, from: 2, to: 10, min_mean: 0.05, max_mean: 0.6}}
 //   # Sensors added to the robot, as Gazebo <gazebo reference="LINK"> blocks (the robot's own
 //   # <sensor> tags are simulated too; mechsim check lists them). Each entry is XML text.
 //   sensors:
@@ -158,7 +165,7 @@ struct TimelineEvent {
 
 struct Check {
   enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance, Trajectory, Gripper, Joint,
-                    LaserRange, ImuTilt } kind = Kind::Reach;
+                    LaserRange, ImuTilt, Slip } kind = Kind::Reach;
   std::string text;  // as written, for the report
   double x = 0.0, y = 0.0, within = 0.0, by = 0.0;  // Reach / FinalPose (m, s)
   std::optional<double> lateral_within;            // FinalPose: |y error| (m)
@@ -182,6 +189,9 @@ struct Check {
   double angle = 0.0;                                   // LaserRange: ray direction (rad)
   double range = 0.0;                                   // LaserRange: m (+inf: nothing in range)
   double tilt = 0.0;                                    // ImuTilt: rad (+- within_angle)
+  std::string wheel;                                    // Slip: a wheel's link ("": every wheel)
+  double from = 0.0, to = 1e300;                        // Slip: window (s)
+  std::optional<double> min_mean, max_mean;             // Slip: bounds on the mean slip
 };
 
 // One `sensors:` entry: Gazebo sensor blocks as a URDF holds them, and where they start.

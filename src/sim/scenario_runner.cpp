@@ -21,6 +21,7 @@
 #include "sim/scenario_goals.hpp"
 #include "sim/camera_report.hpp"
 #include "sim/sensor_report.hpp"
+#include "sim/wheel_report.hpp"
 #include "sim/simulation.hpp"
 #include "sim/terrain_watch.hpp"
 
@@ -194,6 +195,8 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   Recorder recorder(*sim, options.output_dir, goals.trajectory_controllers());
   SensorReport sensor_report(*sim, s, options.output_dir);
   sim->add_observer([&](const Simulation& at) { sensor_report.observe(at); });
+  WheelReport wheel_report(*sim, s, options.output_dir);
+  sim->add_observer([&](const Simulation& at) { wheel_report.observe(at); });
   CameraReport camera_report(*sim, s, options.output_dir);
   sim->add_observer([&](const Simulation& at) { camera_report.observe(at); });
   sim->add_control_observer([&](const Simulation&) { camera_report.before_step(*sim); });
@@ -431,6 +434,9 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       case Check::Kind::ImuTilt:
         result.checks.push_back(sensor_report.judge(c));
         continue;
+      case Check::Kind::Slip:
+        result.checks.push_back(wheel_report.judge(c));
+        continue;
       case Check::Kind::Distance:
         out.passed = result.distance >= c.min_distance && result.distance <= c.max_distance;
         std::snprintf(buf, sizeof buf, "distance %.3f m in [%.3f, %.3g] m", result.distance, c.min_distance, c.max_distance);
@@ -440,11 +446,13 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     out.detail = buf;
     result.checks.push_back(out);
   }
+  if (options.output_dir.empty()) wheel_report.write(result, false);  // the figures only
   result.passed = result.completed && std::all_of(result.checks.begin(), result.checks.end(),
                                                   [](const CheckOutcome& c) { return c.passed; });
   if (!options.output_dir.empty()) {
     recorder.close();
     sensor_report.write(result, options.plots);  // before summary.json, which lists the files
+    wheel_report.write(result, options.plots);
     camera_report.write(result);
     write_report(s, *sim, recorder, result, options);
   }

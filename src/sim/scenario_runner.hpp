@@ -23,6 +23,8 @@
 //                    ranges, IMU orientation/rates/acceleration, contact totals, wrenches, ground truth
 //   sensors/<name>.png  per IMU: angular velocity, acceleration and orientation over time
 //   laser_scans.png  the laser scans seen from above over the world at laser_picture_times
+//   wheels.csv, wheels.png  with a soil (world.soil): per wheel slip, slip angle, sinkage, load,
+//                    traction, lateral force, torque (sim/wheel_report.hpp)
 
 #include <atomic>
 #include <functional>
@@ -104,6 +106,15 @@ struct GripperGoalOutcome {
   control::GripperResult result;  // finished only: gap (m), effort (N), stalled, reached_goal
 };
 
+// One wheel in the soil (world.soil) over a run: means while it was in the soil.
+struct WheelOutcome {
+  std::string link;
+  double mean_slip = 0.0;      // physics::WheelSoilReading::slip
+  double mean_traction = 0.0;  // N
+  double max_sinkage = 0.0;    // m
+  double time_in_soil = 0.0;   // s
+};
+
 struct ScenarioResult {
   bool completed = false;  // ran its whole duration (no divergence, not stopped by an event)
   bool passed = false;     // completed and every check passed
@@ -124,6 +135,7 @@ struct ScenarioResult {
   std::vector<TrajectoryGoalOutcome> trajectory_goals;  // in timeline order
   std::vector<GripperGoalOutcome> gripper_goals;
   std::vector<CheckOutcome> checks;
+  std::vector<WheelOutcome> wheels;  // with a soil only
   std::vector<std::string> files;  // written, relative to output_dir
   std::vector<std::string> warnings;
 };

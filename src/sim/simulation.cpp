@@ -89,6 +89,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   startup_times_.compile = physics_model_->build_times().compile;
   physics::StageTimer timer;
   physics_ = std::make_unique<physics::Physics>(physics_model_);
+  physics_->set_soil(world_.soil);
   startup_times_.data = timer.lap();
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
   spawn_pose_ = physics_->base_pose();

@@ -9,7 +9,8 @@ namespace mechsim::sim {
 World make_world(const WorldConfig& config) {
   physics::WorldTerrainOptions options;
   if (config.name == "mars_yard_2024") options.seed = config.seed;
-  if (config.name != "empty" && config.name != "mars_yard_2024") options.heightmap = config.heightmap;
+  if (config.name != "empty" && config.name != "mars_yard_2024" && config.name != "slope") options.heightmap = config.heightmap;
+  options.slope_deg = config.slope_deg;
   physics::WorldTerrain terrain;
   try {
     terrain = physics::load_world_terrain(config.name, options);
@@ -18,6 +19,7 @@ World make_world(const WorldConfig& config) {
   }
   World world;
   world.name = config.name;
+  world.soil = config.soil;
   world.mars_yard = std::move(terrain.yard);
   if (terrain.usable) {
     world.usable = terrain.usable;

@@ -1,0 +1,63 @@
+#pragma once
+// The Bekker-Wong model of a rigid wheel in soil (Wong and Reece, "Prediction of rigid wheel
+// performance based on the analysis of soil-wheel stresses", J. Terramechanics 4(1), 1967; the
+// lateral shear as Ishigami et al., J. Field Robotics 24(3), 2007): pure functions, no MuJoCo.
+//
+// The wheel (radius r, width b) has sunk z into the soil; its rim meets the soil between the
+// entry angle theta_1 = acos(1 - z / r) ahead of the bottom and the exit angle theta_2 =
+// -exit_ratio theta_1 behind it (angles from straight down, positive towards the heading). On
+// the rim:
+//   normal stress   sigma(theta) = (k_c / b + k_phi) r^n (cos theta - cos theta_1)^n ahead of the
+//                   angle of largest stress theta_m = (c1 + c2 slip) theta_1, and the same shape
+//                   stretched over [theta_2, theta_m] behind it (Wong and Reece);
+//   shear           tau = (c + sigma tan phi) (1 - exp(-j / K)) (Janosi and Hanamoto), along the
+//                   soil's displacement j = (j_x, j_y): j_x(theta) = r [(theta_1 - theta) - (1 -
+//                   slip)(sin theta_1 - sin theta)] along the heading, j_y growing linearly from 0
+//                   at entry to `lateral_shear` at exit across it;
+// and the forces on the wheel are their integrals over the rim (r b d theta per unit angle).
+// Slip: (r omega - v) / (r omega) driving (0..1), (r omega - v) / v braking (-1..0).
+
+#include "physics/soil.hpp"
+
+namespace mechsim::physics {
+
+struct WheelShape {
+  double radius = 0.0;  // m
+  double width = 0.0;   // m
+};
+
+// What the soil exerts on the wheel, in the wheel's contact frame: normal n (out of the soil),
+// heading x (the direction the wheel rolls) and lateral y = n x x, the axle (a spin about +y
+// rolls the wheel towards +x). Moments are about the wheel's centre.
+struct WheelSoilForces {
+  double normal = 0.0;    // N along n: the load the soil carries
+  double drawbar = 0.0;   // N along x: drawbar pull (thrust minus resistance), > 0 pulls forward
+  double resistance = 0.0;  // N: the normal stress's part of it, r b integral sigma sin theta (the
+                            // compaction resistance; drawbar = shear's thrust - resistance)
+  double lateral = 0.0;   // N along y: opposes the wheel's sideways slide
+  double torque = 0.0;    // N m about y: the shear's moment -r^2 b integral tau; < 0 resists a driven wheel
+  double moment_normal = 0.0;   // N m about n from the lateral shear (self-aligning)
+  double moment_heading = 0.0;  // N m about x from the lateral shear
+  double entry_angle = 0.0, exit_angle = 0.0;  // theta_1, theta_2 (rad)
+};
+
+// The forces for sinkage `sinkage` (m, >= 0; above the wheel's radius counts as the radius), the
+// slip (clamped to [-1, 1]) and `lateral_shear`, how far (m) the rim has slid sideways (+y) over
+// the soil by the exit. Zero when sinkage <= 0.
+// Allocation-free (a fixed Gauss-Legendre rule over each side of theta_m).
+// `rolling` in [0, 1] scales the rim's own share of j_x, r (1 - slip) [(theta_1 - theta) - (sin
+// theta_1 - sin theta)]: 1 for a rolling wheel (Wong and Reece), 0 for one at rest, whose shear
+// is its slip's alone.
+WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& wheel, double sinkage, double slip,
+                                  double lateral_shear = 0.0, double rolling = 1.0);
+
+// A wheel carrying `load` (N) at steady slip `slip`, as a single-wheel test rig measures it:
+// the sinkage where the soil's normal force equals the load (bisection), and the forces there.
+struct SteadyWheel {
+  double sinkage = 0.0;  // m
+  WheelSoilForces forces;
+  bool ok = false;       // false when the soil cannot carry the load before the wheel sinks its radius
+};
+SteadyWheel steady_wheel(const SoilParameters& soil, const WheelShape& wheel, double load, double slip);
+
+}  // namespace mechsim::physics
