@@ -116,6 +116,8 @@ Tally run_points_locally(const fs::path& dir, const Plan& plan, const std::vecto
     out << (options.tty ? "\r\033[K" : "") << line << (options.tty ? "" : "\n") << std::flush;
   });
   if (options.progress != nullptr && options.tty) *options.progress << "\n";
+  // A stop that came between two points interrupted no running point, but points were left.
+  if (options.interrupt != nullptr && options.interrupt->load() != 0 && tally.ran < points.size()) tally.interrupted = true;
   tally.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return tally;
 }
