@@ -43,7 +43,10 @@ if ((with_ros)); then
              python3-nav-msgs python3-sensor-msgs python3-std-srvs python3-tf2-msgs
              python3-rosgraph-msgs python3-actionlib python3-rostest rosbash
              # mechsim_node's launch files and scripts/rviz_screenshot.sh: RViz under Xvfb.
-             rviz xvfb imagemagick)
+             rviz xvfb imagemagick
+             # Gazebo users' launch files (the gazebo_ros / controller_manager compatibility
+             # packages, src/ros/packages) run Debian's robot_state_publisher for TF.
+             ros-robot-state-publisher)
 fi
 
 missing=()

@@ -30,6 +30,8 @@ struct Physics::Data {
   ArenaSize peak;
   int growths = 0;
   int warning_notice[mjNWARNING] = {};  // index + 1 into Physics::notices_ of each MuJoCo warning
+  // Per DOF: the generalised forces of add_joint_effort (the differential law adds its own).
+  std::vector<mjtNum> external_effort;
 
   ~Data() {
     if (d != nullptr) mj_deleteData(d);

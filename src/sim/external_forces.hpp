@@ -1,0 +1,68 @@
+#pragma once
+// Forces from outside the robot, as Gazebo's /gazebo/apply_body_wrench and apply_joint_effort
+// apply them: each from a start time for a duration of simulation time, added to everything else
+// acting on the body or joint. The Simulation applies the active ones before each physics step
+// (sim/simulation.hpp); with none queued the tick does not look at them.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "description/pose.hpp"
+
+namespace mechsim::physics {
+class Physics;
+}
+
+namespace mechsim::sim {
+
+// A wrench on a link, world frame: force_W (N) acting at point_W (m), plus torque_W (N m).
+struct LinkWrench {
+  std::size_t link = 0;  // physics::PhysicsModel::link_index
+  description::Vec3 force_W, torque_W, point_W;
+};
+
+// Start and end in simulation time (s); end < 0: no end.
+struct ForceWindow {
+  double start = 0.0;
+  double end = -1.0;
+  bool active_at(double t) const { return t + 1e-12 >= start && (end < 0.0 || t + 1e-12 < end); }
+  bool over_at(double t) const { return end >= 0.0 && t + 1e-12 >= end; }
+};
+
+// The window Gazebo gives a request at simulation time `now` with a step of `period`: a start in
+// the past starts now; duration < 0 has no end; 0 does nothing (nullopt-like: end == start);
+// shorter than a step lasts one step.
+ForceWindow force_window(double now, double period, double start_time, double duration);
+
+class ExternalForces {
+ public:
+  bool empty() const { return wrenches_.empty() && efforts_.empty(); }
+  void add_wrench(const LinkWrench& wrench, ForceWindow window) { wrenches_.push_back({wrench, window}); }
+  void add_effort(std::size_t joint, double effort, ForceWindow window) { efforts_.push_back({joint, effort, window}); }
+  // Removes every wrench on `link` / effort on `joint`; returns how many.
+  std::size_t clear_wrenches(std::size_t link);
+  std::size_t clear_efforts(std::size_t joint);
+  void clear() {
+    wrenches_.clear();
+    efforts_.clear();
+  }
+  // Loop thread, before the physics step at time `t`: writes the sum of the active ones into
+  // `physics` (replacing what it held) and drops those that are over. No allocation.
+  void apply(physics::Physics& physics, double t);
+
+ private:
+  struct TimedWrench {
+    LinkWrench wrench;
+    ForceWindow window;
+  };
+  struct TimedEffort {
+    std::size_t joint;
+    double effort;
+    ForceWindow window;
+  };
+  std::vector<TimedWrench> wrenches_;
+  std::vector<TimedEffort> efforts_;
+};
+
+}  // namespace mechsim::sim
