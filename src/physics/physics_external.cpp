@@ -18,13 +18,10 @@ void Physics::clear_external_forces() {
   std::fill(d->qfrc_applied, d->qfrc_applied + m->nv, 0.0);
 }
 
-void Physics::add_link_wrench(std::size_t link, const Vec3& f, const Vec3& torque, const Vec3& p) {
+void Physics::add_link_wrench(std::size_t link, const Vec3& f, const Vec3& torque, const Vec3& r) {
   const int b = model_->links()[link].body;
   if (b <= 0) return;  // the world takes no force
-  refresh_kinematics();
-  const mjtNum* c = data_->d->xipos + 3 * b;  // centre of mass, world frame
   // The same wrench about the centre of mass, where MuJoCo applies xfrc_applied.
-  const Vec3 r{p.x - c[0], p.y - c[1], p.z - c[2]};
   const Vec3 t{torque.x + r.y * f.z - r.z * f.y, torque.y + r.z * f.x - r.x * f.z, torque.z + r.x * f.y - r.y * f.x};
   mjtNum* x = data_->d->xfrc_applied + 6 * b;
   x[0] += f.x;

@@ -422,9 +422,10 @@ void GazeboWorld::advertise_model_services() {
         const auto& q = X_WF.pose.orientation;
         const Vec3 f = physics::rotate(q, vec_from(req.wrench.force));
         const Vec3 t = physics::rotate(q, vec_from(req.wrench.torque));
-        const Pose at = physics::compose(X_WF.pose, Pose{{req.reference_point.x, req.reference_point.y,
-                                                          req.reference_point.z}, {}});
-        const BridgeResult r = robot_->bridge().apply_link_wrench(link, f, t, at.position, req.start_time.toSec(),
+        // reference_point: where the force acts, from the body's centre of mass, along the
+        // reference frame's axes (gazebo_ros adds reference_point x force to the torque).
+        const Vec3 offset = physics::rotate(q, Vec3{req.reference_point.x, req.reference_point.y, req.reference_point.z});
+        const BridgeResult r = robot_->bridge().apply_link_wrench(link, f, t, offset, req.start_time.toSec(),
                                                                   req.duration.toSec());
         res.success = r.ok;
         res.status_message = r.ok ? "ApplyBodyWrench: success" : r.error;

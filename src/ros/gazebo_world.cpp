@@ -162,10 +162,6 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   const description::Quat& q = X_RM.orientation;
   const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
   if (norm < 1e-9) return refuse("initial_pose's orientation is a zero quaternion");
-  if (robot_) {
-    return refuse("model '" + robot_name_ + "' is in the world: mechsim's node simulates one robot per world "
-                  "(delete it first; several robots in one world are not supported yet)");
-  }
   // The frame the pose is given in: the world (gazebo_ros: "" or "world"), or one of the world's
   // static models, whose frames are the world's.
   if (!reference_frame.empty() && reference_frame != "world" && reference_frame != "map") {
@@ -194,6 +190,10 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
     }
   } catch (const std::exception& e) {
     return refuse(e.what());
+  }
+  if (robot_) {
+    return refuse("model '" + robot_name_ + "' is in the world: mechsim's node simulates one robot per world "
+                  "(delete it first; several robots in one world are not supported yet)");
   }
   bridge.robot.name = name;
   NodeOptions node = options_.node;

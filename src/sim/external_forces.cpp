@@ -26,7 +26,7 @@ std::size_t ExternalForces::clear_efforts(std::size_t joint) {
 void ExternalForces::apply(physics::Physics& physics, double t) {
   physics.clear_external_forces();
   for (const TimedWrench& w : wrenches_) {
-    if (w.window.active_at(t)) physics.add_link_wrench(w.wrench.link, w.wrench.force_W, w.wrench.torque_W, w.wrench.point_W);
+    if (w.window.active_at(t)) physics.add_link_wrench(w.wrench.link, w.wrench.force_W, w.wrench.torque_W, w.wrench.offset_W);
   }
   for (const TimedEffort& e : efforts_) {
     if (e.window.active_at(t)) physics.add_joint_effort(e.joint, e.effort);

@@ -16,10 +16,11 @@ class Physics;
 
 namespace mechsim::sim {
 
-// A wrench on a link, world frame: force_W (N) acting at point_W (m), plus torque_W (N m).
+// A wrench on a link, world frame: force_W (N) acting at the centre of mass of the link's body
+// moved by offset_W (m), plus torque_W (N m) (physics::Physics::add_link_wrench).
 struct LinkWrench {
   std::size_t link = 0;  // physics::PhysicsModel::link_index
-  description::Vec3 force_W, torque_W, point_W;
+  description::Vec3 force_W, torque_W, offset_W;
 };
 
 // Start and end in simulation time (s); end < 0: no end.

@@ -176,14 +176,14 @@ BridgeResult SimBridge::link_properties(const std::string& link, LinkPropertiesD
 }
 
 BridgeResult SimBridge::apply_link_wrench(const std::string& link, const description::Vec3& force_W,
-                                          const description::Vec3& torque_W, const description::Vec3& point_W,
+                                          const description::Vec3& torque_W, const description::Vec3& offset_W,
                                           double start, double duration) {
-  if (!finite(force_W) || !finite(torque_W) || !finite(point_W)) return refuse("the wrench and its point must be finite");
+  if (!finite(force_W) || !finite(torque_W) || !finite(offset_W)) return refuse("the wrench and its point must be finite");
   if (!std::isfinite(start) || !std::isfinite(duration)) return refuse("start_time and duration must be finite");
   return impl_->in_loop([=](sim::Simulation& s) -> BridgeResult {
     const auto l = s.physics().model().link_index(link);
     if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
-    s.external_forces().add_wrench({*l, force_W, torque_W, point_W},
+    s.external_forces().add_wrench({*l, force_W, torque_W, offset_W},
                                    sim::force_window(s.time(), s.period(), start, duration));
     return {};
   });

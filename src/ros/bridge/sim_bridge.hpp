@@ -266,10 +266,10 @@ class SimBridge {
   BridgeResult joint_properties(const std::string& joint, JointPropertiesData& out) const;
   BridgeResult link_properties(const std::string& link, LinkPropertiesData& out) const;
   // Forces from outside, from `start` (s, sim time; past: now) for `duration` s (< 0: no end; 0:
-  // nothing; shorter than a tick: one tick). Wrench in the world frame: force (N) acting at
-  // point_W (m), torque (N m).
+  // nothing; shorter than a tick: one tick). Wrench in the world frame: force (N) acting at the
+  // link's centre of mass moved by offset_W (m), torque (N m).
   BridgeResult apply_link_wrench(const std::string& link, const description::Vec3& force_W,
-                                 const description::Vec3& torque_W, const description::Vec3& point_W, double start,
+                                 const description::Vec3& torque_W, const description::Vec3& offset_W, double start,
                                  double duration);
   BridgeResult apply_joint_effort(const std::string& joint, double effort, double start, double duration);
   BridgeResult clear_link_wrenches(const std::string& link);
