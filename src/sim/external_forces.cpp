@@ -33,6 +33,7 @@ void ExternalForces::apply(physics::Physics& physics, double t) {
   }
   std::erase_if(wrenches_, [t](const TimedWrench& w) { return w.window.over_at(t); });
   std::erase_if(efforts_, [t](const TimedEffort& e) { return e.window.over_at(t); });
+  in_physics_ = !empty();
 }
 
 }  // namespace mechsim::sim

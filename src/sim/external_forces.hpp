@@ -39,14 +39,19 @@ ForceWindow force_window(double now, double period, double start_time, double du
 class ExternalForces {
  public:
   bool empty() const { return wrenches_.empty() && efforts_.empty(); }
+  // Whether the next step must apply(): some are queued, or the physics still holds forces that
+  // were cleared since (clear_* between ticks).
+  bool active() const { return !empty() || in_physics_; }
   void add_wrench(const LinkWrench& wrench, ForceWindow window) { wrenches_.push_back({wrench, window}); }
   void add_effort(std::size_t joint, double effort, ForceWindow window) { efforts_.push_back({joint, effort, window}); }
   // Removes every wrench on `link` / effort on `joint`; returns how many.
   std::size_t clear_wrenches(std::size_t link);
   std::size_t clear_efforts(std::size_t joint);
+  // After the physics was reset (which drops its external forces).
   void clear() {
     wrenches_.clear();
     efforts_.clear();
+    in_physics_ = false;
   }
   // Loop thread, before the physics step at time `t`: writes the sum of the active ones into
   // `physics` (replacing what it held) and drops those that are over. No allocation.
@@ -64,6 +69,7 @@ class ExternalForces {
   };
   std::vector<TimedWrench> wrenches_;
   std::vector<TimedEffort> efforts_;
+  bool in_physics_ = false;  // the last apply() wrote forces that are still in the physics
 };
 
 }  // namespace mechsim::sim

@@ -359,7 +359,7 @@ TickResult Simulation::step() {
   read_physics();
   manager_->update(time(), options_.period);
   write_physics();
-  if (!external_.empty()) external_.apply(*physics_, time());
+  if (external_.active()) external_.apply(*physics_, time());
   for (const Observer& observer : control_observers_) observer(*this);
   const physics::StepStatus status = physics_->step();
   ++ticks_;

@@ -205,8 +205,7 @@ BridgeResult SimBridge::clear_link_wrenches(const std::string& link) {
   return impl_->in_loop([link](sim::Simulation& s) -> BridgeResult {
     const auto l = s.physics().model().link_index(link);
     if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
-    s.external_forces().clear_wrenches(*l);
-    s.external_forces().apply(s.physics(), s.time());  // gone from the next step on
+    s.external_forces().clear_wrenches(*l);  // gone from the next step on
     return {};
   });
 }
@@ -216,7 +215,6 @@ BridgeResult SimBridge::clear_joint_efforts(const std::string& joint) {
     const auto j = s.physics().model().joint_index(joint);
     if (!j) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
     s.external_forces().clear_efforts(*j);
-    s.external_forces().apply(s.physics(), s.time());
     return {};
   });
 }

@@ -128,8 +128,13 @@ TEST(RosTypeChecksums, EveryBuiltTypeMatchesTheTable) {
   const auto table = generatedTypeChecksums();
   const auto built = builtTypes(table);
 
-  std::size_t matching = 0;
+  std::size_t matching = 0, own = 0;
   for (const auto& [type, entry] : built) {
+    // mechsim's own types (mechsim_msgs: /gazebo/step_simulation) have no upstream to match.
+    if (type.rfind("mechsim_msgs/", 0) == 0) {
+      ++own;
+      continue;
+    }
     const auto it = reference.find(type);
     if (it == reference.end()) {
       ADD_FAILURE() << type << " is built but missing from " << kTablePath.string();
@@ -140,7 +145,7 @@ TEST(RosTypeChecksums, EveryBuiltTypeMatchesTheTable) {
     EXPECT_EQ(entry->md5, row.md5) << "MD5Sum of " << type << " (table line " << row.line << ")";
     if (entry->md5 == row.md5 && entry->kind == row.kind) ++matching;
   }
-  EXPECT_EQ(matching, built.size()) << "built types whose kind and MD5 match the table";
+  EXPECT_EQ(matching + own, built.size()) << "built types whose kind and MD5 match the table";
 
   std::vector<std::string> not_built;
   for (const auto& [type, row] : reference) {
