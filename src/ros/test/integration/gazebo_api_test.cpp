@@ -33,6 +33,7 @@
 #include <sensor_msgs/JointState.h>
 #include <std_srvs/Empty.h>
 
+#include "param_snapshot.hpp"
 #include "ros_fixture.hpp"
 
 namespace mechsim::ros::test {
@@ -91,6 +92,7 @@ class GazeboWorldNode : public ::testing::Test {
     if (node_) {
       EXPECT_EQ(node_->stop(10.0), 0) << "mechsim_node did not stop cleanly; its log:\n" << node_->log();
     }
+    params_.forget_new();
   }
 
   double clock_now() {
@@ -139,6 +141,7 @@ class GazeboWorldNode : public ::testing::Test {
   }
 
   std::unique_ptr<ChildProcess> node_;
+  ParamSnapshot params_;
   ::ros::NodeHandle nh_;
   ::ros::Subscriber clock_sub_;
   std::mutex mutex_;

@@ -20,6 +20,7 @@
 #include <sensor_msgs/JointState.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include "param_snapshot.hpp"
 #include "ros_fixture.hpp"
 
 namespace mechsim::ros::test {
@@ -65,12 +66,14 @@ class GazeboLaunch : public ::testing::Test {
     if (launch_) {
       EXPECT_NE(launch_->stop(15.0), -1) << "roslaunch did not stop on SIGINT within 15 s";
     }
+    params_.forget_new();  // the PR2's controllers were loaded at the root namespace
   }
   std::string tail() const {
     const std::string log = launch_->log();
     return log.substr(log.size() > 6000 ? log.size() - 6000 : 0);
   }
   std::unique_ptr<ChildProcess> launch_;
+  ParamSnapshot params_;
 };
 
 TEST_F(GazeboLaunch, Cc8DescriptionsGazeboLaunchRunsUnchanged) {
