@@ -45,7 +45,15 @@ if ((with_ros)); then
              python3-nav-msgs python3-sensor-msgs python3-std-srvs python3-tf2-msgs
              python3-rosgraph-msgs python3-actionlib python3-rostest rosbash
              # mechsim_node's launch files and scripts/rviz_screenshot.sh: RViz under Xvfb.
-             rviz xvfb imagemagick)
+             rviz xvfb imagemagick
+             # Gazebo users' launch files (the gazebo_ros / controller_manager compatibility
+             # packages, src/ros/packages) run Debian's robot_state_publisher for TF, and
+             # pr2_gazebo's bring-up Debian's image_proc, stereo_image_proc and
+             # diagnostic_aggregator (rostest needs every node of a launch file to start; the -dev
+             # packages hold diagnostic_aggregator's and stereo_image_proc's package.xml, which roslaunch
+             # looks for).
+             ros-robot-state-publisher ros-image-proc ros-stereo-image-proc libdiagnostic-aggregator-tools
+             libdiagnostic-aggregator-dev libstereo-image-proc-dev)
 fi
 
 missing=()

@@ -5,7 +5,8 @@
 # (the `mechsim` package of the node and spawner) and <build>/ros_python (the generated message
 # packages, for rosmsg); prepends <build>/ros_python to PYTHONPATH (rostopic/rosservice import
 # <pkg>.msg / <pkg>.srv from there); puts /usr/bin first on PATH so the tools run with Debian's
-# python3, not a pyenv/venv one.
+# python3, not a pyenv/venv one, and <build>/ros_bin before it (`xacro`, which launch files run
+# by name, as a ROS install has it on PATH).
 _mechsim_repo="$(cd "$(dirname "${BASH_SOURCE[0]:-$0}")/.." && pwd)"
 _mechsim_build="$(cd "${1:-$_mechsim_repo/build/release}" 2>/dev/null && pwd)"
 if [ -z "$_mechsim_build" ] || [ ! -d "$_mechsim_build/ros_python" ]; then
@@ -15,5 +16,5 @@ if [ -z "$_mechsim_build" ] || [ ! -d "$_mechsim_build/ros_python" ]; then
 fi
 export ROS_PACKAGE_PATH="$_mechsim_repo/robots:$_mechsim_build/ros_package:$_mechsim_build/ros_python${ROS_PACKAGE_PATH:+:$ROS_PACKAGE_PATH}"
 export PYTHONPATH="$_mechsim_build/ros_python${PYTHONPATH:+:$PYTHONPATH}"
-export PATH="/usr/bin:$PATH"
+export PATH="$_mechsim_build/ros_bin:/usr/bin:$PATH"
 unset _mechsim_repo _mechsim_build

@@ -116,6 +116,11 @@ class ControllerManager {
   bool switch_pending() const { return switch_pending_.load(std::memory_order_acquire); }
   // Waits until the tick has applied the pending switch; false on timeout (seconds).
   bool wait_for_switch(double timeout) const;
+  // Applies a pending switch now, outside the tick (`time` in s): only for the owner of the tick
+  // while no tick can run (its loop thread stopped, e.g. a model about to be deleted).
+  void apply_pending_switch(double time) noexcept {
+    if (switch_pending()) apply_switch(time);
+  }
 
   std::vector<ControllerInfo> list_controllers() const;
   std::optional<ControllerInfo> controller_info(const std::string& name) const;

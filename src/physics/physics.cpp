@@ -60,6 +60,7 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
   data_->saved_qvel.resize(static_cast<std::size_t>(shared->nv));
   data_->saved_act.resize(static_cast<std::size_t>(std::max(shared->na, 1)));
   data_->saved_warm.resize(static_cast<std::size_t>(shared->nv));
+  data_->external_effort.assign(static_cast<std::size_t>(shared->nv), 0.0);
   for (int g = 0; g < shared->ngeom; ++g) {
     const char* n = mj_id2name(shared, mjOBJ_GEOM, g);
     // Geom names are "<link>/collision/<i>" or "<link>/visual/<i>" (link names may hold '/').
@@ -92,8 +93,11 @@ void Physics::spawn_state() {
   mjModel* m = data_->m;
   // Cancel gravity on the links Gazebo exempts from it: a constant world-frame force at the
   // body's centre of mass (xfrc_applied persists across steps).
-  const double g = model_->options().world.gravity;
-  for (int b : model_->gravity_off_bodies()) data_->d->xfrc_applied[6 * b + 2] = m->body_mass[b] * g;
+  std::fill(data_->external_effort.begin(), data_->external_effort.end(), 0.0);
+  for (int b : model_->gravity_off_bodies())
+    for (int k = 0; k < 3; ++k) data_->d->xfrc_applied[6 * b + k] = -m->body_mass[b] * m->opt.gravity[k];
+  // What the soil model adds its wheel forces to, every step (physics_external.cpp keeps it in
+  // step with the outside forces).
   data_->xfrc_base.assign(data_->d->xfrc_applied, data_->d->xfrc_applied + 6 * m->nbody);
   std::fill(data_->soil_state.begin(), data_->soil_state.end(), Data::SoilWheel{});
   std::fill(data_->soil_readings.begin(), data_->soil_readings.end(), WheelSoilReading{});
@@ -129,8 +133,8 @@ StepStatus Physics::step() {
     const double spread = d->qpos[a.qpos_adr] - d->qpos[b.qpos_adr];
     diff_tau_a_ = -diff->force_constant * spread;
     diff_tau_b_ = diff->force_constant * spread;
-    d->qfrc_applied[a.dof_adr] = diff_tau_a_;
-    d->qfrc_applied[b.dof_adr] = diff_tau_b_;
+    d->qfrc_applied[a.dof_adr] = diff_tau_a_ + data_->external_effort[static_cast<std::size_t>(a.dof_adr)];
+    d->qfrc_applied[b.dof_adr] = diff_tau_b_ + data_->external_effort[static_cast<std::size_t>(b.dof_adr)];
   }
 
   save_state();

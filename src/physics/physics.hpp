@@ -194,6 +194,22 @@ class Physics {
   // Ignored when the robot is fixed to the world.
   void set_spawn_pose(const description::Pose& X_WB);
 
+  // Forces from outside (Gazebo's apply_body_wrench / apply_joint_effort; sim/external_forces.hpp
+  // keeps their timing): they act in every step until changed, on top of everything else, and
+  // reset() clears them. clear_external_forces() removes all of them; the add_* calls add to what
+  // is there. A wrench on a link: force_W (N) acting at the centre of mass of the link's body
+  // moved by offset_W (m), plus torque_W (N m), world frame (gazebo_ros' reference_point); on a
+  // link without a body of its own, on the body it is merged into. A joint effort is a
+  // generalised force (N m or N). None allocates.
+  void clear_external_forces();
+  void add_link_wrench(std::size_t link, const description::Vec3& force_W, const description::Vec3& torque_W,
+                       const description::Vec3& offset_W);
+  void add_joint_effort(std::size_t joint, double effort);
+  // Gravity (m/s^2, world frame) of this instance; set_gravity keeps the links Gazebo exempts
+  // from gravity exempt. Kept over reset().
+  description::Vec3 gravity() const;
+  void set_gravity(const description::Vec3& g_W);
+
   // Pose X_WL and twist of URDF link `link` (PhysicsModel::link_index).
   description::Pose link_pose(std::size_t link) const;
   Twist link_twist(std::size_t link) const;

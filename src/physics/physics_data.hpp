@@ -31,6 +31,8 @@ struct Physics::Data {
   ArenaSize peak;
   int growths = 0;
   int warning_notice[mjNWARNING] = {};  // index + 1 into Physics::notices_ of each MuJoCo warning
+  // Per DOF: the generalised forces of add_joint_effort (the differential law adds its own).
+  std::vector<mjtNum> external_effort;
 
   // Wheel-soil (wheel_soil.cpp): the soil, each wheel's state as of the state and as the running
   // step would leave it; the readings; the world geom the soil lies on (plane or height field, -1:

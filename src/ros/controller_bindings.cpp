@@ -218,6 +218,17 @@ BridgeResult SimNode::unload(const std::string& name) {
   return r;
 }
 
+std::vector<std::string> SimNode::unload_all_controllers() {
+  std::lock_guard<std::mutex> lock(manager_mutex_);
+  const std::vector<std::string> names = bridge_->stop_all_controllers_now();
+  for (auto it = names.rbegin(); it != names.rend(); ++it) {
+    unbind(*it);
+    const BridgeResult r = bridge_->unload_controller(*it);
+    if (!r.ok) ROS_WARN_STREAM("mechsim: could not unload controller '" << *it << "': " << r.error);
+  }
+  return names;
+}
+
 void SimNode::bind(const std::string& controller) {
   const control::Params params = bridge_->controller_params();
   ::ros::NodeHandle controller_nh(controller_ns(controller));

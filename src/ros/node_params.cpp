@@ -14,7 +14,7 @@ const std::vector<PrivateParam>& private_params() {
        "the parameter holding the URDF when ~model is empty (searched upwards from the node's namespace)"},
       {"spawn_timeout", "double", "60", "s (wall) to wait for that parameter"},
       {"lenient", "bool", "false", "description errors Gazebo tolerates become warnings"},
-      {"world", "string", "empty", "empty | mars_yard_2024 | heightmap file"},
+      {"world", "string", "empty", "empty | mars_yard_2024 | heightmap file | SDF .world file"},
       {"x", "double", "0", "spawn position (m), as spawn_model -x"},
       {"y", "double", "0", "spawn position (m)"},
       {"z", "double", "0", "spawn height (m) above the ground under x, y"},
@@ -33,6 +33,14 @@ const std::vector<PrivateParam>& private_params() {
       {"odom_frame", "string", "odom", "the frame of publish_odom_tf"},
       {"state_publish_rate", "double", "50", "Hz (sim time) of <controller>/state; 0: every tick"},
       {"clock_publish_rate", "double", "100", "Hz (sim time) of /clock (Gazebo's pub_clock_frequency); 0: every tick"},
+      {"gazebo", "bool", "false",
+       "gzserver mode (gazebo_ros' empty_world.launch): an empty world, robots come and go through "
+       "/gazebo/spawn_urdf_model and delete_model; ~model, ~robot_description, x..Y and robot_namespace are "
+       "not read, ~lenient defaults to true and ~publish_tf to false (robot_state_publisher's job in Gazebo)"},
+      {"gazebo_ignored", "string", "",
+       "gazebo mode: gazebo_ros arguments that mean nothing here (GUI, ODE), logged once (empty_world.launch)"},
+      {"model_states_rate", "double", "0",
+       "gazebo mode: Hz (sim time) of /gazebo/model_states and link_states while subscribed; 0: every tick"},
   };
   return params;
 }

@@ -31,7 +31,7 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
   if (options_.pr2) bridge_->enable_mechanism_statistics();
   sensors_ = std::make_unique<SensorPublishers>(root_nh_, *bridge_);
   bridge_->add_observer([this](double time) { on_tick(time); });
-  advertise_sim_services();
+  if (options_.gazebo_services) advertise_sim_services();
   advertise_controller_manager();
   if (options_.pr2) {
     advertise_pr2_controller_manager();

@@ -48,6 +48,9 @@ struct NodeOptions {
   double tf_rate = 50.0;          // Hz (sim time)
   std::string odom_frame = "odom";
   bool pr2 = false;               // also the pr2_mechanism_msgs services under /pr2_controller_manager
+  // /gazebo/{pause_physics, unpause_physics, reset_simulation, reset_world}; false when a
+  // GazeboWorld (gazebo_world.hpp) holds this node as one of its models and offers them itself.
+  bool gazebo_services = true;
 };
 
 class SimNode {
@@ -59,6 +62,9 @@ class SimNode {
 
   void start();  // loop thread
   void stop();   // joins it
+  // After stop(): stops every controller (their stopping() runs) and unloads them, topics first
+  // (a model being deleted). Returns their names.
+  std::vector<std::string> unload_all_controllers();
   SimBridge& bridge() { return *bridge_; }
 
  private:

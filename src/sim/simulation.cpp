@@ -81,6 +81,10 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   if (!(options_.period > 0.0) || options_.period > 0.1) {
     throw std::invalid_argument("simulation period must be in (0, 0.1] s, got " + std::to_string(options_.period));
   }
+  if (!(options_.start_time >= 0.0) || !std::isfinite(options_.start_time)) {
+    throw std::invalid_argument("simulation start time must be finite and >= 0 s");
+  }
+  ticks_ = static_cast<std::uint64_t>(std::llround(options_.start_time / options_.period));
   if (!(options_.real_time_factor >= 0.0)) {
     throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
   }
@@ -307,6 +311,48 @@ void Simulation::write_physics() {
 
 void Simulation::apply_requests() {
   if (reset_requested_.exchange(false)) reset();
+  if (have_commands_.load(std::memory_order_acquire)) run_commands();
+}
+
+void Simulation::post(Command command) {
+  {
+    std::lock_guard<std::mutex> lock(commands_mutex_);
+    commands_.push_back(std::move(command));
+    ++commands_posted_;
+  }
+  have_commands_.store(true, std::memory_order_release);
+}
+
+void Simulation::run_commands() {
+  std::vector<Command> batch;
+  {
+    std::lock_guard<std::mutex> lock(commands_mutex_);
+    batch.swap(commands_);
+    have_commands_.store(false, std::memory_order_relaxed);
+  }
+  for (Command& command : batch) {
+    try {
+      command(*this);
+    } catch (const std::exception&) {
+      // Commands report through what they capture (see post()).
+    }
+  }
+  {
+    std::lock_guard<std::mutex> lock(commands_mutex_);
+    commands_run_ += batch.size();
+  }
+  commands_done_.notify_all();
+}
+
+bool Simulation::wait_for_commands(double timeout) {
+  std::unique_lock<std::mutex> lock(commands_mutex_);
+  const std::uint64_t target = commands_posted_;
+  return commands_done_.wait_for(lock, std::chrono::duration<double>(timeout), [&] { return commands_run_ >= target; });
+}
+
+void Simulation::state_changed() {
+  read_physics();
+  sensors_.sample_all(*physics_, time());
 }
 
 TickResult Simulation::step() {
@@ -314,6 +360,7 @@ TickResult Simulation::step() {
   read_physics();
   manager_->update(time(), options_.period);
   write_physics();
+  if (external_.active()) external_.apply(*physics_, time());
   for (const Observer& observer : control_observers_) observer(*this);
   const physics::StepStatus status = physics_->step();
   ++ticks_;
@@ -350,6 +397,15 @@ TickResult Simulation::run_for(double duration) {
     if (paused()) {
       pace_anchored_ = false;  // time stood still: the pace starts afresh on unpause
       apply_requests();
+      if (pending_steps_.load() > 0) {  // single steps asked for while paused
+        result = step();
+        pending_steps_.fetch_sub(1);
+        if (!result.ok && options_.on_divergence == DivergencePolicy::Stop) {
+          pending_steps_.store(0);
+          break;
+        }
+        continue;
+      }
       // Nobody can unpause a paused single-threaded run: return instead of waiting forever.
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       if (paused()) break;
@@ -384,6 +440,7 @@ void Simulation::pace() {
 
 void Simulation::reset() {
   physics_->reset();
+  external_.clear();
   apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
   const mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);

@@ -23,15 +23,19 @@
 // (ROS nodes with use_sim_time treat a backwards jump as an error, and Gazebo's reset_world keeps
 // time too; we chose one behaviour for both resets).
 //
-// Threads: step()/run_for() belong to one loop thread. pause(), unpause(), request_reset() and
-// request_step() may be called from any thread; the loop applies them between ticks.
+// Threads: step()/run_for() belong to one loop thread. pause(), unpause(), request_reset(),
+// request_steps() and post() may be called from any thread; the loop applies them between ticks
+// (at the start of step(), and every millisecond while run_for() waits paused), so that the tick
+// stays the only writer of the simulation's state.
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +47,7 @@
 #include "physics/physics.hpp"
 #include "physics/physics_model.hpp"
 #include "sensors/sensor_set.hpp"
+#include "sim/external_forces.hpp"
 #include "sim/world.hpp"
 
 namespace mechsim::sim {
@@ -68,6 +73,10 @@ struct SimulationOptions {
   // before the first tick and again by reset(). An unknown joint is an error.
   std::map<std::string, double> initial_joints;
   bool start_paused = false;
+  // s: simulation time at construction (rounded to a whole number of periods). A robot spawned
+  // into a world that has been running goes on from the world's time: ROS nodes with
+  // use_sim_time take a backwards jump as an error.
+  double start_time = 0.0;
   // 0: as fast as possible (headless default); R > 0: paced so that simulation time runs R times
   // as fast as wall-clock time. The pace is kept across run_for() calls against one wall-clock
   // anchor (a caller that runs in short chunks, like the ROS node, loses nothing between them);
@@ -127,6 +136,18 @@ class Simulation {
   void unpause() { paused_.store(false); }
   bool paused() const { return paused_.load(); }
   void request_reset() { reset_requested_.store(true); }
+  // Asks for `count` more ticks while paused (ROS 2's StepSimulation; run_for() ticks them while it
+  // waits paused). pending_steps() counts down as they run.
+  void request_steps(std::uint64_t count) { pending_steps_.fetch_add(count); }
+  std::uint64_t pending_steps() const { return pending_steps_.load(); }
+  void cancel_steps() { pending_steps_.store(0); }
+  // A command to run in the loop thread between ticks (with the simulation to change or read).
+  // Commands run in the order posted; one that throws is caught and its message dropped, so
+  // commands report through what they capture.
+  using Command = std::function<void(Simulation&)>;
+  void post(Command command);
+  // Waits (at most `timeout` s of wall time) until every command posted before the call has run.
+  bool wait_for_commands(double timeout);
   // Back to the spawn state now (loop thread only).
   void reset();
 
@@ -157,6 +178,12 @@ class Simulation {
   // observers run; every one once at construction and after reset()).
   sensors::SensorSet& sensors() { return sensors_; }
   const sensors::SensorSet& sensors() const { return sensors_; }
+  // Forces from outside (Gazebo's apply_body_wrench, apply_joint_effort), applied before each
+  // physics step while any is queued; reset() clears them. Loop thread (a posted command).
+  ExternalForces& external_forces() { return external_; }
+  // After a command wrote the physics state (a pose, joint positions): the mechanism state and
+  // the sensors are brought to it, so that they describe time() again. Loop thread.
+  void state_changed();
 
   // What the physics reported without failing a tick (physics::PhysicsNotice: its arena grew, a
   // MuJoCo warning), each as "tick N (t = T s): what" ("spawn (t = 0 s): " for the spawn state),
@@ -253,6 +280,15 @@ class Simulation {
   double measured_rtf_ = 0.0;
   std::atomic<bool> paused_{false};
   std::atomic<bool> reset_requested_{false};
+  std::atomic<std::uint64_t> pending_steps_{0};
+  ExternalForces external_;
+  // Posted commands: the tick looks at the flag only; the lock is taken when there are some.
+  std::mutex commands_mutex_;
+  std::condition_variable commands_done_;
+  std::vector<Command> commands_;
+  std::uint64_t commands_posted_ = 0, commands_run_ = 0;  // under commands_mutex_
+  std::atomic<bool> have_commands_{false};
+  void run_commands();
 };
 
 }  // namespace mechsim::sim

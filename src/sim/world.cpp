@@ -1,12 +1,103 @@
 #include "sim/world.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+
+#include "description/sdf/sdf_model.hpp"
+#include "physics/transform.hpp"
 
 #include "physics/terrain_world.hpp"
 
 namespace mechsim::sim {
 
+namespace {
+
+bool only_boxes(const description::RobotModel& robot) {
+  for (const description::Link& link : robot.links) {
+    for (const description::Collision& c : link.collisions)
+      if (c.geometry.type != description::GeometryType::Box) return false;
+  }
+  return true;
+}
+
+// Gazebo's world file: the ground and boxes the physics can hold (sdf_model.hpp says how models
+// map to robots; a model's root link frame is its pose times root_offset).
+World make_sdf_world(const std::string& path) {
+  description::SdfWorld sdf;
+  try {
+    sdf = description::load_sdf_world(path);
+  } catch (const std::exception& e) {
+    throw WorldError(e.what());
+  }
+  World world;
+  world.name = path;
+  world.spec.ground_plane = false;
+  world.spec.gravity = -sdf.gravity.z;
+  world.max_step_size = sdf.max_step_size;
+  world.real_time_factor = sdf.real_time_factor;
+  if (std::abs(sdf.gravity.x) > 1e-12 || std::abs(sdf.gravity.y) > 1e-12) {
+    world.not_simulated.push_back("gravity's horizontal part (mechsim's worlds pull along -z only)");
+  }
+  for (const std::string& n : sdf.not_simulated) world.not_simulated.push_back(n);
+  for (const description::SdfModel& model : sdf.models) {
+    bool used = false;
+    for (const description::SdfPlane& plane : model.planes) {
+      const description::Pose X_WP = physics::compose(model.pose, plane.pose);
+      const description::Vec3 n = physics::rotate(X_WP.orientation, {0.0, 0.0, 1.0});
+      if (std::abs(X_WP.position.z) < 1e-9 && n.z > 1.0 - 1e-9) {
+        world.spec.ground_plane = true;
+        used = true;
+      } else {
+        world.not_simulated.push_back("model '" + model.name + "': plane '" + plane.name + "' (not the ground z = 0)");
+      }
+    }
+    const bool has_links = !model.robot.links.empty() &&
+                           std::any_of(model.robot.links.begin(), model.robot.links.end(),
+                                       [](const description::Link& l) { return !l.collisions.empty(); });
+    if (has_links && only_boxes(model.robot) && (model.is_static || model.robot.links.size() == 1)) {
+      const description::Pose X_WR = physics::compose(model.pose, model.root_offset);
+      const description::Link& root = model.robot.links.front();
+      for (const description::Link& link : model.robot.links) {
+        if (!model.is_static && &link != &root) continue;
+        for (std::size_t i = 0; i < link.collisions.size(); ++i) {
+          const description::Collision& c = link.collisions[i];
+          physics::WorldBox box;
+          box.name = model.name + "::" + link.name + "::" + (c.name.empty() ? std::to_string(i) : c.name);
+          // Static models: every link where the model's zero configuration puts it.
+          description::Pose X_WL = X_WR;
+          if (&link != &root) {
+            for (const description::Joint& j : model.robot.joints)
+              if (j.child_link == link.name) X_WL = physics::compose(X_WR, j.origin);
+          }
+          box.pose = physics::compose(X_WL, c.origin);
+          box.size = c.geometry.size;
+          box.fixed = model.is_static;
+          if (!model.is_static) box.mass = link.inertial && link.inertial->mass > 0.0 ? link.inertial->mass : 1.0;
+          world.spec.boxes.push_back(box);
+        }
+      }
+      used = true;
+    } else if (has_links) {
+      world.not_simulated.push_back("model '" + model.name +
+                                    "' (mechsim's world holds the ground and boxes; other shapes and articulated "
+                                    "models need a robot of their own)");
+    }
+    if (used) world.sdf_models.push_back(model.name);
+  }
+  return world;
+}
+
+}  // namespace
+
 World make_world(const WorldConfig& config) {
+  if (description::is_sdf_world_file(config.name)) {
+    if (config.soil) {
+      throw WorldError("world '" + config.name + "': soil is for mechsim's own worlds (empty, slope, mars_yard_2024, "
+                       "heightmaps); an SDF world's ground is rigid");
+    }
+    return make_sdf_world(config.name);
+  }
   physics::WorldTerrainOptions options;
   if (config.name == "mars_yard_2024") options.seed = config.seed;
   if (config.name != "empty" && config.name != "mars_yard_2024" && config.name != "slope") options.heightmap = config.heightmap;

@@ -1,13 +1,16 @@
 #pragma once
 // The worlds mechsim ships, by name: `empty` (ground plane and gravity), `mars_yard_2024`
-// (generated from a seed), `slope` (a plane rising along +x at slope_deg) and any heightmap file
-// (8/16-bit PNG, float TIFF). Any of them may be soil instead of rigid ground for the robot's
-// wheels (physics::Physics::set_soil).
+// (generated from a seed), `slope` (a plane rising along +x at slope_deg), any heightmap file
+// (8/16-bit PNG, float TIFF), and Gazebo SDF world files (.world, .sdf): their ground planes,
+// gravity, static box models and single-box dynamic models; every other model is listed in
+// World::not_simulated (the physics holds one robot). Any of the generated or heightmap worlds
+// may be soil instead of rigid ground for the robot's wheels (physics::Physics::set_soil).
 
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "physics/heightmap_io.hpp"
 #include "physics/mars_yard.hpp"
@@ -40,6 +43,12 @@ struct World {
   std::optional<physics::Region> usable;
   std::string usable_what;
   std::optional<physics::SoilParameters> soil;  // WorldConfig::soil
+  // A Gazebo SDF world file (.world, .sdf): the models it simulates (as Gazebo names them: the
+  // ground plane, static boxes) and what it leaves out, one line each ("model 'cup1_model': ...").
+  std::vector<std::string> sdf_models;
+  std::vector<std::string> not_simulated;
+  // <physics> of an SDF world: s per step and the real-time factor it asks for (absent: unset).
+  std::optional<double> max_step_size, real_time_factor;
 };
 
 // Throws WorldError (unknown name, unreadable heightmap: the message names the file).

@@ -7,8 +7,14 @@
 namespace mechsim::control {
 
 void init_joint_pid(Pid& pid, const Params& params, const std::string& joint, const char* fallback) {
-  if (auto own = params.find(joint); own && own->is_map() && own->has("p")) {
+  auto own = params.find(joint);
+  if (own && own->is_map() && own->has("p")) {
     pid.init(*own);
+  } else if (auto position = own && own->is_map() ? own->find("position_controller") : std::nullopt;
+             position && position->is_map() && position->has("p")) {
+    // pr2_controller_configuration_gazebo's layout: <caster joint>/position_controller holds the
+    // gains of the caster's angle loop (the steering loop here).
+    pid.init(*position);
   } else {
     pid.init(params, fallback);
   }

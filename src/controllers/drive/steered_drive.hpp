@@ -40,7 +40,9 @@ class SteeredDrive {
   // Where each joint's gains come from.
   enum class Gains : std::uint8_t {
     Shared,        // the steering / wheel namespace given to init_pids()
-    JointOrShared  // the `<joint>` namespace when it holds a `p` (the PR2's YAML), else the shared one
+    // the `<joint>` namespace when it holds a `p` (the PR2's YAML), else `<joint>/position_controller`
+    // (pr2_controller_configuration_gazebo's casters), else the shared one
+    JointOrShared
   };
 
   // Init (not real-time; throws on bad parameters). Claims the joints listed under

@@ -47,7 +47,9 @@ bool LaserScannerTrajController::init(RobotHardware& hardware, const Params& par
   const std::string joint_path = join_param_path(params.path(), "joint");
   if (!params.has("joint")) throw ControllerConfigError("no joint given: parameter " + joint_path + " not found");
   joint_ = hardware.claim_joint(params.get<std::string>("joint"), HardwareInterface::Effort, joint_path);
-  pid_.init(params, "pid");
+  // pr2_controller_configuration_gazebo's YAML names the gains `gains` (what the PR2's own
+  // controller reads); mechsim's used `pid`.
+  pid_.init(params, params.has("gains") ? "gains" : "pid");
   ScanLimits limits;
   const double urdf_velocity = joint_.info().limits ? joint_.info().limits->velocity : 0.0;
   if (urdf_velocity > 0.0) limits.max_velocity = urdf_velocity;

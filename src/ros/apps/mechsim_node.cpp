@@ -14,13 +14,13 @@
 
 #include "description/robot_loader.hpp"
 #include "description/urdf/urdf_parser.hpp"
+#include "ros/gazebo_world.hpp"
 #include "ros/master_watch.hpp"
 #include "ros/node_params.hpp"
+#include "ros/robot_plugins.hpp"
 #include "ros/sim_node.hpp"
 
 namespace {
-
-using mechsim::description::RobotModel;
 
 // The first signal asks ROS to shut down (the clean path); a second one ends the process at once,
 // for a node stuck contacting an unreachable master (roslaunch follows SIGINT with SIGTERM).
@@ -30,16 +30,45 @@ extern "C" void request_shutdown(int) {
   ::ros::requestShutdown();
 }
 
-std::string plugin_namespace(const RobotModel& robot, bool* pr2) {
-  std::string ns;
-  for (const auto& plugin : robot.plugins) {
-    if (plugin.filename.find("gazebo_ros_control") != std::string::npos) {
-      if (auto it = plugin.parameters.find("robotNamespace"); it != plugin.parameters.end()) ns = it->second;
-    }
-    // The PR2's own gazebo plugin (pr2_gazebo_plugins) runs pr2_controller_manager.
-    if (plugin.filename.find("gazebo_ros_controller_manager") != std::string::npos) *pr2 = true;
+// Waits for a signal or a restarted master (status 2), one loop for both modes.
+int serve(mechsim::ros::MasterWatch& master) {
+  for (int tick = 1; ::ros::ok(); ++tick) {  // until a signal or rosnode kill
+    ::ros::WallDuration(0.1).sleep();
+    if (tick % 10 == 0 && master.poll() == mechsim::ros::MasterWatch::State::Restarted) return 2;
   }
-  return ns;
+  return 0;
+}
+
+// ~gazebo:=true: gazebo_ros' gzserver, an empty world that robots are spawned into.
+int run_gazebo_world(::ros::NodeHandle& pnh, mechsim::ros::MasterWatch& master) {
+  mechsim::ros::GazeboWorldOptions options;
+  options.world = pnh.param<std::string>("world", "empty");
+  options.paused = pnh.param("paused", false);
+  options.real_time_factor = pnh.param("real_time_factor", 1.0);
+  options.lenient = pnh.param("lenient", true);
+  options.model_states_rate = pnh.param("model_states_rate", 0.0);
+  options.node.publish_tf = pnh.param("publish_tf", false);
+  options.node.publish_odom_tf = pnh.param("publish_odom_tf", false);
+  options.node.odom_frame = pnh.param<std::string>("odom_frame", "odom");
+  options.node.tf_rate = pnh.param("tf_rate", 50.0);
+  options.node.state_publish_rate = pnh.param("state_publish_rate", 50.0);
+  options.node.clock_publish_rate = pnh.param("clock_publish_rate", 100.0);
+  if (bool pr2 = false; pnh.getParam("pr2", pr2)) options.node.pr2 = pr2;
+  if (std::string ignored; pnh.getParam("gazebo_ignored", ignored) && !ignored.empty()) {
+    ROS_INFO_STREAM("mechsim: gazebo_ros arguments accepted without effect (no GUI; MuJoCo, not ODE): " << ignored);
+  }
+  mechsim::ros::GazeboWorld world(pnh, options);
+  ROS_INFO_STREAM("mechsim: world '" << options.world << "' up" << (options.paused ? " (paused)" : "")
+                                     << "; robots come in through /gazebo/spawn_urdf_model");
+  // Spawning (a robot's physics built) holds a spinner thread for a while: others keep serving.
+  ::ros::AsyncSpinner spinner(4);
+  spinner.start();
+  world.start();
+  const int status = serve(master);
+  world.stop();
+  spinner.stop();
+  ::ros::shutdown();
+  return status;
 }
 
 int run(int argc, char** argv) {
@@ -58,6 +87,7 @@ int run(int argc, char** argv) {
   ::ros::NodeHandle pnh("~");
   ::ros::NodeHandle nh;
   mechsim::ros::report_private_params(pnh);
+  if (pnh.param("gazebo", false)) return run_gazebo_world(pnh, master);
 
   mechsim::ros::BridgeOptions bridge;
   std::string urdf, source = "robot_description";
@@ -101,7 +131,7 @@ int run(int argc, char** argv) {
 
   bool pr2 = false;
   mechsim::ros::NodeOptions options;
-  options.robot_namespace = plugin_namespace(bridge.robot, &pr2);
+  options.robot_namespace = mechsim::ros::plugin_namespace(bridge.robot, &pr2);
   if (std::string ns; pnh.getParam("robot_namespace", ns) && !ns.empty()) options.robot_namespace = ns;
   if (options.robot_namespace.empty()) options.robot_namespace = "/";
   options.pr2 = pnh.param("pr2", pr2);
@@ -138,14 +168,7 @@ int run(int argc, char** argv) {
   node.start();
   // SIGINT/SIGTERM: a clean stop (loop thread joined before ROS shuts down). A restarted master
   // (master_watch.hpp) ends the node with status 2.
-  int status = 0;
-  for (int tick = 1; ::ros::ok(); ++tick) {  // until a signal or rosnode kill
-    ::ros::WallDuration(0.1).sleep();
-    if (tick % 10 == 0 && master.poll() == mechsim::ros::MasterWatch::State::Restarted) {
-      status = 2;
-      break;
-    }
-  }
+  const int status = serve(master);
   node.stop();
   spinner.stop();
   ::ros::shutdown();

@@ -2,6 +2,8 @@
 //
 //   mechsim_spawner [--stopped] [--namespace NS] [--timeout S] [--wait-for TOPIC]
 //                   [--shutdown-timeout S] CONTROLLER|FILE.yaml ...
+// (each option also as --option=VALUE). It is also controller_manager's `spawner` and
+// pr2_controller_manager's `spawner` in the compatibility packages (src/ros/packages).
 //
 // A YAML file is loaded to the parameter server under the namespace (as `rosparam load`) and
 // each of its top-level keys becomes a controller to spawn. The spawner waits for
@@ -74,8 +76,12 @@ double parse_seconds(const std::string& option, const std::string& text) {
 Args parse(const std::vector<std::string>& argv) {
   Args a;
   for (std::size_t i = 0; i < argv.size(); ++i) {
-    const std::string& s = argv[i];
+    // --option=value as well as --option value (ros_control's spawner parses with argparse).
+    const std::string arg = argv[i];
+    const auto eq = arg.rfind("--", 0) == 0 ? arg.find('=') : std::string::npos;
+    const std::string s = arg.substr(0, eq);
     auto value = [&](const std::string& option) -> std::string {
+      if (eq != std::string::npos) return arg.substr(eq + 1);
       if (i + 1 >= argv.size()) usage_error(option + " needs a value");
       return argv[++i];
     };

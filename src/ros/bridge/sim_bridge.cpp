@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "controllers/drive/rover_drive_params.hpp"
+#include "ros/bridge/bridge_impl.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world.hpp"
@@ -53,15 +54,6 @@ PortType port_type(const control::Port& port) {
 
 }  // namespace
 
-struct SimBridge::Impl {
-  explicit Impl(BridgeOptions o) : options(std::move(o)) {}
-  BridgeOptions options;
-  control::Params params;
-  std::unique_ptr<sim::Simulation> simulation;
-  std::vector<int> physics_joint;  // per description joint; -1 when the physics has none
-  std::shared_ptr<MechanismStatistics> statistics;  // PR2 controller manager outputs; null: off
-};
-
 SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& m = *impl_;
   sim::WorldConfig world_config;
@@ -72,6 +64,8 @@ SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::
   sim_options.spawn = {m.options.x, m.options.y, m.options.z, m.options.roll, m.options.pitch, m.options.yaw};
   sim_options.start_paused = m.options.paused;
   sim_options.real_time_factor = m.options.real_time_factor;
+  sim_options.start_time = m.options.start_time;
+  sim_options.initial_joints = m.options.initial_joints;
   m.params = m.options.controller_params;
   m.simulation = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, sim_options);
   if (m.options.paused) m.simulation->pause();
@@ -80,9 +74,29 @@ SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::
     const auto index = m.simulation->physics().model().joint_index(joint.name);
     m.physics_joint.push_back(index ? static_cast<int>(*index) : -1);
   }
+  for (const description::Link& link : robot.links) {
+    if (const auto index = m.simulation->physics().model().link_index(link.name)) {
+      m.link_names.push_back(link.name);
+      m.link_index.push_back(*index);
+    }
+  }
 }
 
 SimBridge::~SimBridge() = default;
+
+WorldSummary describe_world(const std::string& name) {
+  sim::WorldConfig config;
+  config.name = name;
+  const sim::World world = sim::make_world(config);
+  WorldSummary out;
+  out.has_ground = world.spec.ground_plane || world.spec.terrain.has_value();
+  out.gravity = {0.0, 0.0, -world.spec.gravity};
+  out.sdf_models = world.sdf_models;
+  out.not_simulated = world.not_simulated;
+  out.max_step_size = world.max_step_size.value_or(0.0);
+  out.real_time_factor = world.real_time_factor.value_or(0.0);
+  return out;
+}
 
 bool SimBridge::run_for(double duration, std::string* error) {
   const sim::TickResult r = impl_->simulation->run_for(duration);

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,7 +36,44 @@ struct BridgeOptions {
   bool paused = false;
   double real_time_factor = 0.0;  // 0: as fast as possible
   double period = 0.001;          // s
+  double start_time = 0.0;        // s: the world's time when the robot is spawned into it
+  std::map<std::string, double> initial_joints;  // rad or m by joint (spawn_model -J)
 };
+
+// A link's (or a model's root link's) state in the world frame: pose X_WL, and the twist of the
+// link frame's origin (m/s, rad/s).
+struct EntityState {
+  description::Pose pose;
+  description::Vec3 linear, angular;
+};
+
+// gazebo_msgs/GetJointProperties' content; type as its constants (REVOLUTE 0, CONTINUOUS 1,
+// PRISMATIC 2, FIXED 3).
+struct JointPropertiesData {
+  int type = 3;
+  double damping = 0.0;             // N m s/rad or N s/m
+  double position = 0.0, rate = 0.0;  // rad or m, rad/s or m/s
+};
+
+// gazebo_msgs/GetLinkProperties' content: the URDF inertial (zero mass when it has none).
+struct LinkPropertiesData {
+  description::Pose com;  // X_L<centre of mass frame>
+  bool gravity_mode = true;
+  double mass = 0.0;  // kg
+  double ixx = 0.0, ixy = 0.0, ixz = 0.0, iyy = 0.0, iyz = 0.0, izz = 0.0;  // kg m^2, at the com frame
+};
+
+// What a world (BridgeOptions::world) holds, for the Gazebo world node (gazebo_world.hpp).
+struct WorldSummary {
+  bool has_ground = true;
+  description::Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
+  std::vector<std::string> sdf_models;         // an SDF world's models that are simulated
+  std::vector<std::string> not_simulated;      // one line each
+  double max_step_size = 0.0;                  // s; 0: unset
+  double real_time_factor = 0.0;               // 0: unset
+};
+// Builds the world once; throws std::runtime_error naming the world or file.
+WorldSummary describe_world(const std::string& world);
 
 // What a controller port is, as far as ROS binding goes.
 enum class PortType : std::uint8_t {
@@ -208,6 +246,46 @@ class SimBridge {
   const std::vector<std::string>& physics_warnings() const;
   // The controllers' parameter namespace (a handle on the tree the manager reads at load time).
   control::Params controller_params() const;
+
+  // Loop thread (an observer), or any thread once the loop has stopped: the state of every link
+  // the physics has, in link_names() order, world frame.
+  const std::vector<std::string>& link_names() const;
+  void link_states_now(std::vector<EntityState>& out) const;
+  // Only once the loop thread has stopped (a model being deleted): stops every running
+  // controller at once (their stopping() runs) and returns the names of all loaded ones.
+  std::vector<std::string> stop_all_controllers_now();
+
+  // ---- Gazebo's model API (any thread). Each call runs in the loop thread between ticks and
+  // waits for it (at most 5 s of wall time: an error when the loop does not answer). Links and
+  // joints by their URDF names. Refusals (unknown link, non-finite value, a fixed robot's pose)
+  // answer ok = false with why, and change nothing.
+  BridgeResult link_state(const std::string& link, EntityState& out) const;
+  // The root link's pose and twist (the model's state); a robot fixed to the world is refused.
+  BridgeResult set_root_state(const EntityState& state);
+  // Positions (rad or m), velocities set to zero (gazebo's set_model_configuration).
+  BridgeResult set_joint_positions(const std::vector<std::string>& joints, const std::vector<double>& positions);
+  BridgeResult joint_properties(const std::string& joint, JointPropertiesData& out) const;
+  BridgeResult link_properties(const std::string& link, LinkPropertiesData& out) const;
+  // Forces from outside, from `start` (s, sim time; past: now) for `duration` s (< 0: no end; 0:
+  // nothing; shorter than a tick: one tick). Wrench in the world frame: force (N) acting at the
+  // link's centre of mass moved by offset_W (m), torque (N m).
+  BridgeResult apply_link_wrench(const std::string& link, const description::Vec3& force_W,
+                                 const description::Vec3& torque_W, const description::Vec3& offset_W, double start,
+                                 double duration);
+  BridgeResult apply_joint_effort(const std::string& joint, double effort, double start, double duration);
+  BridgeResult clear_link_wrenches(const std::string& link);
+  BridgeResult clear_joint_efforts(const std::string& joint);
+  description::Vec3 gravity() const;  // m/s^2, world frame
+  BridgeResult set_gravity(const description::Vec3& g_W);
+  bool fixed_to_world() const;
+  // The real-time factor the loop paces to (0: as fast as possible), and the one it measured.
+  double real_time_factor() const;
+  void set_real_time_factor(double factor);
+  double measured_real_time_factor() const;
+  // Stepping while paused: `count` more ticks; pending_steps() counts them down.
+  void request_steps(std::uint64_t count);
+  std::uint64_t pending_steps() const;
+  void cancel_steps();
 
   BridgeResult load_controller(const std::string& name);
   BridgeResult unload_controller(const std::string& name);

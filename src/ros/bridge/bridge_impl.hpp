@@ -1,0 +1,28 @@
+#pragma once
+// SimBridge's state (C++20; bridge/*.cpp only): shared by sim_bridge.cpp and model_api.cpp.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ros/bridge/mechanism_statistics.hpp"
+#include "ros/bridge/sim_bridge.hpp"
+#include "sim/simulation.hpp"
+
+namespace mechsim::ros {
+
+struct SimBridge::Impl {
+  explicit Impl(BridgeOptions o) : options(std::move(o)) {}
+  // Runs `command` in the loop thread between ticks and waits for it (model_api.cpp).
+  BridgeResult in_loop(const std::function<BridgeResult(sim::Simulation&)>& command) const;
+  BridgeOptions options;
+  control::Params params;
+  std::unique_ptr<sim::Simulation> simulation;
+  std::vector<int> physics_joint;  // per description joint; -1 when the physics has none
+  std::shared_ptr<MechanismStatistics> statistics;  // PR2 controller manager outputs; null: off
+  std::vector<std::string> link_names;  // description links the physics has (model_api.cpp)
+  std::vector<std::size_t> link_index;  // their physics links
+};
+
+}  // namespace mechsim::ros

@@ -1,0 +1,263 @@
+// SimBridge: Gazebo's model API (sim_bridge.hpp), each call run in the loop thread between ticks.
+#include <cmath>
+#include <memory>
+#include <mutex>
+
+#include "ros/bridge/bridge_impl.hpp"
+
+namespace mechsim::ros {
+
+namespace {
+
+constexpr double kLoopTimeout = 5.0;  // s (wall) a call waits for the loop thread
+
+bool finite(const description::Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool finite(const description::Pose& p) {
+  const description::Quat& q = p.orientation;
+  return finite(p.position) && std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
+
+BridgeResult refuse(const std::string& why) { return {false, why}; }
+
+std::optional<std::size_t> link_of(const sim::Simulation& s, const std::string& link) {
+  const physics::PhysicsModel& m = s.physics().model();
+  return m.link_index(link.empty() ? m.root_link() : link);
+}
+
+}  // namespace
+
+
+BridgeResult SimBridge::Impl::in_loop(const std::function<BridgeResult(sim::Simulation&)>& command) const {
+  // The command and its result outlive a caller that timed out (the loop may run it later): so
+  // commands capture by value, and outputs go through shared state (out_of below).
+  auto result = std::make_shared<std::pair<std::mutex, std::optional<BridgeResult>>>();
+  simulation->post([command, result](sim::Simulation& s) {
+    BridgeResult r;
+    try {
+      r = command(s);
+    } catch (const std::exception& e) {
+      r = {false, e.what()};
+    }
+    std::lock_guard<std::mutex> lock(result->first);
+    result->second = std::move(r);
+  });
+  if (!simulation->wait_for_commands(kLoopTimeout)) return refuse("the simulation loop did not answer within 5 s");
+  std::lock_guard<std::mutex> lock(result->first);
+  return result->second ? *result->second : refuse("the simulation loop dropped the request");
+}
+
+// Runs `read` in the loop thread and copies what it wrote into `out` once it has run: a
+// command that runs after its caller timed out writes into the shared copy only.
+using LoopCommand = std::function<BridgeResult(sim::Simulation&)>;
+
+template <class T, class InLoop>
+BridgeResult read_in_loop(const InLoop& in_loop, T& out, std::function<BridgeResult(sim::Simulation&, T&)> read) {
+  auto value = std::make_shared<T>(out);
+  const BridgeResult r = in_loop([value, read](sim::Simulation& s) { return read(s, *value); });
+  if (r.ok) out = *value;
+  return r;
+}
+
+BridgeResult SimBridge::link_state(const std::string& link, EntityState& out) const {
+  return read_in_loop<EntityState>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out, [link](sim::Simulation& s, EntityState& o) -> BridgeResult {
+    const auto l = link_of(s, link);
+    if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    o.pose = s.physics().link_pose(*l);
+    const physics::Twist v = s.physics().link_twist(*l);
+    o.linear = v.linear;
+    o.angular = v.angular;
+    return {};
+  });
+}
+
+const std::vector<std::string>& SimBridge::link_names() const { return impl_->link_names; }
+
+void SimBridge::link_states_now(std::vector<EntityState>& out) const {
+  const physics::Physics& p = impl_->simulation->physics();
+  out.resize(impl_->link_index.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i].pose = p.link_pose(impl_->link_index[i]);
+    const physics::Twist v = p.link_twist(impl_->link_index[i]);
+    out[i].linear = v.linear;
+    out[i].angular = v.angular;
+  }
+}
+
+std::vector<std::string> SimBridge::stop_all_controllers_now() {
+  control::ControllerManager& cm = impl_->simulation->controllers();
+  const double now = impl_->simulation->time();
+  cm.apply_pending_switch(now);  // a switch waiting for the next tick (paused) first
+  std::vector<std::string> loaded, running;
+  for (const control::ControllerInfo& info : cm.list_controllers()) {
+    loaded.push_back(info.name);
+    if (info.state == control::ControllerLifecycle::Running) running.push_back(info.name);
+  }
+  if (!running.empty()) cm.switch_controllers({}, running, control::SwitchStrictness::BestEffort);
+  cm.apply_pending_switch(now);
+  return loaded;
+}
+
+BridgeResult SimBridge::set_root_state(const EntityState& state) {
+  if (!finite(state.pose) || !finite(state.linear) || !finite(state.angular)) {
+    return refuse("the pose and twist must be finite");
+  }
+  const description::Quat& q = state.pose.orientation;
+  const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  if (norm < 1e-9) return refuse("the orientation quaternion is zero");
+  EntityState unit = state;
+  unit.pose.orientation = {q.w / norm, q.x / norm, q.y / norm, q.z / norm};
+  return impl_->in_loop([unit](sim::Simulation& s) -> BridgeResult {
+    if (s.physics().model().fixed_to_world()) {
+      return refuse("model '" + s.robot().name + "' is fixed to the world: its pose cannot be set");
+    }
+    s.physics().set_base_pose(unit.pose);
+    s.physics().set_base_twist({unit.linear, unit.angular});
+    s.state_changed();
+    return {};
+  });
+}
+
+BridgeResult SimBridge::set_joint_positions(const std::vector<std::string>& joints, const std::vector<double>& positions) {
+  if (joints.size() != positions.size()) {
+    return refuse("joint_names has " + std::to_string(joints.size()) + " names but joint_positions " +
+                  std::to_string(positions.size()) + " values");
+  }
+  for (std::size_t i = 0; i < joints.size(); ++i)
+    if (!std::isfinite(positions[i])) return refuse("joint '" + joints[i] + "': the position must be finite");
+  return impl_->in_loop([joints, positions](sim::Simulation& s) -> BridgeResult {
+    std::vector<std::size_t> index;
+    for (const std::string& j : joints) {
+      const auto p = s.physics().model().joint_index(j);
+      if (!p) return refuse("no joint '" + j + "' in model '" + s.robot().name + "'");
+      index.push_back(*p);
+    }
+    for (std::size_t i = 0; i < index.size(); ++i) s.physics().set_joint_state(index[i], positions[i], 0.0);
+    s.state_changed();
+    return {};
+  });
+}
+
+BridgeResult SimBridge::joint_properties(const std::string& joint, JointPropertiesData& out) const {
+  return read_in_loop<JointPropertiesData>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out, [joint](sim::Simulation& s, JointPropertiesData& o) -> BridgeResult {
+    const description::Joint* j = s.robot().joint(joint);
+    if (j == nullptr) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
+    switch (j->type) {
+      case description::JointType::Revolute: o.type = 0; break;
+      case description::JointType::Continuous: o.type = 1; break;
+      case description::JointType::Prismatic: o.type = 2; break;
+      default: o.type = 3; break;
+    }
+    o.damping = j->dynamics ? j->dynamics->damping : 0.0;
+    o.position = o.rate = 0.0;
+    if (const auto p = s.physics().model().joint_index(joint)) {
+      o.position = s.physics().position(*p);
+      o.rate = s.physics().velocity(*p);
+    }
+    return {};
+  });
+}
+
+BridgeResult SimBridge::link_properties(const std::string& link, LinkPropertiesData& out) const {
+  // The description does not change: no need for the loop thread.
+  const sim::Simulation& s = *impl_->simulation;
+  const description::Link* l = s.robot().link(link);
+  if (l == nullptr) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+  out = LinkPropertiesData{};
+  if (l->inertial) {
+    const description::Inertial& i = *l->inertial;
+    out.com = i.origin;
+    out.mass = i.mass;
+    out.ixx = i.ixx, out.ixy = i.ixy, out.ixz = i.ixz, out.iyy = i.iyy, out.iyz = i.iyz, out.izz = i.izz;
+  }
+  for (const std::string& off : s.physics().model().gravity_off_links())
+    if (off == link) out.gravity_mode = false;
+  return {};
+}
+
+BridgeResult SimBridge::apply_link_wrench(const std::string& link, const description::Vec3& force_W,
+                                          const description::Vec3& torque_W, const description::Vec3& offset_W,
+                                          double start, double duration) {
+  if (!finite(force_W) || !finite(torque_W) || !finite(offset_W)) return refuse("the wrench and its point must be finite");
+  if (!std::isfinite(start) || !std::isfinite(duration)) return refuse("start_time and duration must be finite");
+  return impl_->in_loop([=](sim::Simulation& s) -> BridgeResult {
+    const auto l = s.physics().model().link_index(link);
+    if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    s.external_forces().add_wrench({*l, force_W, torque_W, offset_W},
+                                   sim::force_window(s.time(), s.period(), start, duration));
+    return {};
+  });
+}
+
+BridgeResult SimBridge::apply_joint_effort(const std::string& joint, double effort, double start, double duration) {
+  if (!std::isfinite(effort) || !std::isfinite(start) || !std::isfinite(duration)) {
+    return refuse("effort, start_time and duration must be finite");
+  }
+  return impl_->in_loop([=](sim::Simulation& s) -> BridgeResult {
+    const auto j = s.physics().model().joint_index(joint);
+    if (!j) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
+    s.external_forces().add_effort(*j, effort, sim::force_window(s.time(), s.period(), start, duration));
+    return {};
+  });
+}
+
+BridgeResult SimBridge::clear_link_wrenches(const std::string& link) {
+  return impl_->in_loop([link](sim::Simulation& s) -> BridgeResult {
+    const auto l = s.physics().model().link_index(link);
+    if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    s.external_forces().clear_wrenches(*l);  // gone from the next step on
+    return {};
+  });
+}
+
+BridgeResult SimBridge::clear_joint_efforts(const std::string& joint) {
+  return impl_->in_loop([joint](sim::Simulation& s) -> BridgeResult {
+    const auto j = s.physics().model().joint_index(joint);
+    if (!j) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
+    s.external_forces().clear_efforts(*j);
+    return {};
+  });
+}
+
+description::Vec3 SimBridge::gravity() const {
+  description::Vec3 g{0.0, 0.0, -9.81};
+  read_in_loop<description::Vec3>([this](const LoopCommand& c) { return impl_->in_loop(c); }, g, [](sim::Simulation& s, description::Vec3& o) -> BridgeResult {
+    o = s.physics().gravity();
+    return {};
+  });
+  return g;
+}
+
+BridgeResult SimBridge::set_gravity(const description::Vec3& g_W) {
+  if (!finite(g_W)) return refuse("gravity must be finite");
+  return impl_->in_loop([g_W](sim::Simulation& s) -> BridgeResult {
+    s.physics().set_gravity(g_W);
+    return {};
+  });
+}
+
+bool SimBridge::fixed_to_world() const { return impl_->simulation->physics().model().fixed_to_world(); }
+
+double SimBridge::real_time_factor() const {
+  double f = 0.0;
+  read_in_loop<double>([this](const LoopCommand& c) { return impl_->in_loop(c); }, f, [](sim::Simulation& s, double& o) -> BridgeResult {
+    o = s.options().real_time_factor;
+    return {};
+  });
+  return f;
+}
+
+void SimBridge::set_real_time_factor(double factor) {
+  impl_->in_loop([factor](sim::Simulation& s) -> BridgeResult {
+    s.set_real_time_factor(factor);
+    return {};
+  });
+}
+
+double SimBridge::measured_real_time_factor() const { return impl_->simulation->measured_real_time_factor(); }
+
+void SimBridge::request_steps(std::uint64_t count) { impl_->simulation->request_steps(count); }
+std::uint64_t SimBridge::pending_steps() const { return impl_->simulation->pending_steps(); }
+void SimBridge::cancel_steps() { impl_->simulation->cancel_steps(); }
+
+}  // namespace mechsim::ros

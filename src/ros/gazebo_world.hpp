@@ -1,0 +1,107 @@
+#pragma once
+// GazeboWorld: mechsim_node as gazebo_ros' gzserver (`~gazebo:=true`, what gazebo_ros'
+// empty_world.launch starts). The world starts empty: its clock runs (paused or not) and robots
+// come in through /gazebo/spawn_urdf_model or spawn_sdf_model (gazebo_ros' spawn_model), as in
+// Gazebo. It offers gazebo_ros' /gazebo/* API with gazebo_msgs' wire format (gazebo_services.cpp)
+// and topics (gazebo_topics.cpp).
+//
+// Models: the world's own (a ground plane, static boxes of an SDF world) and one robot at a time,
+// a SimNode (sim_node.hpp: its controller manager under its robot namespace, topics, sensors).
+// A second robot is refused with a message: several robots in one physics are not built yet.
+// A spawned robot goes on from the world's time (no jump); deleting it stops and unloads its
+// controllers first, and the world's clock goes on from the robot's time.
+//
+// Threads: while no robot is in, the clock thread advances time (paced at the real-time factor,
+// real time when that is 0) and publishes /clock; a robot's SimNode runs its own loop thread,
+// and everything that reads or changes its physics runs there between ticks (SimBridge's model
+// API). Services run on the node's spinner threads, one at a time (`mutex_`).
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <ros/ros.h>
+
+#include "description/pose.hpp"
+#include "ros/sim_node.hpp"
+
+namespace mechsim::ros {
+
+struct GazeboWorldOptions {
+  std::string world = "empty";  // mechsim world name, heightmap, or an SDF .world file
+  bool paused = false;
+  double real_time_factor = 1.0;  // 0: as fast as possible (the empty world keeps real time)
+  double period = 0.001;          // s
+  NodeOptions node;               // each robot's node options (its namespace comes from the spawn)
+  bool lenient = true;            // description problems Gazebo tolerates are warnings
+  // Hz (sim time) of /gazebo/model_states and link_states while subscribed; 0: every tick
+  // (gazebo_ros publishes them at every world update).
+  double model_states_rate = 0.0;
+};
+
+class GazeboWorld {
+ public:
+  // Throws std::runtime_error when the world cannot be built (names the file or world).
+  GazeboWorld(::ros::NodeHandle private_nh, GazeboWorldOptions options);
+  ~GazeboWorld();
+  GazeboWorld(const GazeboWorld&) = delete;
+  GazeboWorld& operator=(const GazeboWorld&) = delete;
+
+  void start();  // the clock thread
+  void stop();   // stops the robot's loop and the clock thread
+
+ private:
+  struct Entity;  // a frame a request names (gazebo_services.cpp)
+  struct Topics;  // model_states, link_states, performance_metrics (gazebo_topics.cpp)
+
+  // ---- gazebo_world.cpp: lifecycle
+  void clock_loop();
+  void advertise_world_services();
+  bool spawn(const std::string& name, const std::string& xml, const std::string& robot_namespace,
+             const description::Pose& X_RM, const std::string& reference_frame, std::string* status);
+  bool remove(const std::string& name, std::string* status);
+  double time() const;  // s
+  bool paused() const;
+  void set_paused(bool paused);
+  bool step(std::uint64_t steps, std::string* status);
+  // ---- gazebo_services.cpp: the state, property and force services
+  void advertise_model_services();
+  bool resolve(const std::string& name, Entity& out, std::string* status) const;
+  std::vector<std::string> model_names() const;
+  // ---- gazebo_topics.cpp
+  void advertise_topics();
+  void publish_states(double time);  // the robot's loop thread
+  void publish_performance();        // 1 Hz wall
+
+  ::ros::NodeHandle private_nh_, root_nh_;
+  GazeboWorldOptions options_;
+  std::string world_name_;
+  std::vector<std::string> world_models_;  // the world's own (static) models, by name
+  bool has_ground_ = true;
+  description::Vec3 gravity_{0.0, 0.0, -9.81};  // m/s^2, for robots spawned later
+
+  std::mutex mutex_;  // one /gazebo service at a time; guards the robot's lifetime
+  std::string robot_name_;
+  std::unique_ptr<SimNode> robot_;
+
+  // The clock while no robot is in (clock_mutex_ guards ticks_ against the spawn's handover).
+  mutable std::mutex clock_mutex_;
+  std::uint64_t ticks_ = 0;
+  std::atomic<bool> paused_{false};
+  std::atomic<std::uint64_t> pending_steps_{0};
+  std::atomic<double> real_time_factor_{1.0};
+  std::atomic<bool> stop_{false};
+  std::thread clock_thread_;
+  ::ros::Publisher clock_pub_;
+
+  std::vector<::ros::ServiceServer> services_;
+  ::ros::Subscriber model_state_sub_;  // /gazebo/set_model_state
+  std::unique_ptr<Topics> topics_;
+};
+
+}  // namespace mechsim::ros

@@ -1,0 +1,193 @@
+// Users' Gazebo launch files, unmodified from ../shared, through mechsim's gazebo_ros,
+// controller_manager, pr2_controller_manager and xacro packages (src/ros/packages), with only
+// ROS_PACKAGE_PATH set to <build>/ros_package and ../shared/robots (and xacro on PATH, as a ROS
+// install has it): cc8_description's cc8_gazebo.launch (its 11 controllers running,
+// robot_state_publisher's TF), pr2_gazebo's pr2_empty_world.launch (pr2_gazebo's default
+// controllers; the base follows a Twist) and pr2_gazebo's own rostest hztest_pr2_scan.launch.
+// Skipped without roslaunch or the shared robots. Each test stops roslaunch (its process group)
+// also on failure; waits are bounded (at most 90 s of wall time each).
+#include <gmock/gmock.h>
+
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+#include <controller_manager_msgs/ListControllers.h>
+#include <gazebo_msgs/GetModelState.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <pr2_mechanism_msgs/ListControllers.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "param_snapshot.hpp"
+#include "ros_fixture.hpp"
+
+namespace mechsim::ros::test {
+namespace {
+
+const std::string kShared = MECHSIM_SHARED_DIR;
+const char* const kRoslaunch = "/usr/bin/roslaunch";
+
+// `argv` run with the environment the acceptance names: ROS_PACKAGE_PATH = mechsim's packages and
+// the shared robots, xacro and Debian's tools first on PATH.
+std::vector<std::string> in_gazebo_env(const std::vector<std::string>& argv) {
+  const char* path = std::getenv("PATH");
+  std::vector<std::string> out = {
+      "/usr/bin/env",
+      "ROS_PACKAGE_PATH=" + std::string(MECHSIM_BINARY_DIR) + "/ros_package:" + kShared + "/robots",
+      "PATH=" + std::string(MECHSIM_BINARY_DIR) + "/ros_bin:/usr/bin:" + (path != nullptr ? path : "")};
+  out.insert(out.end(), argv.begin(), argv.end());
+  return out;
+}
+
+std::vector<std::string> running(const std::vector<std::string>& names, const std::vector<std::string>& states) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < names.size() && i < states.size(); ++i)
+    if (states[i] == "running") out.push_back(names[i]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+class GazeboLaunch : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kRoslaunch)) GTEST_SKIP() << kRoslaunch << " is missing (Debian's python3-roslaunch)";
+    if (!std::filesystem::exists(kShared + "/robots/cc8_description")) GTEST_SKIP() << "no " << kShared << "/robots";
+    ASSERT_TRUE(::ros::master::check()) << "no ROS master";
+  }
+  void launch(const std::vector<std::string>& args) {
+    std::vector<std::string> argv = {"/usr/bin/python3", kRoslaunch};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    launch_ = std::make_unique<ChildProcess>(in_gazebo_env(argv), log_dir() + "/roslaunch_" + name + ".log");
+  }
+  void TearDown() override {
+    if (launch_) {
+      EXPECT_NE(launch_->stop(15.0), -1) << "roslaunch did not stop on SIGINT within 15 s";
+    }
+    params_.forget_new();  // the PR2's controllers were loaded at the root namespace
+  }
+  std::string tail() const {
+    const std::string log = launch_->log();
+    return log.substr(log.size() > 6000 ? log.size() - 6000 : 0);
+  }
+  std::unique_ptr<ChildProcess> launch_;
+  ParamSnapshot params_;
+};
+
+TEST_F(GazeboLaunch, Cc8DescriptionsGazeboLaunchRunsUnchanged) {
+  launch({"cc8_description", "cc8_gazebo.launch", "paused:=false"});
+  const std::vector<std::string> expected = {
+      "joint_state_controller",           "steering_FL_position_controller",    "steering_FR_position_controller",
+      "steering_RL_position_controller",  "steering_RR_position_controller",    "wheel_joint_FL_position_controller",
+      "wheel_joint_FR_position_controller", "wheel_joint_ML_position_controller", "wheel_joint_MR_position_controller",
+      "wheel_joint_RL_position_controller", "wheel_joint_RR_position_controller"};
+  std::vector<std::string> now;
+  ASSERT_TRUE(wait_until(
+      [&] {
+        controller_manager_msgs::ListControllers list;
+        if (!::ros::service::exists("/cc8/controller_manager/list_controllers", false) ||
+            !::ros::service::call("/cc8/controller_manager/list_controllers", list)) {
+          return false;
+        }
+        std::vector<std::string> names, states;
+        for (const auto& c : list.response.controller) names.push_back(c.name), states.push_back(c.state);
+        now = running(names, states);
+        return now == expected;
+      },
+      60.0))
+      << "running: " << ::testing::PrintToString(now) << "\n" << tail();
+
+  // TF of the moving joints comes from robot_state_publisher (over /cc8/joint_states), as in Gazebo.
+  ::ros::NodeHandle nh;
+  std::mutex m;
+  std::set<std::string> publishers, children;
+  int joint_states = 0;
+  ::ros::Subscriber tf = nh.subscribe<tf2_msgs::TFMessage>(
+      "/tf", 10, boost::function<void(const ::ros::MessageEvent<tf2_msgs::TFMessage const>&)>(
+                     [&](const ::ros::MessageEvent<tf2_msgs::TFMessage const>& e) {
+                       std::lock_guard<std::mutex> l(m);
+                       publishers.insert(e.getPublisherName());
+                       for (const auto& t : e.getMessage()->transforms) children.insert(t.child_frame_id);
+                     }));
+  ::ros::Subscriber js = nh.subscribe<sensor_msgs::JointState>(
+      "/cc8/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr&) {
+        std::lock_guard<std::mutex> l(m);
+        ++joint_states;
+      });
+  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return joint_states > 5 && children.size() > 5; }, 20.0))
+      << tail();
+  {
+    std::lock_guard<std::mutex> l(m);
+    EXPECT_THAT(publishers, ::testing::ElementsAre("/robot_state_publisher"));
+    EXPECT_THAT(children, ::testing::Contains("bogie_L_1"));
+  }
+  gazebo_msgs::GetModelState state;
+  state.request.model_name = "cc8";
+  ASSERT_TRUE(call("/gazebo/get_model_state", state));
+  EXPECT_TRUE(state.response.success) << state.response.status_message;
+  EXPECT_NEAR(state.response.pose.position.x, 0.0, 0.05) << "the rover stands where spawn_model put it";
+}
+
+TEST_F(GazeboLaunch, Pr2GazebosEmptyWorldLaunchRunsUnchanged) {
+  launch({"pr2_gazebo", "pr2_empty_world.launch"});
+  const std::vector<std::string> expected = {"base_controller",      "base_odometry",        "head_traj_controller",
+                                             "l_arm_controller",     "l_gripper_controller", "laser_tilt_controller",
+                                             "r_arm_controller",     "r_gripper_controller", "torso_controller"};
+  std::vector<std::string> now;
+  ASSERT_TRUE(wait_until(
+      [&] {
+        pr2_mechanism_msgs::ListControllers list;
+        if (!::ros::service::exists("/pr2_controller_manager/list_controllers", false) ||
+            !::ros::service::call("/pr2_controller_manager/list_controllers", list)) {
+          return false;
+        }
+        now = running(list.response.controllers, list.response.state);
+        return now == expected;
+      },
+      90.0))
+      << "running: " << ::testing::PrintToString(now) << "\n" << tail();
+  // pr2_gazebo's names: the controllers at the root namespace.
+  ::ros::NodeHandle nh;
+  std::mutex m;
+  double x0 = std::numeric_limits<double>::quiet_NaN(), x = 0.0;
+  ::ros::Subscriber odom =
+      nh.subscribe<nav_msgs::Odometry>("/base_odometry/odom", 10, [&](const nav_msgs::Odometry::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        x = msg->pose.pose.position.x;
+        if (std::isnan(x0)) x0 = x;
+      });
+  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return !std::isnan(x0); }, 10.0)) << tail();
+  ::ros::Publisher cmd = nh.advertise<geometry_msgs::Twist>("/base_controller/command", 1);
+  ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0; }, 5.0));
+  geometry_msgs::Twist twist;
+  twist.linear.x = 0.2;
+  const bool moved = wait_until(
+      [&] {
+        cmd.publish(twist);
+        std::lock_guard<std::mutex> l(m);
+        return x - x0 > 0.15;
+      },
+      20.0);
+  EXPECT_TRUE(moved) << "base_odometry x " << x0 << " -> " << x << "\n" << tail();
+}
+
+// pr2_gazebo's own rostest, through its launch files and gazebo_ros' (rostest --reuse-master on
+// the test's master; hztest's Python from Debian).
+TEST_F(GazeboLaunch, Pr2GazebosHztestScanPasses) {
+  const char* const rostest = "/usr/bin/rostest";
+  if (!std::filesystem::exists(rostest)) GTEST_SKIP() << rostest << " is missing (Debian's python3-rostest)";
+  ::ros::param::set("/run_id", std::string("mechsim_gazebo_hztest"));
+  launch_ = std::make_unique<ChildProcess>(
+      in_gazebo_env({"/usr/bin/python3", rostest, "--reuse-master", "pr2_gazebo", "hztest_pr2_scan.launch"}),
+      log_dir() + "/rostest_gazebo_hztest_pr2_scan.log");
+  const int status = launch_->wait(200.0);
+  const std::string log = tail();
+  EXPECT_EQ(status, 0) << log;
+  EXPECT_THAT(log, ::testing::HasSubstr("* TESTS: 2"));
+  EXPECT_THAT(log, ::testing::HasSubstr("RESULT: SUCCESS"));
+}
+
+}  // namespace
+}  // namespace mechsim::ros::test
