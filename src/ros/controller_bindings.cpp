@@ -9,6 +9,10 @@
 //   "odom"            <robot ns>/<controller>/odom (nav_msgs/Odometry) at the controller's
 //                     publish_rate (default 50 Hz), and odom -> base on /tf unless enable_odom_tf
 //                     is false (diff_drive_controller's behaviour)
+//   "cmd_vel_out"     <robot ns>/<controller>/cmd_vel_out (geometry_msgs/TwistStamped):
+//                     diff_drive_controller's limited command with publish_cmd, every update
+//   cmd_vel           with allow_multiple_cmd_vel_publishers: false, diff_drive_controller
+//                     ignores cmd_vel while more than one node publishes it (an error, throttled)
 //   trajectories      <robot ns>/<controller>/command (trajectory_msgs/JointTrajectory),
 //                     <robot ns>/<controller>/state (control_msgs/JointTrajectoryControllerState,
 //                     at the state rate), <robot ns>/<controller>/follow_joint_trajectory (action),
@@ -28,6 +32,7 @@
 // relative names resolve in the controller's namespace. Remapping the full name works too.
 
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Float64.h>
@@ -61,6 +66,7 @@ struct SimNode::Binding {
   JointControllerStateData jcs;
   JointStatesData joint_states;
   OdometryData odom;
+  TwistStampedData twist;
   control::JointTrajectoryControllerState trajectory_state;
   std::unique_ptr<TrajectoryActionServer> action;
   std::unique_ptr<Pr2TrajectoryActionServer> pr2_action;  // JointTrajectoryActionController only
@@ -201,13 +207,32 @@ void SimNode::bind(const std::string& controller) {
               return write_array(p, msg.data, error);
             });
         break;
-      case PortType::TwistCommand:
+      case PortType::TwistCommand: {
+        bool allow_multiple = true;
+        try {
+          if (auto c = params.find(controller)) allow_multiple = c->get<bool>("allow_multiple_cmd_vel_publishers", true);
+        } catch (const std::exception& e) {
+          ROS_WARN_STREAM("mechsim: " << e.what());
+        }
         b->subscriber = subscribe_command<geometry_msgs::Twist>(
             controller_nh, topic, bindings_mutex_, weak, "cmd_vel",
-            [](const PortRef& p, const geometry_msgs::Twist& msg, std::string* error) {
+            [allow_multiple, weak](const PortRef& p, const geometry_msgs::Twist& msg, std::string* error) {
+              // Under bindings_mutex_: the binding (and its subscriber) is alive.
+              if (!allow_multiple) {
+                const auto self = weak.lock();
+                const std::uint32_t publishers = self ? self->subscriber.getNumPublishers() : 0;
+                if (publishers > 1) {
+                  *error = std::to_string(publishers) + " publishers on cmd_vel, and allow_multiple_cmd_vel_publishers is false";
+                  return false;
+                }
+              }
               return write_twist(p, msg.linear.x, msg.linear.y, msg.linear.z, msg.angular.x, msg.angular.y,
                                  msg.angular.z, error);
             });
+        break;
+      }
+      case PortType::TwistState:
+        b->publisher = controller_nh.advertise<geometry_msgs::TwistStamped>(topic, 100);
         break;
       case PortType::JointControllerState: {
         b->publisher = b->pr2 ? controller_nh.advertise<pr2_controllers_msgs::JointControllerState>(topic, 1)
@@ -383,6 +408,20 @@ void SimNode::publish_controller_states(double time) {
           tf.transforms.push_back(t);
           b.tf_publisher.publish(tf);
         }
+        break;
+      }
+      case PortType::TwistState: {
+        if (!read_twist_state(b.port, b.twist, &b.sequence)) break;
+        geometry_msgs::TwistStamped msg;
+        msg.header.stamp = ::ros::Time(b.twist.stamp);
+        msg.header.frame_id = b.twist.frame_id;
+        msg.twist.linear.x = b.twist.vx;
+        msg.twist.linear.y = b.twist.vy;
+        msg.twist.linear.z = b.twist.vz;
+        msg.twist.angular.x = b.twist.wx;
+        msg.twist.angular.y = b.twist.wy;
+        msg.twist.angular.z = b.twist.wz;
+        b.publisher.publish(msg);
         break;
       }
       case PortType::TrajectoryState: {

@@ -211,7 +211,7 @@ Check read_check(const Params& c) {
   Check check;
   const std::vector<std::string> keys = c.keys();
   if (keys.size() != 1) {
-    fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint)");
+    fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, tracking, laser_range, imu_tilt)");
   }
   const std::string& kind = keys.front();
   const Params p = c.child(kind);
@@ -317,6 +317,16 @@ Check read_check(const Params& c) {
     if (!p.has("position")) fail(p, "needs position (and within)");
     check.within = p.get<double>("within");
     if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0");
+  } else if (kind == "tracking") {
+    check.kind = Check::Kind::Tracking;
+    only_keys(p, {"controller", "max_error", "after"});
+    check.controller = p.get<std::string>("controller");
+    check.max_abs_error = p.get<double>("max_error");
+    if (!(*check.max_abs_error >= 0.0) || !std::isfinite(*check.max_abs_error)) fail(p.child("max_error"), "must be >= 0");
+    if (p.has("after")) {
+      check.at = p.get<double>("after");
+      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("after"), "must be >= 0 s");
+    }
   } else if (kind == "laser_range" || kind == "imu_tilt") {
     const bool laser = kind == "laser_range";
     check.kind = laser ? Check::Kind::LaserRange : Check::Kind::ImuTilt;
@@ -340,7 +350,7 @@ Check read_check(const Params& c) {
       if (!(check.within_angle >= 0.0)) fail(p.child("within_deg"), "must be >= 0 deg");
     }
   } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, laser_range, imu_tilt)");
+    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, tracking, laser_range, imu_tilt)");
   }
   return check;
 }
@@ -448,11 +458,13 @@ Scenario load_scenario(const std::string& path) {
         for (const std::string& j : joints->keys()) s.initial_joints[j] = finite(*joints, j, 0.0);
       }
     }
-    const Params controllers = root.child("controllers");
-    s.controllers_file = resolve_path(base, controllers.get<std::string>("file"));
-    if (!fs::exists(s.controllers_file)) fail(controllers.child("file"), "no such file: " + s.controllers_file);
-    s.controllers_namespace = controllers.get<std::string>("namespace", "");
-    s.start = controllers.get<std::vector<std::string>>("start");
+    // A robot driven by its Gazebo model plugins alone needs no controllers.
+    if (auto controllers = root.find("controllers")) {
+      s.controllers_file = resolve_path(base, controllers->get<std::string>("file"));
+      if (!fs::exists(s.controllers_file)) fail(controllers->child("file"), "no such file: " + s.controllers_file);
+      s.controllers_namespace = controllers->get<std::string>("namespace", "");
+      s.start = controllers->get<std::vector<std::string>>("start", {});
+    }
 
     s.duration = root.get<double>("duration");
     if (!(s.duration > 0.0) || s.duration > 1e6) fail(root.child("duration"), "must be in (0, 1e6] s");
