@@ -207,6 +207,15 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   join(registry_.types()));
   }
   RobotHardware hardware(model_, state_);
+  hardware.set_direct_joint_owner([this](int joint) {  // under config_mutex_, as load_controller
+    std::string owners;
+    for (const auto& e : entries_) {
+      if (!e->model_plugin) continue;
+      if (std::find(e->joint_indices.begin(), e->joint_indices.end(), joint) == e->joint_indices.end()) continue;
+      owners += (owners.empty() ? "" : ", ") + describe_entry(*e);
+    }
+    return owners;
+  });
   std::string error;
   bool ok = false;
   try {

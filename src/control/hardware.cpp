@@ -109,9 +109,10 @@ JointHandle RobotHardware::claim_joint(const std::string& joint, HardwareInterfa
   }
   const mechanism::JointInfo& info = model_.joints[static_cast<std::size_t>(index)];
   if (info.role == mechanism::JointRole::Direct && access_ == HardwareAccess::RosControl) {
+    const std::string owner = direct_owner_ ? direct_owner_(index) : std::string();
     throw ControllerConfigError("joint '" + joint + "'" + where(param_path) +
-                                " has no transmission: gazebo_ros_control offers it to no controller (a Gazebo "
-                                "model plugin of the robot drives it)");
+                                " has no transmission: gazebo_ros_control offers it to no controller (" +
+                                (owner.empty() ? std::string("a Gazebo model plugin of the robot") : owner) + " drives it)");
   }
   // Model plugins command joints the way Gazebo's Joint API does, whatever the transmission says.
   const bool available = access_ == HardwareAccess::ModelPlugin ||

@@ -3,6 +3,7 @@
 // name during init() and recorded as resource claims (ros_control's hardware interfaces and
 // ClaimResources). Handles are real-time safe: plain pointer reads and writes.
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -130,6 +131,9 @@ class RobotHardware {
   BaseHandle claim_base(std::string_view param_path = {});
   bool claims_base() const { return claims_base_; }
   HardwareAccess access() const { return access_; }
+  // Who drives a Direct joint (mechanism/direct_joints.hpp), for the error a ros_control claim on
+  // it gets: given the joint's index, a description ("Gazebo model plugin 'x' (...)") or "".
+  void set_direct_joint_owner(std::function<std::string(int)> owner) { direct_owner_ = std::move(owner); }
 
  private:
   const mechanism::MechanismModel& model_;
@@ -137,6 +141,7 @@ class RobotHardware {
   HardwareAccess access_;
   std::vector<ResourceClaim> claims_;
   bool claims_base_ = false;
+  std::function<std::string(int)> direct_owner_;
 };
 
 }  // namespace mechsim::control

@@ -26,6 +26,8 @@
 //                     query_state is pr2_controllers_msgs/QueryTrajectoryState
 //   Pr2GripperController  <controller>/command (pr2_controllers_msgs/Pr2GripperCommand),
 //                     <controller>/gripper_action (pr2_controllers_msgs/Pr2GripperCommandAction)
+// position_ and effort_controllers/GripperActionController: <controller>/gripper_cmd
+//                     (control_msgs/GripperCommandAction, gripper_command_action.hpp)
 //   Pr2Odometry       <controller>/odom at odom_publish_rate (default 30 Hz) and odom ->
 //                     base_footprint on /tf unless publish_tf is false (the PR2's parameters)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
@@ -46,6 +48,7 @@
 #include <pr2_controllers_msgs/Pr2GripperCommand.h>
 #include <pr2_controllers_msgs/QueryTrajectoryState.h>
 
+#include "ros/gripper_command_action.hpp"
 #include "ros/pr2_actions.hpp"
 #include "ros/publish_helpers.hpp"
 #include "ros/sim_node.hpp"
@@ -71,6 +74,7 @@ struct SimNode::Binding {
   std::unique_ptr<TrajectoryActionServer> action;
   std::unique_ptr<Pr2TrajectoryActionServer> pr2_action;  // JointTrajectoryActionController only
   std::unique_ptr<GripperActionServer> gripper_action;
+  std::unique_ptr<ControlGripperActionServer> gripper_command_action;  // GripperActionController
   ::ros::ServiceServer service;  // query_state
 };
 
@@ -296,7 +300,8 @@ void SimNode::bind(const std::string& controller) {
             });
         break;
       case PortType::GripperGoal:
-        b->gripper_action = std::make_unique<GripperActionServer>(controller_nh, topic, port);
+        if (b->pr2) b->gripper_action = std::make_unique<GripperActionServer>(controller_nh, topic, port);
+        else b->gripper_command_action = std::make_unique<ControlGripperActionServer>(controller_nh, topic, port);
         break;
       case PortType::TrajectoryQuery:
         b->service = b->pr2 ? advertise_query<pr2_controllers_msgs::QueryTrajectoryState>(controller_nh, topic,
@@ -341,6 +346,10 @@ void SimNode::unbind(const std::string& controller) {
     if (b->gripper_action) {
       b->gripper_action->shutdown();
       b->gripper_action.reset();
+    }
+    if (b->gripper_command_action) {
+      b->gripper_command_action->shutdown();
+      b->gripper_command_action.reset();
     }
     b->subscriber.shutdown();
     b->service.shutdown();

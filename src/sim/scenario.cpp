@@ -261,7 +261,7 @@ Check read_check(const Params& c) {
     if (trajectory) {
       only_keys(p, {"controller", "goal", "max_rms_error", "max_error", "result"});
     } else {
-      only_keys(p, {"controller", "goal", "reached", "stalled", "by", "position", "within"});
+      only_keys(p, {"controller", "goal", "reached", "stalled", "by", "position", "within", "effort", "effort_within"});
     }
     check.controller = p.get<std::string>("controller");
     if (p.has("goal")) {
@@ -301,8 +301,14 @@ Check read_check(const Params& c) {
       } else if (p.has("within")) {
         fail(p.child("within"), "goes with position");
       }
-      if (!check.reached && !check.stalled && !check.finished_by && !check.position) {
-        fail(p, "needs reached, stalled, by and/or position");
+      if (p.has("effort")) {
+        check.effort = p.get<double>("effort");
+        check.effort_within = positive("effort_within");
+      } else if (p.has("effort_within")) {
+        fail(p.child("effort_within"), "goes with effort");
+      }
+      if (!check.reached && !check.stalled && !check.finished_by && !check.position && !check.effort) {
+        fail(p, "needs reached, stalled, by, position and/or effort");
       }
     }
   } else if (kind == "joint") {

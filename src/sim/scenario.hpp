@@ -81,6 +81,8 @@
 //     # within `by` s of being sent, and the gap (m) where it finished within `within` m.
 //     - {gripper: {controller: r_gripper_controller, goal: 1, reached: true, by: 1.0}}
 //     - {gripper: {controller: r_gripper_controller, stalled: true, position: 0.04, within: 0.006}}
+//     # ... and the effort the result reports (N or N m: the gripper's max_effort once it stalls).
+//     - {gripper: {controller: gripper_action_controller, stalled: true, effort: 0.05, effort_within: 0.001}}
 //     # A mechanism joint's position (rad, m) at time `at` (s; default: the end of the run).
 //     - {joint: {name: r_gripper_joint, at: 1.2, position: 0.08, within: 0.002}}
 //     # The largest |error| of a controller's state (control_msgs/JointControllerState: set point
@@ -179,6 +181,8 @@ struct Check {
   std::optional<bool> reached, stalled;                 // Gripper
   std::optional<double> finished_by;                    // Gripper: s after the goal was sent
   std::optional<double> position;                       // Gripper: final gap (m), +- `within`; Joint
+  std::optional<double> effort;                         // Gripper: the result's effort, +- effort_within
+  double effort_within = 0.0;
   std::string joint;                                    // Joint: mechanism joint name
   std::optional<double> at;                             // Joint, LaserRange, ImuTilt: s (absent: the end); Tracking: from
   std::string sensor;                                   // LaserRange, ImuTilt: sensor name
