@@ -38,7 +38,7 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, Testbots,
                                          "diffbot_plugin_turn_90", "skidbot_straight_1m", "skidbot_turn_90",
                                          "skidbot_plugin_straight_1m", "skidbot_plugin_turn_90", "planarbot_straight_1m",
                                          "planarbot_turn_90", "gripper_mimic_close", "gripper_mimic_pid_close",
-                                         "gripper_action_close", "gripper_position_action_close"),
+                                         "gripper_action_close", "gripper_position_action_close", "diffbot_plugin_square"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
 
 }  // namespace
