@@ -75,6 +75,8 @@ ModelPluginTopics::ModelPluginTopics(::ros::NodeHandle& root, SimBridge& bridge)
   if (any_tf) tf_pub_ = root.advertise<tf2_msgs::TFMessage>("/tf", 100);
 }
 
+ModelPluginTopics::~ModelPluginTopics() = default;
+
 void ModelPluginTopics::publish_odometry(Output& out) {
   if (!read_odometry(out.port, out.odom, &out.sequence)) return;
   const OdometryData& o = out.odom;

@@ -28,6 +28,9 @@ namespace mechsim::ros {
 class ModelPluginTopics {
  public:
   ModelPluginTopics(::ros::NodeHandle& root, SimBridge& bridge);
+  ~ModelPluginTopics();
+  ModelPluginTopics(const ModelPluginTopics&) = delete;
+  ModelPluginTopics& operator=(const ModelPluginTopics&) = delete;
   void publish(double time);
   std::size_t plugin_count() const { return plugins_; }
 

@@ -10,6 +10,7 @@
 #include <gmock/gmock.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <mutex>
 
@@ -47,7 +48,7 @@ class TestbotNode : public ::testing::Test {
     ASSERT_TRUE(::ros::master::check()) << "no ROS master";
     test_ = ::testing::UnitTest::GetInstance()->current_test_info()->name();
     ns_ = ns;
-    std::string yaml = "mechsim_" + test_ + ":\n  xacro_args:\n";
+    std::string yaml = "mechsim_" + test_ + ":\n  xacro_args:" + std::string(args.empty() ? " {}" : "") + "\n";
     for (const auto& [k, v] : args) yaml += "    " + k + ": '" + v + "'\n";
     load(write(test_ + "_node.yaml", yaml));
     if (!controllers.empty()) load(kTestbots + "/config/" + controllers);
@@ -275,7 +276,7 @@ TEST_F(TestbotNode, SkidSteerAndPlanarMovePluginsOnTheirTopics) {
   });
   geometry_msgs::Twist forward;
   forward.linear.x = 0.4;
-  const auto [start_t, stop_t] = drive("/skidbot/cmd_vel", forward, 1.0);
+  const auto [start_t, stop_t] = drive("/skidbot/cmd_vel", forward, 2.0);
   settle(1.0);
   const Planar truth = tf("world", "base_footprint");
   std::lock_guard<std::mutex> lock(m);
