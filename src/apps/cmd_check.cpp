@@ -93,8 +93,12 @@ void plugins_step(const CheckOptions& options, CheckContext& context, std::ostre
   const description::RobotModel& robot = context.robot.model;
   const std::vector<control::ModelPluginStatus> statuses = control::model_plugin_status(robot);
   if (statuses.empty()) return;
+  // The description's file is the check's own; each plugin by its line.
   out << "model plugins:\n";
-  for (const control::ModelPluginStatus& s : statuses) out << "  " << control::describe(s) << "\n";
+  for (const control::ModelPluginStatus& s : statuses) {
+    const std::string line = s.origin.substr(s.origin.rfind(':') + 1);
+    out << "  " << s.name << " (" << s.filename << "), line " << line << ": " << s.detail << "\n";
+  }
   control::Params server;
   if (!options.controllers.empty()) server = control::Params::from_yaml_file(options.controllers);
   for (const std::string& key : server.keys()) {  // the robot namespace, as the node reads it

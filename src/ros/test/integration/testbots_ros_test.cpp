@@ -9,6 +9,7 @@
 // stamps), the true pose from the physics (_publish_odom_tf with odom frame "world").
 #include <gmock/gmock.h>
 
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -213,6 +214,39 @@ TEST_F(TestbotNode, DiffDriveControllerDrivesAMetreAndTurnsNinetyDegrees) {
               turned / kDeg, odom_turned / kDeg);
   EXPECT_NEAR(turned, wanted, 1.0 * kDeg);
   EXPECT_NEAR(odom_turned, turned, 0.01 * std::abs(turned));
+}
+
+// allow_multiple_cmd_vel_publishers: false: while two nodes publish cmd_vel the controller takes
+// none of it (ros_controllers' rule); once one is left, it drives.
+TEST_F(TestbotNode, DiffDriveControllerRefusesSeveralCmdVelPublishersWhenAsked) {
+  start("diffbot", {{"drive", "controller"}}, "diffbot_controllers.yaml", "/diffbot");
+  load(write("single_publisher.yaml", "diffbot: {diff_drive_controller: {allow_multiple_cmd_vel_publishers: false}}\n"));
+  ASSERT_TRUE(spawn({"diff_drive_controller"})) << spawner_->log();
+  geometry_msgs::Twist forward;
+  forward.linear.x = 0.5;
+  // Two publishers: this program (connected first, silent) and a rostopic child.
+  ::ros::Publisher mine = nh_.advertise<geometry_msgs::Twist>("/diffbot/diff_drive_controller/cmd_vel", 10);
+  ASSERT_TRUE(wait_until([&] { return mine.getNumSubscribers() > 0; }, 10.0));
+  ChildProcess pub({"/usr/bin/python3", "/usr/bin/rostopic", "pub", "-r", "20", "/diffbot/diff_drive_controller/cmd_vel",
+                    "geometry_msgs/Twist", "{linear: {x: 0.5}}"},
+                   log_dir() + "/rostopic_" + test_ + ".log");
+  // rostopic publishes (so the node's subscriber has it too, give or take a connection).
+  std::atomic<bool> heard{false};
+  ::ros::Subscriber listen = nh_.subscribe<geometry_msgs::Twist>("/diffbot/diff_drive_controller/cmd_vel", 10,
+                                                                 [&](const geometry_msgs::Twist::ConstPtr&) { heard = true; });
+  ASSERT_TRUE(wait_until([&] { return heard.load(); }, 20.0)) << pub.log();
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  const double before = tf("world", "base_footprint").x;
+  drive("/diffbot/diff_drive_controller/cmd_vel", forward, 1.0);
+  const double refused = tf("world", "base_footprint").x - before;
+  pub.stop();
+  listen.shutdown();
+  std::this_thread::sleep_for(std::chrono::seconds(1));  // the node sees one publisher again
+  std::printf("[ figures  ] two cmd_vel publishers, allow_multiple_cmd_vel_publishers false: moved %.4f m\n", refused);
+  EXPECT_LT(std::abs(refused), 0.01);
+  drive("/diffbot/diff_drive_controller/cmd_vel", forward, 1.0);
+  settle(0.5);
+  EXPECT_GT(tf("world", "base_footprint").x, 0.3);  // one publisher: driven
 }
 
 TEST_F(TestbotNode, DiffDrivePluginDrivesWithoutRosControl) {
