@@ -25,7 +25,7 @@
 //   stall_velocity_threshold  0.001 (rad/s or m/s)
 //   stall_timeout             1.0 (s)
 //   gains/<joint>             {p, i, d, i_clamp, ...}: effort_controllers only, required
-//   action_monitor_rate       20 (Hz: the ROS binding's feedback and result rate)
+//   action_monitor_rate       not read: the ROS binding relays feedback and results at 20 Hz (wall)
 // Ports: "gripper_cmd" GripperGoalPort (control_msgs/GripperCommandAction), "state"
 // StatePort<JointControllerState> (set point, position, error, command).
 
