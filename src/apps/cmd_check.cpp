@@ -17,7 +17,9 @@
 #include "apps/commands.hpp"
 #include "control/controller_check.hpp"
 #include "controllers/builtin_controllers.hpp"
+#include "controllers/plugins/model_plugins.hpp"
 #include "mechanism/build_mechanism.hpp"
+#include "mechanism/direct_joints.hpp"
 #include "physics/physics_model.hpp"
 #include "sim/simulation.hpp"
 #include "description/robot_loader.hpp"
@@ -84,10 +86,49 @@ void summary_step(const CheckContext& context, std::ostream& out) {
   out << description::summarize_robot(context.robot.model);
 }
 
+// Every model plugin, simulated or not (an unknown one is named here once and is not an error),
+// then each simulated one configured as the simulation would: bad elements are errors naming the
+// file, the line and the plugin.
+void plugins_step(const CheckOptions& options, CheckContext& context, std::ostream& out) {
+  const description::RobotModel& robot = context.robot.model;
+  const std::vector<control::ModelPluginStatus> statuses = control::model_plugin_status(robot);
+  if (statuses.empty()) return;
+  // The description's file is the check's own; each plugin by its line.
+  out << "model plugins:\n";
+  for (const control::ModelPluginStatus& s : statuses) {
+    const std::string line = s.origin.substr(s.origin.rfind(':') + 1);
+    out << "  " << s.name << " (" << s.filename << "), line " << line << ": " << s.detail << "\n";
+  }
+  control::Params server;
+  if (!options.controllers.empty()) server = control::Params::from_yaml_file(options.controllers);
+  for (const std::string& key : server.keys()) {  // the robot namespace, as the node reads it
+    if (server.child(key).is_map() && !server.child(key).has("type")) server = server.child(key);
+  }
+  try {
+    std::vector<control::ModelPluginBuild> plugins = control::build_model_plugins(robot, control::PluginContext{robot.name, server});
+    mechanism::MechanismModel mechanism = mechanism::build_mechanism(robot);
+    for (const control::ModelPluginBuild& b : plugins) mechanism::add_direct_joints(mechanism, robot, b.joints);
+    mechanism::MechanismState state = mechanism::make_state(mechanism);
+    state.base.floating = robot.root_link != "world";
+    control::ControllerManager manager(mechanism, state, server, control::builtin_controller_registry());
+    for (control::ModelPluginBuild& b : plugins) {
+      const control::ControlResult r = manager.add_model_plugin(b.name, b.filename, std::move(b.controller), b.params, b.origin, 0.0);
+      if (!r) {
+        std::cerr << "mechsim check: error: " << r.error << "\n";
+        context.failed = true;
+      }
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "mechsim check: error: " << e.what() << "\n";
+    context.failed = true;
+  }
+}
+
 void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err, CommandResult& result) {
   CheckContext context;
   load_step(options, context);
   summary_step(context, out);
+  plugins_step(options, context, out);
   meshes_step(context);
   if (!options.controllers.empty()) controllers_step(options, context, out);
   for (const std::string& w : context.warnings) err << "warning: " << w << "\n";

@@ -26,6 +26,9 @@ struct ControllerManager::Entry {
   std::vector<ResourceClaim> claims;
   std::vector<JointHandle> handles;  // every claimed joint, made safe after a failure
   std::vector<int> joint_indices;    // for conflict checks
+  bool model_plugin = false;         // add_model_plugin
+  std::string origin;                // model plugins: "file:line" of the <plugin> element
+  bool claims_base = false;
 
   std::atomic<ControllerLifecycle> state{ControllerLifecycle::Initialized};
   std::atomic<std::uint64_t> updates{0};
@@ -98,6 +101,82 @@ void ControllerManager::publish_list(std::vector<Entry*> list) {
   while (list_in_use_.load() == current) std::this_thread::sleep_for(std::chrono::microseconds(50));
 }
 
+namespace {
+
+// "controller 'x'" or "Gazebo model plugin 'p' (libgazebo_ros_diff_drive.so, robot.urdf:12)".
+template <class E>
+std::string describe_entry(const E& e) {
+  if (!e.model_plugin) return "controller '" + e.name + "'";
+  return "Gazebo model plugin '" + e.name + "' (" + e.type + (e.origin.empty() ? "" : ", " + e.origin) + ")";
+}
+
+}  // namespace
+
+std::string ControllerManager::claim_conflict(const Entry& entry) const {
+  for (const auto& other : entries_) {
+    if (other.get() == &entry || (!other->model_plugin && !entry.model_plugin)) continue;  // ros_control's rule: at switch
+    for (int j : entry.joint_indices) {
+      if (std::find(other->joint_indices.begin(), other->joint_indices.end(), j) == other->joint_indices.end()) continue;
+      return "joint '" + model_.joints[static_cast<std::size_t>(j)].name + "' is claimed by both " + describe_entry(*other) +
+             " and " + describe_entry(entry) + "; a model plugin's joints are its own for the whole run";
+    }
+    if (entry.claims_base && other->claims_base) {
+      return "the floating base is claimed by both " + describe_entry(*other) + " and " + describe_entry(entry);
+    }
+  }
+  return {};
+}
+
+ControlResult ControllerManager::add_model_plugin(const std::string& name, const std::string& type,
+                                                  std::unique_ptr<Controller> controller, const Params& params,
+                                                  const std::string& origin, double time) {
+  std::lock_guard<std::mutex> lock(config_mutex_);
+  auto entry = std::make_unique<Entry>();
+  entry->name = name;
+  entry->type = type;
+  entry->model_plugin = true;
+  entry->origin = origin;
+  const std::string what = describe_entry(*entry);
+  if (name.empty()) return ControlResult::failure(what + ": a plugin needs a name");
+  if (find(name) != nullptr) {
+    return ControlResult::failure("could not load " + what + ": " + describe_entry(*find(name)) + " has the same name");
+  }
+  entry->controller = std::move(controller);
+  RobotHardware hardware(model_, state_, HardwareAccess::ModelPlugin);
+  std::string error;
+  bool ok = false;
+  try {
+    ok = entry->controller->init(hardware, params, error);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (!ok) return ControlResult::failure("could not load " + what + ": " + (error.empty() ? "init() returned false" : error));
+  entry->claims = hardware.claims();
+  entry->claims_base = hardware.claims_base();
+  for (const ResourceClaim& claim : entry->claims) {
+    for (const std::string& joint : claim.joints) {
+      const int index = hardware.find_joint(joint);
+      entry->joint_indices.push_back(index);
+      entry->handles.emplace_back(&model_.joints[static_cast<std::size_t>(index)],
+                                  &state_.joints[static_cast<std::size_t>(index)], claim.interface);
+    }
+  }
+  if (std::string conflict = claim_conflict(*entry); !conflict.empty()) {
+    return ControlResult::failure("could not load " + what + ": " + conflict);
+  }
+  try {
+    entry->controller->starting(time);
+  } catch (const std::exception& e) {
+    return ControlResult::failure("could not start " + what + ": " + e.what());
+  }
+  entry->state.store(ControllerLifecycle::Running);
+  std::vector<Entry*> list = lists_[current_list_.load()];
+  list.push_back(entry.get());
+  entries_.push_back(std::move(entry));
+  publish_list(std::move(list));
+  return {};
+}
+
 ControlResult ControllerManager::load_controller(const std::string& name) {
   std::lock_guard<std::mutex> lock(config_mutex_);
   const std::string path = join_param_path(params_.path(), name);
@@ -128,6 +207,15 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   join(registry_.types()));
   }
   RobotHardware hardware(model_, state_);
+  hardware.set_direct_joint_owner([this](int joint) {  // under config_mutex_, as load_controller
+    std::string owners;
+    for (const auto& e : entries_) {
+      if (!e->model_plugin) continue;
+      if (std::find(e->joint_indices.begin(), e->joint_indices.end(), joint) == e->joint_indices.end()) continue;
+      owners += (owners.empty() ? "" : ", ") + describe_entry(*e);
+    }
+    return owners;
+  });
   std::string error;
   bool ok = false;
   try {
@@ -150,6 +238,9 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   &state_.joints[static_cast<std::size_t>(index)], claim.interface);
     }
   }
+  if (std::string conflict = claim_conflict(*entry); !conflict.empty()) {
+    return ControlResult::failure("could not load controller '" + name + "': " + conflict);
+  }
   std::vector<Entry*> list = lists_[current_list_.load()];
   list.push_back(entry.get());
   entries_.push_back(std::move(entry));
@@ -162,6 +253,10 @@ ControlResult ControllerManager::unload_controller(const std::string& name) {
   Entry* entry = find(name);
   if (entry == nullptr) {
     return ControlResult::failure("could not unload controller '" + name + "': no controller with this name is loaded");
+  }
+  if (entry->model_plugin) {
+    return ControlResult::failure("could not unload " + describe_entry(*entry) +
+                                  ": a model plugin runs for the life of the simulation");
   }
   if (switch_pending()) {
     auto in = [&](const std::vector<Entry*>& v) { return std::find(v.begin(), v.end(), entry) != v.end(); };
@@ -205,6 +300,8 @@ SwitchResult ControllerManager::switch_controllers(const std::vector<std::string
       problem = "could not stop controller '" + name + "': no controller with this name is loaded";
     } else if (e->state.load() != ControllerLifecycle::Running) {
       problem = "could not stop controller '" + name + "': it is not running";
+    } else if (e->model_plugin && std::find(start.begin(), start.end(), name) == start.end()) {
+      problem = "could not stop " + describe_entry(*e) + ": a model plugin runs for the life of the simulation";
     }
     if (!problem.empty()) {
       if (strict) return refuse(problem);
@@ -303,6 +400,9 @@ std::vector<ControllerInfo> ControllerManager::list_controllers() const {
     info.type = e->type;
     info.state = e->state.load();
     info.claims = e->claims;
+    info.model_plugin = e->model_plugin;
+    info.origin = e->origin;
+    info.claims_base = e->claims_base;
     info.statistics = read_statistics(e->updates.load(), e->time_sum_ns.load(), e->time_max_ns.load(),
                                       e->overruns.load(), e->failures.load());
     {
@@ -358,7 +458,8 @@ void ControllerManager::fail(Entry& entry, const char* prefix, const char* reaso
     // Already failing: stopping() gets one chance, the controller is stopped regardless.
   }
   entry.state.store(ControllerLifecycle::Stopped);
-  // Leave its joints safe: no effort, hold position, zero velocity.
+  // Leave its joints safe: no effort, hold position, zero velocity; the base to the physics.
+  if (entry.claims_base) state_.base_command.active = false;
   for (JointHandle& h : entry.handles) {
     switch (h.interface()) {
       case HardwareInterface::Effort: h.set_command(0.0); break;

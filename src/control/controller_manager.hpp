@@ -66,6 +66,11 @@ struct ControllerInfo {
   // simulation does not tick): it will start, or stop, then.
   bool start_pending = false;
   bool stop_pending = false;
+  // A Gazebo model plugin (add_model_plugin): `type` is its library file name, `origin` where its
+  // <plugin> element is ("file:line").
+  bool model_plugin = false;
+  std::string origin;
+  bool claims_base = false;  // moves the floating base (control/hardware.hpp)
 };
 
 struct ManagerStatistics {
@@ -109,7 +114,18 @@ class ControllerManager {
   // Loads `name` (parameters at <namespace>/<name>, type at <namespace>/<name>/type). Errors
   // name the controller, the parameter path, and the joint where one is at fault.
   ControlResult load_controller(const std::string& name);
-  // Only a controller that is not running (and not part of a pending switch).
+  // A Gazebo model plugin (DESIGN.md, "Gazebo plugins in a description"): a controller built
+  // from the description's <plugin> element instead of the YAML. `controller` is initialised over
+  // `params` with model-plugin hardware access (control/hardware.hpp: any joint of the mechanism,
+  // any mode, the floating base) and started at once at `time`, as Gazebo loads a model's plugins
+  // with the model: call it before the simulation ticks. It then runs for the life of the
+  // manager: switch_controllers() and unload_controller() refuse to stop or unload it (a restart,
+  // the same name in stop and start, is allowed: a simulation reset). `origin` ("file:line" of
+  // the <plugin> element) appears in every message about it. Refused, naming both, when a joint
+  // or the base it claims is claimed by another plugin or by a loaded controller.
+  ControlResult add_model_plugin(const std::string& name, const std::string& type, std::unique_ptr<Controller> controller,
+                                 const Params& params, const std::string& origin, double time);
+  // Only a controller that is not running (and not part of a pending switch), and not a model plugin.
   ControlResult unload_controller(const std::string& name);
   SwitchResult switch_controllers(const std::vector<std::string>& start, const std::vector<std::string>& stop,
                                   SwitchStrictness strictness);
@@ -135,6 +151,8 @@ class ControllerManager {
  private:
   struct Entry;
   Entry* find(const std::string& name) const;
+  // Why `entry` may not claim what it claims beside the others loaded ("" when it may).
+  std::string claim_conflict(const Entry& entry) const;
   void publish_list(std::vector<Entry*> list);
   void run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept;
   void apply_switch(double time) noexcept;

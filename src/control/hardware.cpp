@@ -56,8 +56,9 @@ double JointHandle::command() const noexcept {
   return 0.0;
 }
 
-RobotHardware::RobotHardware(const mechanism::MechanismModel& model, mechanism::MechanismState& state)
-    : model_(model), state_(state) {
+RobotHardware::RobotHardware(const mechanism::MechanismModel& model, mechanism::MechanismState& state,
+                             HardwareAccess access)
+    : model_(model), state_(state), access_(access) {
   if (state_.joints.size() != model_.joints.size()) {
     throw ControllerConfigError("mechanism state has " + std::to_string(state_.joints.size()) +
                                 " joints but the model has " + std::to_string(model_.joints.size()));
@@ -107,7 +108,16 @@ JointHandle RobotHardware::claim_joint(const std::string& joint, HardwareInterfa
                                 "; the robot's joints: " + known_joints(model_));
   }
   const mechanism::JointInfo& info = model_.joints[static_cast<std::size_t>(index)];
-  if (std::find(info.interfaces.begin(), info.interfaces.end(), iface) == info.interfaces.end()) {
+  if (info.role == mechanism::JointRole::Direct && access_ == HardwareAccess::RosControl) {
+    const std::string owner = direct_owner_ ? direct_owner_(index) : std::string();
+    throw ControllerConfigError("joint '" + joint + "'" + where(param_path) +
+                                " has no transmission: gazebo_ros_control offers it to no controller (" +
+                                (owner.empty() ? std::string("a Gazebo model plugin of the robot") : owner) + " drives it)");
+  }
+  // Model plugins command joints the way Gazebo's Joint API does, whatever the transmission says.
+  const bool available = access_ == HardwareAccess::ModelPlugin ||
+                       std::find(info.interfaces.begin(), info.interfaces.end(), iface) != info.interfaces.end();
+  if (!available) {
     std::string offered;
     for (HardwareInterface i : info.interfaces) offered += (offered.empty() ? "" : ", ") + std::string(interface_name(i));
     throw ControllerConfigError("joint '" + joint + "'" + where(param_path) + " has no " + interface_name(iface) +
@@ -120,6 +130,17 @@ JointHandle RobotHardware::claim_joint(const std::string& joint, HardwareInterfa
   }
   if (std::find(claim->joints.begin(), claim->joints.end(), joint) == claim->joints.end()) claim->joints.push_back(joint);
   return JointHandle(&info, &state_.joints[static_cast<std::size_t>(index)], iface);
+}
+
+BaseHandle RobotHardware::claim_base(std::string_view param_path) {
+  if (access_ != HardwareAccess::ModelPlugin) {
+    throw ControllerConfigError("only a Gazebo model plugin may move the robot's base" + where(param_path));
+  }
+  if (!state_.base.floating) {
+    throw ControllerConfigError("the robot is fixed to the world: it has no floating base to move" + where(param_path));
+  }
+  claims_base_ = true;
+  return BaseHandle(&state_.base, &state_.base_command);
 }
 
 }  // namespace mechsim::control

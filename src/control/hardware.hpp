@@ -3,6 +3,7 @@
 // name during init() and recorded as resource claims (ros_control's hardware interfaces and
 // ClaimResources). Handles are real-time safe: plain pointer reads and writes.
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -61,12 +62,40 @@ class JointHandle {
   // velocity rad/s or m/s) and selects that interface for the joint this tick.
   void set_command(double value) noexcept;
   double command() const noexcept;
+  // Bounds the physics' effort on this joint in every mode (N m or N; 0: the joint's own), as a
+  // Gazebo plugin's joint "fmax" does. Stays until changed (JointState::effort_limit).
+  void set_effort_limit(double limit) noexcept { state_->effort_limit = limit; }
 
  private:
   const mechanism::JointInfo* info_ = nullptr;
   mechanism::JointState* state_ = nullptr;
   HardwareInterface iface_ = HardwareInterface::Effort;
 };
+
+// Read/write access to the floating base, a physics port (mechanism/base_state.hpp): its state
+// as the physics last reported it and a planar velocity command the physics applies before its
+// next step. Real-time safe: plain reads and writes.
+class BaseHandle {
+ public:
+  BaseHandle() = default;
+  BaseHandle(const mechanism::BaseState* state, mechanism::BaseVelocityCommand* command) : state_(state), command_(command) {}
+  const mechanism::BaseState& state() const noexcept { return *state_; }
+  // Linear (vx, vy) in m/s and angular wz in rad/s, all in the world frame (see BaseVelocityCommand).
+  void set_planar_velocity(double vx, double vy, double wz) noexcept { *command_ = {true, vx, vy, wz}; }
+  // The physics leaves the base alone again.
+  void release() noexcept { command_->active = false; }
+  bool valid() const noexcept { return command_ != nullptr; }
+
+ private:
+  const mechanism::BaseState* state_ = nullptr;
+  mechanism::BaseVelocityCommand* command_ = nullptr;
+};
+
+// Who is asking. ros_control controllers see what gazebo_ros_control's hardware offers: the joints
+// transmissions drive, through the interfaces the transmissions name. Gazebo model plugins call
+// the physics' joints directly: they may command any joint of the mechanism (Direct joints
+// included, mechanism/direct_joints.hpp) in any mode, and claim the floating base.
+enum class HardwareAccess : std::uint8_t { RosControl, ModelPlugin };
 
 struct ResourceClaim {
   HardwareInterface interface = HardwareInterface::Effort;
@@ -76,7 +105,8 @@ struct ResourceClaim {
 // One controller's view of the robot during init(). Not thread-safe; configuration time only.
 class RobotHardware {
  public:
-  RobotHardware(const mechanism::MechanismModel& model, mechanism::MechanismState& state);
+  RobotHardware(const mechanism::MechanismModel& model, mechanism::MechanismState& state,
+                HardwareAccess access = HardwareAccess::RosControl);
 
   // Claims `joint` for writing through `iface`. Throws ControllerConfigError naming the joint,
   // `param_path` (the parameter that named it) and what is available when the joint is unknown
@@ -92,10 +122,26 @@ class RobotHardware {
 
   const std::vector<ResourceClaim>& claims() const { return claims_; }
 
+  // The floating base's state (read only, no claim). BaseState::floating is false for a robot
+  // fixed to the world, or when the caller built no physics (tests).
+  const mechanism::BaseState& base_state() const { return state_.base; }
+  // Claims the floating base for velocity commands. Model plugins only; throws
+  // ControllerConfigError naming `param_path` for a ros_control controller or a robot fixed to
+  // the world.
+  BaseHandle claim_base(std::string_view param_path = {});
+  bool claims_base() const { return claims_base_; }
+  HardwareAccess access() const { return access_; }
+  // Who drives a Direct joint (mechanism/direct_joints.hpp), for the error a ros_control claim on
+  // it gets: given the joint's index, a description ("Gazebo model plugin 'x' (...)") or "".
+  void set_direct_joint_owner(std::function<std::string(int)> owner) { direct_owner_ = std::move(owner); }
+
  private:
   const mechanism::MechanismModel& model_;
   mechanism::MechanismState& state_;
+  HardwareAccess access_;
   std::vector<ResourceClaim> claims_;
+  bool claims_base_ = false;
+  std::function<std::string(int)> direct_owner_;
 };
 
 }  // namespace mechsim::control

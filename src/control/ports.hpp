@@ -39,6 +39,7 @@ enum class PortKind : std::uint8_t {
   GripperGoal,          // GripperGoalPort (control_msgs/GripperCommand action), pr2_gripper_ports.hpp
   PeriodicCommand,      // PeriodicCommandPort (pr2_msgs/PeriodicCmd), laser_scanner_traj_controller.hpp
   TrajectoryQuery,      // TrajectoryQueryPort (query_state), controllers/trajectory/trajectory_query.hpp
+  TwistState,           // StatePort<TwistSnapshot> (geometry_msgs/TwistStamped: diff_drive_controller's cmd_vel_out)
 };
 
 class Port {
@@ -180,6 +181,13 @@ struct JointStateSnapshot {
   std::vector<double> effort;    // N m or N (measured)
 };
 
+// A twist with its time and frame (geometry_msgs/TwistStamped).
+struct TwistSnapshot {
+  double stamp = 0.0;  // s
+  std::string frame_id;
+  Twist twist;         // m/s, rad/s in frame_id
+};
+
 template <class T>
 constexpr PortKind state_port_kind();
 template <>
@@ -188,6 +196,8 @@ template <>
 constexpr PortKind state_port_kind<JointGroupControllerState>() { return PortKind::JointGroupState; }
 template <>
 constexpr PortKind state_port_kind<JointStateSnapshot>() { return PortKind::JointStates; }
+template <>
+constexpr PortKind state_port_kind<TwistSnapshot>() { return PortKind::TwistState; }
 
 template <class T>
 class StatePort : public Port {

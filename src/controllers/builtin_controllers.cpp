@@ -4,9 +4,11 @@
 #include "controllers/joint/joint_state_controller.hpp"
 #include "controllers/joint/pid_joint_controllers.hpp"
 #include "controllers/trajectory/trajectory_controller.hpp"
+#include "controllers/drive/diff_drive_controller.hpp"
 #include "controllers/drive/rover_drive_controller.hpp"
 #include "controllers/drive/pr2_base_controller.hpp"
 #include "controllers/drive/pr2_odometry.hpp"
+#include "controllers/gripper/gripper_action_controller.hpp"
 #include "controllers/gripper/pr2_gripper_controller.hpp"
 #include "controllers/pr2/laser_scanner_traj_controller.hpp"
 
@@ -56,11 +58,14 @@ void register_builtin_controllers(ControllerRegistry& r) {
   r.add("robot_mechanism_controllers/JointTrajectoryActionController", trajectory(HI::Effort, ControllerFlavour::Pr2));
 
   r.add(kRoverDriveControllerType, [] { return std::make_unique<RoverDriveController>(); });
+  r.add(kDiffDriveControllerType, [] { return std::make_unique<DiffDriveController>(); });
 
   r.add(kPr2BaseController2Type, [] { return std::make_unique<Pr2BaseController>(); });
   r.add(kPr2BaseControllerType, [] { return std::make_unique<Pr2BaseController>(); });
   r.add(kPr2OdometryType, [] { return std::make_unique<Pr2OdometryController>(); });
   r.add(kPr2GripperControllerType, [] { return std::make_unique<Pr2GripperController>(); });
+  r.add(kPositionGripperActionType, [] { return std::make_unique<GripperActionController>(HI::Position); });
+  r.add(kEffortGripperActionType, [] { return std::make_unique<GripperActionController>(HI::Effort); });
   r.add(kLaserScannerTrajControllerType, [] { return std::make_unique<LaserScannerTrajController>(); });
 }
 

@@ -1,11 +1,15 @@
 #include "description/package_path.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <set>
 #include <system_error>
+
+#include <tinyxml2.h>
 
 namespace mechsim::description {
 namespace fs = std::filesystem;
@@ -41,7 +45,57 @@ std::optional<std::string> search_tree(const fs::path& root, const std::string& 
   return std::nullopt;
 }
 
+// Every package folder under `root` (a package holds no other), at most `depth` levels down.
+void collect_packages(const fs::path& root, int depth, std::vector<fs::path>& out) {
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) return;
+  if (fs::exists(root / "package.xml", ec)) {
+    out.push_back(root);
+    return;
+  }
+  if (depth <= 0) return;
+  std::vector<fs::path> children;
+  for (const fs::directory_entry& entry : fs::directory_iterator(root, ec)) {
+    if (entry.is_directory(ec) && !entry.path().filename().string().starts_with(".")) children.push_back(entry.path());
+  }
+  std::sort(children.begin(), children.end());  // the file system's order is no order
+  for (const fs::path& child : children) collect_packages(child, depth - 1, out);
+}
+
 }  // namespace
+
+std::vector<std::string> gazebo_ros_exports(const std::string& attribute) {
+  std::vector<std::string> out;
+  const char* env = std::getenv("ROS_PACKAGE_PATH");
+  if (env == nullptr) return out;
+  std::vector<fs::path> packages;
+  std::stringstream paths(env);
+  std::string entry;
+  while (std::getline(paths, entry, ':')) {
+    if (!entry.empty()) collect_packages(entry, 6, packages);
+  }
+  std::set<std::string> seen;
+  for (const fs::path& dir : packages) {
+    std::error_code ec;
+    const std::string canonical = fs::weakly_canonical(dir, ec).string();
+    if (!seen.insert(canonical).second) continue;
+    tinyxml2::XMLDocument doc;
+    if (doc.LoadFile((dir / "package.xml").string().c_str()) != tinyxml2::XML_SUCCESS) continue;
+    const tinyxml2::XMLElement* package = doc.FirstChildElement("package");
+    const tinyxml2::XMLElement* exports = package != nullptr ? package->FirstChildElement("export") : nullptr;
+    for (const tinyxml2::XMLElement* g = exports != nullptr ? exports->FirstChildElement("gazebo_ros") : nullptr; g != nullptr;
+         g = g->NextSiblingElement("gazebo_ros")) {
+      const char* value = g->Attribute(attribute.c_str());
+      if (value == nullptr) continue;
+      std::string path = value;
+      for (std::size_t at = path.find("${prefix}"); at != std::string::npos; at = path.find("${prefix}")) {
+        path.replace(at, 9, dir.string());
+      }
+      out.push_back(path);
+    }
+  }
+  return out;
+}
 
 std::optional<std::string> find_package(const std::string& name, const PackageMap& explicit_packages) {
   // Absolute, as rospack returns it: includes resolve relative names against the including file.

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace mechsim::description {
 
@@ -18,5 +19,14 @@ std::optional<std::string> find_package(const std::string& name, const PackageMa
 // `base_dir`). Returns nullopt when the package is unknown.
 std::optional<std::string> resolve_uri(const std::string& uri, const PackageMap& explicit_packages,
                                        const std::string& base_dir);
+
+// gazebo_ros' exports: the `attribute` (gazebo_model_path, gazebo_media_path, gazebo_plugin_path)
+// of the <gazebo_ros> element in the <export> of every package.xml under ROS_PACKAGE_PATH, with
+// ${prefix} replaced by the package's folder, as `rospack plugins --attrib=ATTRIBUTE gazebo_ros`
+// gives them to gazebo_ros' launch scripts (which add them to GAZEBO_MODEL_PATH and
+// GAZEBO_RESOURCE_PATH). ROS_PACKAGE_PATH order, then the order its folders are crawled in; a
+// package found twice counts once. rospack lists only packages that depend on gazebo_ros; mechsim
+// takes every package that exports the attribute.
+std::vector<std::string> gazebo_ros_exports(const std::string& attribute);
 
 }  // namespace mechsim::description

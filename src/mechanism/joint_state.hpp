@@ -23,6 +23,10 @@ struct JointState {
   // one-period reachability bound (ros_control's joint-limits semantics). NaN when the joint
   // was not position-commanded on the previous tick.
   double last_position_command = std::numeric_limits<double>::quiet_NaN();  // rad or m
+  // N m or N: bound of the physics' effort for this joint in every command mode (a Gazebo model
+  // plugin's wheelTorque / maxEffort, as Gazebo's joint "fmax"); 0 keeps the joint's own
+  // (its URDF effort limit).
+  double effort_limit = 0.0;
 };
 
 struct ActuatorState {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "description/robot_model.hpp"
+#include "mechanism/base_state.hpp"
 #include "mechanism/joint_state.hpp"
 #include "mechanism/transmission.hpp"
 
@@ -44,7 +45,8 @@ struct ActuatorInfo {
 
 struct MechanismModel {
   std::string source;                  // the description's file, for messages
-  std::vector<JointInfo> joints;       // only joints driven by a transmission (+ passive ones)
+  // Joints driven by a transmission (+ passive ones), then the Direct joints of model plugins.
+  std::vector<JointInfo> joints;
   std::vector<ActuatorInfo> actuators;
   std::vector<std::unique_ptr<const Transmission>> transmissions;
 
@@ -57,6 +59,9 @@ struct MechanismState {
   std::vector<ActuatorState> actuators;  // indexed like MechanismModel::actuators
   // Non-finite commands (NaN, inf) that enforce_safety_limits replaced since the state was made.
   std::uint64_t rejected_commands = 0;
+  // The floating base (a physics port: mechanism/base_state.hpp).
+  BaseState base;
+  BaseVelocityCommand base_command;
 };
 
 // A state sized for `model`, everything at rest and zero.
@@ -66,7 +71,9 @@ MechanismState make_state(const MechanismModel& model);
 // position/velocity servo of its command_mode) after propagate_actuator_to_joint_effort. Passive
 // joints carry the finger commands of the PR2 gripper (a backend that moves the fingers instead
 // of the gap joint uses those and not the gap's); simulated joints carry the PR2 Gazebo screw
-// torque and are for a backend that models the screw.
-inline bool physics_applies_command(const JointInfo& joint) { return joint.role == JointRole::Actuated; }
+// torque and are for a backend that models the screw. Direct joints take their model plugin's.
+inline bool physics_applies_command(const JointInfo& joint) {
+  return joint.role == JointRole::Actuated || joint.role == JointRole::Direct;
+}
 
 }  // namespace mechsim::mechanism

@@ -63,9 +63,11 @@ double limit_velocity_command(const JointInfo& joint, double command) {
   return clamp_to(command, -joint.limits->velocity, joint.limits->velocity);
 }
 
-int enforce_joint_limits(const JointInfo& joint, JointState& state, double period) {
+namespace {
+
+// Replaces non-finite commands (effort and velocity by 0, position by `reference`); returns how many.
+int replace_non_finite(JointState& state, double reference) {
   int rejected = 0;
-  const double reference = std::isfinite(state.last_position_command) ? state.last_position_command : state.position;
   if (!std::isfinite(state.commanded_effort)) {
     state.commanded_effort = 0.0;
     ++rejected;
@@ -78,6 +80,14 @@ int enforce_joint_limits(const JointInfo& joint, JointState& state, double perio
     state.commanded_position = std::isfinite(reference) ? reference : 0.0;
     ++rejected;
   }
+  return rejected;
+}
+
+}  // namespace
+
+int enforce_joint_limits(const JointInfo& joint, JointState& state, double period) {
+  const double reference = std::isfinite(state.last_position_command) ? state.last_position_command : state.position;
+  const int rejected = replace_non_finite(state, reference);
   const EffortBounds b = effort_bounds(joint, state);
   state.commanded_effort = clamp_to(state.commanded_effort, b.low, b.high);
   state.commanded_velocity = limit_velocity_command(joint, state.commanded_velocity);
@@ -93,6 +103,12 @@ int enforce_joint_limits(const JointInfo& joint, JointState& state, double perio
 void enforce_safety_limits(const MechanismModel& model, MechanismState& state, double period) {
   for (std::size_t i = 0; i < model.joints.size(); ++i) {
     const JointInfo& joint = model.joints[i];
+    // A model plugin's joint has no safety limits (Gazebo's plugins set joints directly), but a
+    // NaN never reaches the physics.
+    if (joint.role == JointRole::Direct) {
+      state.rejected_commands += static_cast<std::uint64_t>(replace_non_finite(state.joints[i], state.joints[i].position));
+      continue;
+    }
     if (joint.role != JointRole::Actuated) continue;
     state.rejected_commands += static_cast<std::uint64_t>(enforce_joint_limits(joint, state.joints[i], period));
   }

@@ -20,6 +20,7 @@ enum class JointRole : std::uint8_t {
   Actuated,           // driven by the transmission; controllers command it
   Passive,            // moved by the transmission (PR2 gripper fingers), never commanded
   SimulatedActuated,  // PR2 simulated_actuated_joint (Gazebo screw joint); the physics may ignore it
+  Direct,             // no transmission: a Gazebo model plugin drives or reads it (mechanism/direct_joints.hpp)
 };
 
 class Transmission {

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "description/mimic_plugin.hpp"
 #include "physics/physics_error.hpp"
 #include "physics/transform.hpp"
 
@@ -352,8 +353,19 @@ class Planner {
   }
 
   void plan_mimics() {
+    // A mimic joint plugin sets its follower itself in Gazebo (which ignores URDF <mimic>): a
+    // follower the plugin positions is a constraint here too, one it drives with a PID is left to
+    // the plugin's controller, and either way the URDF tag of that follower gives no constraint.
+    const std::vector<description::MimicPluginSpec> plugins = description::mimic_plugins(robot_);
+    std::set<std::string> plugin_followers;
+    for (const description::MimicPluginSpec& m : plugins) {
+      plugin_followers.insert(m.mimic_joint);
+      if (m.has_pid) continue;
+      if (!simulated_one_dof(m.mimic_joint) || !simulated_one_dof(m.joint)) continue;  // the controller says why
+      plan_.mimics.push_back({m.mimic_joint, m.joint, m.multiplier, m.offset, 2.0 * options_.timestep});
+    }
     for (const description::Joint& joint : robot_.joints) {
-      if (!joint.mimic) continue;
+      if (!joint.mimic || plugin_followers.count(joint.name) > 0) continue;
       if (!simulated_one_dof(joint.name) || !simulated_one_dof(joint.mimic->joint)) {
         plan_.warnings.push_back("joint '" + joint.name + "' mimics '" + joint.mimic->joint +
                                  "', but one of them is not a simulated 1-DOF joint: no constraint");

@@ -65,6 +65,10 @@ struct LinkFrame {
 struct PlannedMimic {
   std::string follower, leader;  // MuJoCo joint names
   double multiplier = 1.0, offset = 0.0;
+  // s: the constraint's MuJoCo solref time constant; 0: MuJoCo's default (URDF <mimic>). A mimic
+  // joint plugin sets the follower's position every step in Gazebo: its constraint is as stiff as
+  // the step allows (two timesteps).
+  double time_constant = 0.0;
 };
 
 struct PlannedDifferential {

@@ -137,10 +137,13 @@ class Writer {
     }
     if (!plan_.mimics.empty()) {
       x_ << "  <equality>\n";
-      for (const PlannedMimic& m : plan_.mimics)
+      for (const PlannedMimic& m : plan_.mimics) {
         x_ << "    <joint name=\"mimic:" << escape(m.follower) << "\" joint1=\"" << escape(m.follower)
            << "\" joint2=\"" << escape(m.leader) << "\" polycoef=\"" << num(m.offset) << " " << num(m.multiplier)
-           << " 0 0 0\"/>\n";
+           << " 0 0 0\"";
+        if (m.time_constant > 0.0) x_ << " solref=\"" << num(m.time_constant) << " 1\"";
+        x_ << "/>\n";
+      }
       x_ << "  </equality>\n";
     }
     write_actuators();

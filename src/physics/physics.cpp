@@ -56,6 +56,7 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
   const std::size_t nj = model_->joints().size();
   data_->modes.assign(nj, JointMode::Effort);
   data_->gains.assign(nj, ServoGains{});
+  data_->motor_integral.assign(nj, std::nan(""));
   data_->saved_qpos.resize(static_cast<std::size_t>(shared->nq));
   data_->saved_qvel.resize(static_cast<std::size_t>(shared->nv));
   data_->saved_act.resize(static_cast<std::size_t>(std::max(shared->na, 1)));
@@ -80,6 +81,7 @@ void Physics::reset() {
   const mjModel* shared = model_->impl().model;
   copy_n(m->actuator_gainprm, shared->actuator_gainprm, shared->nu * mjNGAIN);
   copy_n(m->actuator_biasprm, shared->actuator_biasprm, shared->nu * mjNBIAS);
+  std::fill(data_->motor_integral.begin(), data_->motor_integral.end(), std::nan(""));
   std::fill(data_->modes.begin(), data_->modes.end(), JointMode::Effort);
   std::fill(data_->gains.begin(), data_->gains.end(), ServoGains{});
   const ArenaUse use = arena_use();
@@ -192,7 +194,21 @@ void Physics::set_position_command(std::size_t j, double position) {
 
 void Physics::set_velocity_command(std::size_t j, double velocity) {
   const JointInfo& info = model_->joints()[j];
-  if (info.actuator >= 0 && data_->modes[j] == JointMode::Velocity) data_->d->ctrl[info.actuator] = velocity;
+  if (info.actuator < 0 || data_->modes[j] != JointMode::Velocity) return;
+  double& integral = data_->motor_integral[j];
+  if (!std::isnan(integral) && std::isfinite(velocity)) {
+    // The motor: the set point's integral correction, bounded by what the effort bound lets the
+    // servo use (none without a bound).
+    const mjModel* m = data_->m;
+    integral += (velocity - data_->d->qvel[info.dof_adr]) * m->opt.timestep / kMotorIntegralTime;
+    const double kv = data_->gains[j].kv;
+    if (m->actuator_forcelimited[info.actuator] && kv > 0.0) {
+      const double most = m->actuator_forcerange[2 * info.actuator + 1] / kv;
+      integral = std::clamp(integral, -most, most);
+    }
+    velocity += integral;
+  }
+  data_->d->ctrl[info.actuator] = velocity;
 }
 
 void Physics::set_armature(std::size_t j, double armature) {
@@ -251,6 +267,11 @@ void Physics::set_mode(std::size_t j, JointMode mode, ServoGains gains) {
   const JointInfo& info = model_->joints()[j];
   if (info.actuator < 0) return;
   mjModel* m = data_->m;
+  data_->motor_integral[j] = mode == JointMode::Velocity && gains.motor ? 0.0 : std::nan("");
+  if (mode == JointMode::Velocity && gains.motor && gains.kv <= 0.0) {
+    ensure_constants();  // dof_M0
+    gains.kv = 0.5 * (m->dof_M0[info.dof_adr] + m->dof_armature[info.dof_adr]) / m->opt.timestep;
+  }
   if (gains.kp <= 0.0 && gains.kv <= 0.0 && mode != JointMode::Effort) {
     ensure_constants();  // dof_M0
     // Critically damped 10 Hz servo on the joint's inertia at the spawn configuration.

@@ -26,9 +26,19 @@ namespace mechsim::physics {
 // effort limit like every other mode.
 enum class JointMode { Effort, Position, Velocity };
 
+// s: time constant of a velocity motor's integral correction (ServoGains::motor).
+inline constexpr double kMotorIntegralTime = 0.2;
+
 struct ServoGains {
   double kp = 0.0;  // N m/rad or N/m (position mode)
   double kv = 0.0;  // N m s/rad or N s/m (position mode: damping; velocity mode: gain)
+  // Velocity mode only: a joint motor (Gazebo's "vel" + "fmax") rather than a plain servo: the
+  // servo's set point gets an integral correction (time constant kMotorIntegralTime), so that it
+  // reaches the commanded speed under load unless the joint's effort bound stops it (the
+  // correction is bounded by what that bound lets the servo use). kv 0: the stiffest gain an
+  // explicit servo keeps stable as the joint's inertia changes: half the joint's inertia at the
+  // spawn configuration over the timestep (a one-step servo for half of it).
+  bool motor = false;
 };
 
 enum class StepCode {
@@ -145,7 +155,7 @@ class Physics {
   std::size_t joint_count() const { return model_->joints().size(); }
   double position(std::size_t joint) const;  // rad or m
   double velocity(std::size_t joint) const;  // rad/s or m/s
-  // Generalised force on the joint from its actuator (effort command or servo), N m or N.
+  // Generalised force on the joint from its actuator (effort command, servo or motor), N m or N.
   double actuator_effort(std::size_t joint) const;
   // Generalised force from constraints: limits, friction loss, contacts, mimic equalities.
   double constraint_effort(std::size_t joint) const;
@@ -181,6 +191,20 @@ class Physics {
   // for the control loop (they allocate and recompute the mass matrix).
   double effective_inertia(std::size_t joint) const;
   double joint_damping(std::size_t joint) const;
+
+  // Bounds the joint's actuator effort in every mode to +-limit (N m or N), for the following
+  // steps: a Gazebo model plugin's velocity motor torque (Gazebo's joint "fmax"). 0 gives back the
+  // joint's own bound (JointInfo::effort_limit, none when that is 0). Hot path: no allocation.
+  void set_effort_limit(std::size_t joint, double limit) noexcept;
+
+  // The floating root link's pose X_WB and twist (world frame, at B's origin), read straight from
+  // the state (no kinematics pass: cheap enough for every tick). False when the robot is fixed to
+  // the world.
+  bool root_state(description::Pose& X_WB, Twist& V_WB) const noexcept;
+  // Sets the floating root link's velocity (world frame, at B's origin) for the next step, as
+  // Gazebo's Model::SetLinearVel/SetAngularVel: gravity, contacts and joints act from there within
+  // the step. Hot path (no allocation); ignored when the robot is fixed to the world.
+  void command_root_velocity(const Twist& V_WB) noexcept;
 
   // Initial conditions (not for use inside a control loop): sets a joint's state directly.
   void set_joint_state(std::size_t joint, double position, double velocity = 0.0);

@@ -21,6 +21,9 @@ struct Physics::Data {
   bool constants_stale = false;  // the model changed (armature): mj_setConst is due
   std::vector<JointMode> modes;
   std::vector<ServoGains> gains;
+  // Velocity motors (ServoGains::motor), per joint: the integral correction of the set point
+  // (rad/s or m/s); NaN: not a motor.
+  std::vector<double> motor_integral;
   std::vector<std::string> geom_links;  // URDF link (or world geom) per MuJoCo geom
   std::vector<int> robot_collision_geoms;
   // State before the current step, restored when a step fails.
@@ -47,6 +50,10 @@ struct Physics::Data {
   std::vector<WheelSoilReading> soil_readings, soil_pending_readings;
   int soil_ground = -1;
   std::vector<mjtNum> xfrc_base;
+  // The root's free joint and the root link's frame in its body (root_io.cpp), found once.
+  mutable bool root_known = false;
+  mutable int root_free_joint = -1;
+  mutable description::Pose X_BodyRoot;
 
   ~Data() {
     if (d != nullptr) mj_deleteData(d);

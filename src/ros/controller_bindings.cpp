@@ -9,6 +9,10 @@
 //   "odom"            <robot ns>/<controller>/odom (nav_msgs/Odometry) at the controller's
 //                     publish_rate (default 50 Hz), and odom -> base on /tf unless enable_odom_tf
 //                     is false (diff_drive_controller's behaviour)
+//   "cmd_vel_out"     <robot ns>/<controller>/cmd_vel_out (geometry_msgs/TwistStamped):
+//                     diff_drive_controller's limited command with publish_cmd, every update
+//   cmd_vel           with allow_multiple_cmd_vel_publishers: false, diff_drive_controller
+//                     ignores cmd_vel while more than one node publishes it (an error, throttled)
 //   trajectories      <robot ns>/<controller>/command (trajectory_msgs/JointTrajectory),
 //                     <robot ns>/<controller>/state (control_msgs/JointTrajectoryControllerState,
 //                     at the state rate), <robot ns>/<controller>/follow_joint_trajectory (action),
@@ -25,12 +29,15 @@
 //   LaserScannerTrajController  <controller>/set_periodic_cmd and set_traj_cmd, each a topic
 //                     (pr2_msgs/PeriodicCmd, LaserTrajCmd) and a service (pr2_msgs/SetPeriodicCmd,
 //                     SetLaserTrajCmd: start_time is the sim time of the call; false when refused)
+// position_ and effort_controllers/GripperActionController: <controller>/gripper_cmd
+//                     (control_msgs/GripperCommandAction, gripper_command_action.hpp)
 //   Pr2Odometry       <controller>/odom at odom_publish_rate (default 30 Hz) and odom ->
 //                     base_footprint on /tf unless publish_tf is false (the PR2's parameters)
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
 // relative names resolve in the controller's namespace. Remapping the full name works too.
 
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Float64.h>
@@ -48,6 +55,7 @@
 #include <pr2_msgs/SetLaserTrajCmd.h>
 #include <pr2_msgs/SetPeriodicCmd.h>
 
+#include "ros/gripper_command_action.hpp"
 #include "ros/pr2_actions.hpp"
 #include "ros/publish_helpers.hpp"
 #include "ros/sim_node.hpp"
@@ -68,10 +76,12 @@ struct SimNode::Binding {
   JointControllerStateData jcs;
   JointStatesData joint_states;
   OdometryData odom;
+  TwistStampedData twist;
   control::JointTrajectoryControllerState trajectory_state;
   std::unique_ptr<TrajectoryActionServer> action;
   std::unique_ptr<Pr2TrajectoryActionServer> pr2_action;  // JointTrajectoryActionController only
   std::unique_ptr<GripperActionServer> gripper_action;
+  std::unique_ptr<ControlGripperActionServer> gripper_command_action;  // GripperActionController
   ::ros::ServiceServer service;  // query_state; set_periodic_cmd
   // The laser tilt controller's second topic and service (set_traj_cmd).
   ::ros::Subscriber subscriber2;
@@ -254,13 +264,32 @@ void SimNode::bind(const std::string& controller) {
               return write_array(p, msg.data, error);
             });
         break;
-      case PortType::TwistCommand:
+      case PortType::TwistCommand: {
+        bool allow_multiple = true;
+        try {
+          if (auto c = params.find(controller)) allow_multiple = c->get<bool>("allow_multiple_cmd_vel_publishers", true);
+        } catch (const std::exception& e) {
+          ROS_WARN_STREAM("mechsim: " << e.what());
+        }
         b->subscriber = subscribe_command<geometry_msgs::Twist>(
             controller_nh, topic, bindings_mutex_, weak, "cmd_vel",
-            [](const PortRef& p, const geometry_msgs::Twist& msg, std::string* error) {
+            [allow_multiple, weak](const PortRef& p, const geometry_msgs::Twist& msg, std::string* error) {
+              // Under bindings_mutex_: the binding (and its subscriber) is alive.
+              if (!allow_multiple) {
+                const auto self = weak.lock();
+                const std::uint32_t publishers = self ? self->subscriber.getNumPublishers() : 0;
+                if (publishers > 1) {
+                  *error = std::to_string(publishers) + " publishers on cmd_vel, and allow_multiple_cmd_vel_publishers is false";
+                  return false;
+                }
+              }
               return write_twist(p, msg.linear.x, msg.linear.y, msg.linear.z, msg.angular.x, msg.angular.y,
                                  msg.angular.z, error);
             });
+        break;
+      }
+      case PortType::TwistState:
+        b->publisher = controller_nh.advertise<geometry_msgs::TwistStamped>(topic, 100);
         break;
       case PortType::JointControllerState: {
         b->publisher = b->pr2 ? controller_nh.advertise<pr2_controllers_msgs::JointControllerState>(topic, 1)
@@ -324,7 +353,8 @@ void SimNode::bind(const std::string& controller) {
             });
         break;
       case PortType::GripperGoal:
-        b->gripper_action = std::make_unique<GripperActionServer>(controller_nh, topic, port);
+        if (b->pr2) b->gripper_action = std::make_unique<GripperActionServer>(controller_nh, topic, port);
+        else b->gripper_command_action = std::make_unique<ControlGripperActionServer>(controller_nh, topic, port);
         break;
       case PortType::TrajectoryQuery:
         b->service = b->pr2 ? advertise_query<pr2_controllers_msgs::QueryTrajectoryState>(controller_nh, topic,
@@ -381,6 +411,10 @@ void SimNode::unbind(const std::string& controller) {
     if (b->gripper_action) {
       b->gripper_action->shutdown();
       b->gripper_action.reset();
+    }
+    if (b->gripper_command_action) {
+      b->gripper_command_action->shutdown();
+      b->gripper_command_action.reset();
     }
     b->subscriber.shutdown();
     b->subscriber2.shutdown();
@@ -450,6 +484,20 @@ void SimNode::publish_controller_states(double time) {
           tf.transforms.push_back(t);
           b.tf_publisher.publish(tf);
         }
+        break;
+      }
+      case PortType::TwistState: {
+        if (!read_twist_state(b.port, b.twist, &b.sequence)) break;
+        geometry_msgs::TwistStamped msg;
+        msg.header.stamp = ::ros::Time(b.twist.stamp);
+        msg.header.frame_id = b.twist.frame_id;
+        msg.twist.linear.x = b.twist.vx;
+        msg.twist.linear.y = b.twist.vy;
+        msg.twist.linear.z = b.twist.vz;
+        msg.twist.angular.x = b.twist.wx;
+        msg.twist.angular.y = b.twist.wy;
+        msg.twist.angular.z = b.twist.wz;
+        b.publisher.publish(msg);
         break;
       }
       case PortType::TrajectoryState: {

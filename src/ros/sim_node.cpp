@@ -30,6 +30,7 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
   // The statistics observer runs before on_tick, so that a tick's statistics include it.
   if (options_.pr2) bridge_->enable_mechanism_statistics();
   sensors_ = std::make_unique<SensorPublishers>(root_nh_, *bridge_);
+  plugins_ = std::make_unique<ModelPluginTopics>(root_nh_, *bridge_);
   bridge_->add_observer([this](double time) { on_tick(time); });
   if (options_.gazebo_services) advertise_sim_services();
   advertise_controller_manager();
@@ -103,6 +104,7 @@ void SimNode::on_tick(double time) {
     next_clock_ = time + (options_.clock_publish_rate > 0.0 ? 1.0 / options_.clock_publish_rate : 0.0);
   }
   sensors_->publish();
+  plugins_->publish(time);
   publish_controller_states(time);
   if (options_.pr2) publish_pr2_outputs(time);
   if (tf_ && time + 1e-9 >= next_tf_) {

@@ -7,6 +7,7 @@
 //   - each loaded controller's topics (controller_bindings.cpp);
 //   - the built-in robot state publisher (tf_publisher.cpp);
 //   - the sensors' topics, as their Gazebo plugins name them (sensor_publishers.cpp);
+//   - the model plugins' topics (diff drive, skid steer, planar move, ...: model_plugin_topics.cpp);
 //   - for a PR2, pr2_controller_manager's own outputs: joint_states, mechanism_statistics and
 //     the latched /calibrated (pr2_outputs.cpp).
 //
@@ -26,6 +27,7 @@
 #include <ros/ros.h>
 
 #include "ros/bridge/sim_bridge.hpp"
+#include "ros/model_plugin_topics.hpp"
 #include "ros/sensor_publishers.hpp"
 #include "ros/tf_publisher.hpp"
 
@@ -94,6 +96,7 @@ class SimNode {
   std::unique_ptr<SimBridge> bridge_;
   std::unique_ptr<TfPublisher> tf_;
   std::unique_ptr<SensorPublishers> sensors_;  // the robot's simulated sensors (loop thread)
+  std::unique_ptr<ModelPluginTopics> plugins_;  // the robot's Gazebo model plugins (model_plugin_topics.hpp)
 
   ::ros::Publisher clock_pub_;
   std::vector<::ros::ServiceServer> services_;

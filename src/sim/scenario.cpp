@@ -212,7 +212,7 @@ Check read_check(const Params& c) {
   Check check;
   const std::vector<std::string> keys = c.keys();
   if (keys.size() != 1) {
-    fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint)");
+    fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, tracking, laser_range, imu_tilt)");
   }
   const std::string& kind = keys.front();
   const Params p = c.child(kind);
@@ -262,7 +262,7 @@ Check read_check(const Params& c) {
     if (trajectory) {
       only_keys(p, {"controller", "goal", "max_rms_error", "max_error", "result"});
     } else {
-      only_keys(p, {"controller", "goal", "reached", "stalled", "by", "position", "within"});
+      only_keys(p, {"controller", "goal", "reached", "stalled", "by", "position", "within", "effort", "effort_within"});
     }
     check.controller = p.get<std::string>("controller");
     if (p.has("goal")) {
@@ -302,8 +302,14 @@ Check read_check(const Params& c) {
       } else if (p.has("within")) {
         fail(p.child("within"), "goes with position");
       }
-      if (!check.reached && !check.stalled && !check.finished_by && !check.position) {
-        fail(p, "needs reached, stalled, by and/or position");
+      if (p.has("effort")) {
+        check.effort = p.get<double>("effort");
+        check.effort_within = positive("effort_within");
+      } else if (p.has("effort_within")) {
+        fail(p.child("effort_within"), "goes with effort");
+      }
+      if (!check.reached && !check.stalled && !check.finished_by && !check.position && !check.effort) {
+        fail(p, "needs reached, stalled, by, position and/or effort");
       }
     }
   } else if (kind == "joint") {
@@ -318,6 +324,16 @@ Check read_check(const Params& c) {
     if (!p.has("position")) fail(p, "needs position (and within)");
     check.within = p.get<double>("within");
     if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0");
+  } else if (kind == "tracking") {
+    check.kind = Check::Kind::Tracking;
+    only_keys(p, {"controller", "max_error", "after"});
+    check.controller = p.get<std::string>("controller");
+    check.max_abs_error = p.get<double>("max_error");
+    if (!(*check.max_abs_error >= 0.0) || !std::isfinite(*check.max_abs_error)) fail(p.child("max_error"), "must be >= 0");
+    if (p.has("after")) {
+      check.at = p.get<double>("after");
+      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("after"), "must be >= 0 s");
+    }
   } else if (kind == "laser_range" || kind == "imu_tilt") {
     const bool laser = kind == "laser_range";
     check.kind = laser ? Check::Kind::LaserRange : Check::Kind::ImuTilt;
@@ -351,7 +367,7 @@ Check read_check(const Params& c) {
     if (p.has("max_mean")) check.max_mean = finite(p, "max_mean", 0.0);
     if (!check.min_mean && !check.max_mean) fail(p, "needs min_mean and/or max_mean");
   } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, laser_range, imu_tilt, slip)");
+    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, tracking, laser_range, imu_tilt, slip)");
   }
   return check;
 }
@@ -487,20 +503,22 @@ Scenario load_scenario(const Params& root, const std::string& path) {
         for (const std::string& j : joints->keys()) s.initial_joints[j] = finite(*joints, j, 0.0);
       }
     }
-    const Params controllers = root.child("controllers");
-    s.controllers_file = resolve_path(base, controllers.get<std::string>("file"));
-    if (!fs::exists(s.controllers_file)) fail(controllers.child("file"), "no such file: " + s.controllers_file);
-    s.controllers_namespace = controllers.get<std::string>("namespace", "");
-    s.start = controllers.get<std::vector<std::string>>("start");
-    if (auto overlay = controllers.find("params")) {
-      Params file_params;
-      try {
-        file_params = Params::from_yaml_file(s.controllers_file);
-        if (!s.controllers_namespace.empty()) file_params = file_params.child(s.controllers_namespace);
-      } catch (const std::exception& e) {
-        fail(*overlay, std::string("cannot read the controllers file: ") + e.what());
+    // A robot driven by its Gazebo model plugins alone needs no controllers.
+    if (auto controllers = root.find("controllers")) {
+      s.controllers_file = resolve_path(base, controllers->get<std::string>("file"));
+      if (!fs::exists(s.controllers_file)) fail(controllers->child("file"), "no such file: " + s.controllers_file);
+      s.controllers_namespace = controllers->get<std::string>("namespace", "");
+      s.start = controllers->get<std::vector<std::string>>("start", {});
+      if (auto overlay = controllers->find("params")) {
+        Params file_params;
+        try {
+          file_params = Params::from_yaml_file(s.controllers_file);
+          if (!s.controllers_namespace.empty()) file_params = file_params.child(s.controllers_namespace);
+        } catch (const std::exception& e) {
+          fail(*overlay, std::string("cannot read the controllers file: ") + e.what());
+        }
+        read_controller_params(*overlay, file_params, "", s.controller_params);
       }
-      read_controller_params(*overlay, file_params, "", s.controller_params);
     }
 
     s.duration = root.get<double>("duration");

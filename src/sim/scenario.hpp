@@ -31,7 +31,7 @@
 //                                     # its normal, z along it); give roll/pitch to fix them
 //     joints: {r_gripper_l_finger_joint: 0.3}   # optional initial joint positions (rad, m), as
 //                                               # Gazebo's spawn_model -J; physics joints only
-//   controllers:
+//   controllers:                      # optional: a robot its Gazebo model plugins drive needs none
 //     file: ../robots/cc8/config/controllers.yaml
 //     namespace: cc8
 //     start: [joint_state_controller, rover_drive_controller]
@@ -39,6 +39,10 @@
 //     # load, as a second `rosparam load` would. Each must name a parameter the file has (a
 //     # misspelt gain must not pass silently); lists and scalars replace, maps merge.
 //     params: {rover_drive_controller: {wheel_pid: {p: 5.0}}}
+//   # The robot's Gazebo model plugins (diff drive, skid steer, planar move, joint state publisher,
+//   # mimic joint) run from the start as controllers named after their <plugin name>: a timeline
+//   # event's `controller` may name one (a twist to a drive plugin's cmd_vel), and the report
+//   # records a drive plugin's odometry.
 //   duration: 30        # s of simulation time
 //   period: 0.001       # s
 //   integrator: euler   # euler | implicit | rk4: MuJoCo's integrator; default physics::BuildOptions' (see there)
@@ -84,8 +88,14 @@
 //     # within `by` s of being sent, and the gap (m) where it finished within `within` m.
 //     - {gripper: {controller: r_gripper_controller, goal: 1, reached: true, by: 1.0}}
 //     - {gripper: {controller: r_gripper_controller, stalled: true, position: 0.04, within: 0.006}}
+//     # ... and the effort the result reports (N or N m: the gripper's max_effort once it stalls).
+//     - {gripper: {controller: gripper_action_controller, stalled: true, effort: 0.05, effort_within: 0.001}}
 //     # A mechanism joint's position (rad, m) at time `at` (s; default: the end of the run).
 //     - {joint: {name: r_gripper_joint, at: 1.2, position: 0.08, within: 0.002}}
+//     # The largest |error| of a controller's state (control_msgs/JointControllerState: set point
+//     # - process value), read every tick from `after` s on (default 0): a PID joint controller's
+//     # tracking, a mimic joint plugin's follower against multiplier * leader + offset (rad, m).
+//     - {tracking: {controller: right_finger_mimic, max_error: 0.001, after: 0.0}}
 //     # Sensor readings (the sensor's latest sample at time `at`, default the end): a laser's range
 //     # (m) along the ray nearest `angle_deg` (0: the middle), or `inf` for nothing in range; an
 //     # IMU's tilt (deg: the angle between its z axis and the measured specific force, i.e. how
@@ -165,7 +175,7 @@ struct TimelineEvent {
 
 struct Check {
   enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance, Trajectory, Gripper, Joint,
-                    LaserRange, ImuTilt, Slip } kind = Kind::Reach;
+                    Tracking, LaserRange, ImuTilt, Slip } kind = Kind::Reach;
   std::string text;  // as written, for the report
   double x = 0.0, y = 0.0, within = 0.0, by = 0.0;  // Reach / FinalPose (m, s)
   std::optional<double> lateral_within;            // FinalPose: |y error| (m)
@@ -178,13 +188,15 @@ struct Check {
   // 0 = the last).
   std::string controller;
   std::size_t goal = 0;
-  std::optional<double> max_rms_error, max_abs_error;   // Trajectory, per joint (rad, m)
+  std::optional<double> max_rms_error, max_abs_error;   // Trajectory, per joint (rad, m); Tracking
   std::optional<control::TrajectoryResultCode> result;  // Trajectory
   std::optional<bool> reached, stalled;                 // Gripper
   std::optional<double> finished_by;                    // Gripper: s after the goal was sent
   std::optional<double> position;                       // Gripper: final gap (m), +- `within`; Joint
+  std::optional<double> effort;                         // Gripper: the result's effort, +- effort_within
+  double effort_within = 0.0;
   std::string joint;                                    // Joint: mechanism joint name
-  std::optional<double> at;                             // Joint, LaserRange, ImuTilt: s (absent: the end)
+  std::optional<double> at;                             // Joint, LaserRange, ImuTilt: s (absent: the end); Tracking: from
   std::string sensor;                                   // LaserRange, ImuTilt: sensor name
   double angle = 0.0;                                   // LaserRange: ray direction (rad)
   double range = 0.0;                                   // LaserRange: m (+inf: nothing in range)
@@ -225,7 +237,7 @@ struct Scenario {
   std::map<std::string, double> initial_joints;  // spawn.joints: physics joint -> rad or m
   std::vector<physics::WorldBox> boxes;          // world.boxes, added to the world's own
   physics::DifferentialMode differential = physics::DifferentialMode::MimicConstraint;
-  std::string controllers_file;  // absolute
+  std::string controllers_file;  // absolute; empty: no controllers YAML
   std::string controllers_namespace;
   std::vector<std::string> start;
   std::vector<ControllerParam> controller_params;  // controllers.params, in document order

@@ -260,7 +260,7 @@ CheckOutcome ScenarioGoals::judge(const Check& c) const {
     return out;
   }
   const GripperGoalOutcome& g = gripper_outcomes_[find(c)];
-  d = g.controller + " gripper goal " + std::to_string(g.index) + " (" + fmt("%.3f m, max_effort %.1f N", g.command.position, g.command.max_effort) +
+  d = g.controller + " gripper goal " + std::to_string(g.index) + " (" + fmt("%.3f m, max_effort %.3g N", g.command.position, g.command.max_effort) +
       ", sent at " + fmt("%.3f s", g.sent_at) + "): " + g.status;
   if (!g.accepted) d += " (" + g.error + ")";
   if (!g.finished) {
@@ -268,7 +268,7 @@ CheckOutcome ScenarioGoals::judge(const Check& c) const {
     d += ", not finished at the end";
     return out;
   }
-  d += fmt(" after %.3f s, gap %.4f m, effort %.2f N", g.finished_after, g.result.position, g.result.effort);
+  d += fmt(" after %.3f s, gap %.4f m, effort %.4f N", g.finished_after, g.result.position, g.result.effort);
   d += std::string(", reached ") + (g.result.reached_goal ? "yes" : "no") + ", stalled " + (g.result.stalled ? "yes" : "no");
   if (c.reached) {
     out.passed = out.passed && g.accepted && g.result.reached_goal == *c.reached;
@@ -285,6 +285,10 @@ CheckOutcome ScenarioGoals::judge(const Check& c) const {
   if (c.position) {
     out.passed = out.passed && g.accepted && std::abs(g.result.position - *c.position) <= c.within;
     d += fmt("; wanted gap %.4f +- %.4f m", *c.position, c.within);
+  }
+  if (c.effort) {
+    out.passed = out.passed && g.accepted && std::abs(g.result.effort - *c.effort) <= c.effort_within;
+    d += fmt("; wanted effort %.4f +- %.4f", *c.effort, c.effort_within);
   }
   return out;
 }

@@ -146,7 +146,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   }
   control::Params params;
   try {
-    params = control::Params::from_yaml_file(s.controllers_file);
+    if (!s.controllers_file.empty()) params = control::Params::from_yaml_file(s.controllers_file);
     if (!s.controllers_namespace.empty()) params = params.child(s.controllers_namespace);
     for (const ControllerParam& p : s.controller_params) control::replace(params, p.key, p.value);
   } catch (const std::exception& e) {
@@ -232,6 +232,20 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     if (c.kind != Check::Kind::Joint) continue;
     check_joint[k] = sim->mechanism().joint_index(c.joint);
     if (check_joint[k] < 0) throw ScenarioError(s.file + ": checks: joint check: the robot's mechanism has no joint '" + c.joint + "'");
+  }
+  // Tracking checks: the controller's state port, and the largest |error| read so far.
+  std::vector<const control::StatePort<control::JointControllerState>*> tracked(s.checks.size(), nullptr);
+  std::vector<double> tracked_max(s.checks.size(), 0.0);
+  std::vector<std::size_t> tracked_samples(s.checks.size(), 0);
+  for (std::size_t k = 0; k < s.checks.size(); ++k) {
+    const Check& c = s.checks[k];
+    if (c.kind != Check::Kind::Tracking) continue;
+    tracked[k] = find_port<control::StatePort<control::JointControllerState>>(sim->controllers().controller(c.controller),
+                                                                            control::PortKind::JointControllerState);
+    if (tracked[k] == nullptr) {
+      throw ScenarioError(s.file + ": checks: tracking check: no loaded controller '" + c.controller +
+                          "' with a joint controller state");
+    }
   }
   auto joint_position = [&](std::size_t k) {
     return sim->mechanism_state().joints[static_cast<std::size_t>(check_joint[k])].position;
@@ -325,6 +339,10 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         reach_best[k] = std::min(reach_best[k], std::hypot(after.position.x - c.x, after.position.y - c.y));
       }
       if (c.kind == Check::Kind::Joint && c.at && !joint_sample[k] && sim->time() >= *c.at - 1e-9) joint_sample[k] = joint_position(k);
+      if (c.kind == Check::Kind::Tracking && sim->time() >= c.at.value_or(0.0) - 1e-9 && tracked[k]->sequence() > 0) {
+        tracked_max[k] = std::max(tracked_max[k], std::abs(tracked[k]->read().error));
+        ++tracked_samples[k];
+      }
     }
     if (options.progress && (tick + 1) % progress_every == 0) options.progress({sim->time(), s.duration, rtf_now()});
   }
@@ -339,12 +357,15 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   result.final_z = X_WB.position.z;
   result.final_yaw = yaw_of(X_WB.orientation);
   if (odometry != nullptr) {
-    // Odometry starts at the spawn pose's origin and heading: compare in the spawn frame.
+    // Wheel odometry starts at the spawn pose's origin and heading: compare in the spawn frame.
+    // A Gazebo plugin's "world" odometry is the world pose itself.
     const control::OdometrySnapshot odom = odometry->read();
     const double c = std::cos(s.spawn.yaw), sn = std::sin(s.spawn.yaw);
-    const double ox = s.spawn.x + c * odom.x - sn * odom.y, oy = s.spawn.y + sn * odom.x + c * odom.y;
+    const double ox = odom.in_world ? odom.x : s.spawn.x + c * odom.x - sn * odom.y;
+    const double oy = odom.in_world ? odom.y : s.spawn.y + sn * odom.x + c * odom.y;
     result.odometry_error = std::hypot(ox - result.final_x, oy - result.final_y);
-    result.odometry_yaw_error = std::abs(wrap_angle(odom.yaw - result.yaw_change));
+    const double odom_turn = odom.in_world ? wrap_angle(odom.yaw - s.spawn.yaw) : odom.yaw;
+    result.odometry_yaw_error = std::abs(wrap_angle(odom_turn - result.yaw_change));
   }
   result.trajectory_goals = goals.trajectory_goals();
   result.gripper_goals = goals.gripper_goals();
@@ -425,6 +446,11 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
                       c.at ? *c.at : result.sim_time, q, *c.position, c.within, std::abs(q - *c.position));
         break;
       }
+      case Check::Kind::Tracking:
+        out.passed = result.completed && tracked_samples[k] > 0 && tracked_max[k] <= *c.max_abs_error;
+        std::snprintf(buf, sizeof buf, "%s: largest |error| %.6f over %zu ticks from t=%.3f s, limit %.6f", c.controller.c_str(),
+                      tracked_max[k], tracked_samples[k], c.at.value_or(0.0), *c.max_abs_error);
+        break;
       case Check::Kind::Trajectory:
       case Check::Kind::Gripper:
         out = goals.judge(c);

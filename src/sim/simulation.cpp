@@ -8,10 +8,13 @@
 #include <thread>
 
 #include "controllers/builtin_controllers.hpp"
+#include "controllers/plugins/model_plugins.hpp"
+#include "controllers/drive/diff_drive_params.hpp"
 #include "controllers/drive/pr2_base_params.hpp"
 #include "controllers/drive/rover_drive_params.hpp"
 #include "description/sensor_spec.hpp"
 #include "mechanism/build_mechanism.hpp"
+#include "mechanism/direct_joints.hpp"
 #include "mechanism/pr2_gripper_transmission.hpp"
 #include "mechanism/propagation.hpp"
 #include "physics/heightmap_sample.hpp"
@@ -57,6 +60,7 @@ bool has_cameras(const description::RobotModel& robot) {
 void fill_description_params(const control::Params& controllers, const description::RobotModel& robot) {
   control::fill_rover_drive_geometry_all(controllers, robot);
   control::fill_pr2_base_geometry_all(controllers, robot);
+  control::fill_diff_drive_geometry_all(controllers, robot);
 }
 
 control::ControlResult Simulation::load_controller(const std::string& name) {
@@ -64,6 +68,7 @@ control::ControlResult Simulation::load_controller(const std::string& name) {
     if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map()) {
       const std::string type = p->get<std::string>("type", "");
       if (type == control::kRoverDriveControllerType) control::fill_rover_drive_geometry(*p, robot_);
+      if (type == control::kDiffDriveControllerType) control::fill_diff_drive_geometry(*p, robot_);
       if (type == control::kPr2BaseController2Type || type == control::kPr2BaseControllerType ||
           type == control::kPr2OdometryType) {
         control::fill_pr2_base_geometry(*p, robot_);
@@ -98,7 +103,15 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
   spawn_pose_ = physics_->base_pose();
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
+  // The model plugins' controllers; the joints they drive or read join the mechanism.
+  std::vector<control::ModelPluginBuild> plugins =
+      control::build_model_plugins(robot_, control::PluginContext{robot_.name, controller_params});
+  for (const control::ModelPluginBuild& b : plugins) mechanism::add_direct_joints(*mechanism_, robot_, b.joints);
+  for (const control::ModelPluginStatus& status : control::model_plugin_status(robot_)) {
+    if (!status.simulated()) plugin_notes_.push_back(control::describe(status));
+  }
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
+  mechanism_state_->base.floating = !physics_model_->fixed_to_world();
   fill_description_params(controller_params, robot_);
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
                                                          control::builtin_controller_registry());
@@ -106,6 +119,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   const std::size_t n = mechanism_->joints.size();
   physics_joint_.assign(n, -1);
   physics_mode_.assign(n, HardwareInterface::Effort);
+  physics_effort_limit_.assign(n, 0.0);
   servo_gains_.assign(n, physics::ServoGains{});
   commanded_.assign(n, false);
   effort_scale_.assign(n, 1.0);
@@ -177,6 +191,8 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   apply_initial_joints();
   paused_.store(options_.start_paused);
   read_physics();
+  add_model_plugins(plugins);
+  make_velocity_motors();
   notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
   startup_times_.mechanism = timer.lap();
   if (options_.sensors) {
@@ -246,8 +262,34 @@ void Simulation::add_reflected_inertia_for_safety_limits() {
   }
 }
 
+void Simulation::add_model_plugins(std::vector<control::ModelPluginBuild>& plugins) {
+  for (control::ModelPluginBuild& b : plugins) {
+    const control::ControlResult r =
+        manager_->add_model_plugin(b.name, b.filename, std::move(b.controller), b.params, b.origin, time());
+    if (!r) throw std::runtime_error(r.error);
+  }
+}
+
+void Simulation::make_velocity_motors() {
+  // Gazebo drives a velocity joint with the joint's motor (gazebo_ros_control: "vel" with "fmax" =
+  // the URDF effort limit; the drive plugins: "vel" with their wheelTorque), which reaches the
+  // commanded speed within the step unless the torque bound stops it: so do mechsim's velocity
+  // joints (physics::ServoGains::motor). A joint given servo gains keeps the servo.
+  for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
+    const mechanism::JointInfo& info = mechanism_->joints[j];
+    const bool velocity = info.role == mechanism::JointRole::Direct || info.has_interface(HardwareInterface::Velocity);
+    if (velocity && options_.servo_gains.count(info.name) == 0) servo_gains_[j].motor = true;
+  }
+}
+
 void Simulation::read_physics() {
   mechanism::MechanismState& state = *mechanism_state_;
+  if (state.base.floating) {
+    physics::Twist V_WB;
+    state.base.floating = physics_->root_state(state.base.X_WB, V_WB);
+    state.base.linear = V_WB.linear;
+    state.base.angular = V_WB.angular;
+  }
   for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
     const int p = physics_joint_[j];
     if (p < 0) continue;
@@ -297,6 +339,10 @@ void Simulation::write_physics() {
     if (p < 0 || !commanded_[j]) continue;
     const auto pj = static_cast<std::size_t>(p);
     const mechanism::JointState& js = state.joints[j];
+    if (js.effort_limit != physics_effort_limit_[j]) {
+      physics_->set_effort_limit(pj, js.effort_limit);
+      physics_effort_limit_[j] = js.effort_limit;
+    }
     if (js.command_mode != physics_mode_[j]) {
       physics_->set_mode(pj, to_physics_mode(js.command_mode), servo_gains_[j]);
       physics_mode_[j] = js.command_mode;
@@ -306,6 +352,10 @@ void Simulation::write_physics() {
       case HardwareInterface::Position: physics_->set_position_command(pj, js.commanded_position); break;
       case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
     }
+  }
+  if (state.base_command.active) {
+    const mechanism::BaseVelocityCommand& c = state.base_command;
+    physics_->command_root_velocity(physics::Twist{{c.vx, c.vy, 0.0}, {0.0, 0.0, c.wz}});
   }
 }
 
@@ -443,8 +493,14 @@ void Simulation::reset() {
   external_.clear();
   apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
-  const mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
+  mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
+  fresh.base.floating = !physics_model_->fixed_to_world();
   *mechanism_state_ = fresh;
+  // Every joint back to its own effort bound (the restarted plugins set theirs again).
+  for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
+    if (physics_joint_[j] >= 0 && physics_effort_limit_[j] != 0.0) physics_->set_effort_limit(static_cast<std::size_t>(physics_joint_[j]), 0.0);
+    physics_effort_limit_[j] = 0.0;
+  }
   read_physics();
   std::vector<std::string> running;
   for (const control::ControllerInfo& info : manager_->list_controllers()) {
@@ -473,6 +529,7 @@ std::vector<std::string> Simulation::physics_warnings() const {
   for (const sensors::SkippedSensor& s : sensors_.skipped()) {
     if (s.left_out) out.push_back(s.reason);
   }
+  out.insert(out.end(), plugin_notes_.begin(), plugin_notes_.end());
   return out;
 }
 

@@ -50,6 +50,10 @@
 #include "sim/external_forces.hpp"
 #include "sim/world.hpp"
 
+namespace mechsim::control {
+struct ModelPluginBuild;  // controllers/plugins/model_plugins.hpp
+}  // namespace mechsim::control
+
 namespace mechsim::sim {
 
 // What the loop does when the physics diverges (NaN/inf state, runaway acceleration).
@@ -118,7 +122,8 @@ class Simulation {
 
   // Builds the physics of `robot` in `world`, its mechanism and its controller manager over
   // `controller_params` (the namespace holding the controllers, e.g. the `cc8` map of a YAML).
-  // Throws on a description the physics or the mechanism cannot build.
+  // Throws on a description the physics, the mechanism or its model plugins cannot build (a model
+  // plugin's error names its file, line and plugin).
   Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
              SimulationOptions options = {});
   ~Simulation();
@@ -187,7 +192,8 @@ class Simulation {
 
   // What the physics reported without failing a tick (physics::PhysicsNotice: its arena grew, a
   // MuJoCo warning), each as "tick N (t = T s): what" ("spawn (t = 0 s): " for the spawn state),
-  // with how often it recurred.
+  // with how often it recurred; then the sensors left out, and the Gazebo model plugins mechsim
+  // does not simulate (once each: controllers/plugins/model_plugins.hpp).
   std::vector<std::string> physics_warnings() const;
 
   // Time of the constructor's stages (wall-clock and CPU).
@@ -227,6 +233,8 @@ class Simulation {
  private:
   void read_physics();
   void write_physics();
+  void add_model_plugins(std::vector<control::ModelPluginBuild>& plugins);
+  void make_velocity_motors();
   void apply_requests();
   void apply_initial_joints();
   void settle_on_ground();
@@ -246,6 +254,7 @@ class Simulation {
   // physics servo is in, so modes switch only on change.
   std::vector<int> physics_joint_;
   std::vector<mechanism::HardwareInterface> physics_mode_;
+  std::vector<double> physics_effort_limit_;  // JointState::effort_limit as the physics has it
   std::vector<physics::ServoGains> servo_gains_;
   std::vector<bool> commanded_;  // the physics applies this joint's command (actuated joints)
   std::vector<double> effort_scale_;  // applied effort = scale * commanded effort (1 but for fingers)
@@ -264,6 +273,7 @@ class Simulation {
   void read_gaps_from_fingers();
 
   std::vector<AddedInertia> reflected_inertia_;
+  std::vector<std::string> plugin_notes_;  // model plugins mechsim does not simulate, one line each
   void add_reflected_inertia_for_safety_limits();
 
   // Sleeps until the wall-clock time at which the current simulation time is due (loop thread).

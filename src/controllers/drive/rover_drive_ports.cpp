@@ -29,6 +29,7 @@ bool DriveModeCommandPort::write(std::string_view text, std::string* error) {
 }
 
 Quaternion OdometrySnapshot::orientation() const {
+  if (has_attitude) return attitude;
   return {std::cos(yaw / 2.0), 0.0, 0.0, std::sin(yaw / 2.0)};
 }
 

@@ -43,9 +43,17 @@ struct OdometrySnapshot {
   double stamp = 0.0;  // s, sim time of the update
   std::string frame_id = "odom";
   std::string child_frame_id = "base_link";
-  double x = 0.0, y = 0.0;  // m, position of the child frame in frame_id (z = 0)
+  double x = 0.0, y = 0.0;  // m, position of the child frame in frame_id
+  double z = 0.0;           // m; 0 for wheel odometry
   double yaw = 0.0;         // rad, in (-pi, pi]
-  Quaternion orientation() const;  // the yaw as a unit quaternion (w, x, y, z)
+  // The full attitude where the source knows it (Gazebo plugins' world odometry: the base's
+  // world orientation, roll and pitch included); else the yaw alone is the orientation.
+  bool has_attitude = false;
+  Quaternion attitude;
+  Quaternion orientation() const;  // unit quaternion (w, x, y, z): the attitude, else the yaw's
+  // The pose is the base's pose in the world (Gazebo plugins' "world" odometry source), not
+  // relative to where the odometry started.
+  bool in_world = false;
   Vec3d linear;   // m/s, in child_frame_id (z = 0)
   Vec3d angular;  // rad/s, in child_frame_id (x = y = 0)
   std::array<double, 36> pose_covariance{};

@@ -74,8 +74,12 @@ SdfSearch make_search(const SdfOptions& options) {
   s.packages = options.packages;
   if (options.use_environment) {
     split_into(std::getenv("GAZEBO_MODEL_PATH"), s.model_dirs);
+    // What packages export to gazebo_ros (package.xml <export><gazebo_ros gazebo_model_path=...>),
+    // which gazebo_ros' launch scripts add to Gazebo's paths.
+    for (std::string& dir : gazebo_ros_exports("gazebo_model_path")) s.model_dirs.push_back(std::move(dir));
     if (const char* home = std::getenv("HOME")) s.model_dirs.push_back(std::string(home) + "/.gazebo/models");
     split_into(std::getenv("GAZEBO_RESOURCE_PATH"), s.resource_dirs);
+    for (std::string& dir : gazebo_ros_exports("gazebo_media_path")) s.resource_dirs.push_back(std::move(dir));
   }
   return s;
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "description/package_path.hpp"
 #include "description/sdf/sdf_model.hpp"
 
 namespace mechsim::description {
@@ -229,6 +230,38 @@ TEST(SdfWorld, JointsFrictionPhysicsAndIncludes) {
   ASSERT_NE(gz, arm.robot.gazebo_links.end());
   EXPECT_DOUBLE_EQ(gz->second.mu1.value_or(0.0), 0.4);
   EXPECT_DOUBLE_EQ(gz->second.mu2.value_or(0.0), 0.3);
+}
+
+// A package on ROS_PACKAGE_PATH exporting its models to gazebo_ros (package.xml <export>
+// <gazebo_ros gazebo_model_path="${prefix}/models"/>): its model:// includes resolve, as gazebo_ros'
+// launch scripts make Gazebo find them.
+TEST(SdfWorld, ModelPathsExportedByPackages) {
+  TempDir dir;
+  dir.write("src/shelf_pkg/package.xml",
+            "<?xml version='1.0'?><package format='2'><name>shelf_pkg</name><version>0.1.0</version>"
+            "<description>d</description><maintainer email='a@b.c'>a</maintainer><license>BSD</license>"
+            "<depend>gazebo_ros</depend><export><gazebo_ros gazebo_model_path=\"${prefix}/models\"/></export></package>");
+  dir.write("src/shelf_pkg/models/shelf/model.config",
+            "<?xml version='1.0'?><model><name>shelf</name><sdf version='1.6'>model.sdf</sdf></model>");
+  dir.write("src/shelf_pkg/models/shelf/model.sdf",
+            "<?xml version='1.0'?><sdf version='1.6'><model name='shelf'><static>true</static>"
+            "<link name='l'><collision name='c'><geometry><box><size>1 1 2</size></box></geometry></collision>"
+            "</link></model></sdf>");
+  const fs::path file = dir.write("store.world", world_doc("<include><uri>model://shelf</uri><pose>2 0 1 0 0 0</pose></include>"));
+  const char* before = std::getenv("ROS_PACKAGE_PATH");
+  const std::string saved = before != nullptr ? before : "";
+  setenv("ROS_PACKAGE_PATH", (dir.path() / "src").c_str(), 1);
+  EXPECT_EQ(gazebo_ros_exports("gazebo_model_path"), std::vector<std::string>{(dir.path() / "src/shelf_pkg/models").string()});
+  std::string error;
+  try {
+    const SdfWorld w = load_sdf_world(file.string(), SdfOptions{{}, {}, true});
+    expect_near(collision_centre(model(w, "shelf")), {2, 0, 1}, "shelf");
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (before != nullptr) setenv("ROS_PACKAGE_PATH", saved.c_str(), 1);
+  else unsetenv("ROS_PACKAGE_PATH");
+  EXPECT_EQ(error, "");
 }
 
 TEST(SdfWorld, HeightmapAndSpawnedModel) {

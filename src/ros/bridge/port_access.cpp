@@ -71,6 +71,7 @@ bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequen
   out.child_frame_id = s.child_frame_id;
   out.x = s.x;
   out.y = s.y;
+  out.z = s.z;
   const control::Quaternion q = s.orientation();
   out.qw = q.w;
   out.qx = q.x;
@@ -81,6 +82,21 @@ bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequen
   out.wz = s.angular.z;
   out.pose_covariance.assign(s.pose_covariance.begin(), s.pose_covariance.end());
   out.twist_covariance.assign(s.twist_covariance.begin(), s.twist_covariance.end());
+  return true;
+}
+
+bool read_twist_state(const PortRef& port, TwistStampedData& out, std::uint64_t* sequence) {
+  const auto* p = fresh_state<control::TwistSnapshot>(port, sequence);
+  if (!p) return false;
+  const control::TwistSnapshot s = p->read();
+  out.stamp = s.stamp;
+  out.frame_id = s.frame_id;
+  out.vx = s.twist.linear.x;
+  out.vy = s.twist.linear.y;
+  out.vz = s.twist.linear.z;
+  out.wx = s.twist.angular.x;
+  out.wy = s.twist.angular.y;
+  out.wz = s.twist.angular.z;
   return true;
 }
 

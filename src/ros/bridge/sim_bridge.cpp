@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "controllers/drive/rover_drive_params.hpp"
+#include "controllers/plugins/model_plugins.hpp"
 #include "ros/bridge/bridge_impl.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
 #include "sim/simulation.hpp"
@@ -48,6 +49,7 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::GripperGoal: return PortType::GripperGoal;
     case control::PortKind::TrajectoryQuery: return PortType::TrajectoryQuery;
     case control::PortKind::PeriodicCommand: return PortType::ScanCommand;
+    case control::PortKind::TwistState: return PortType::TwistState;
     default: return PortType::Other;
   }
 }
@@ -152,18 +154,9 @@ const std::vector<std::string>& SimBridge::physics_warnings() const {
 }
 
 BridgeResult SimBridge::load_controller(const std::string& name) {
-  control::ControllerManager& cm = impl_->simulation->controllers();
-  try {
-    // The rover drive takes its geometry from the URDF where the parameters leave it out.
-    if (auto p = impl_->params.find(name); p && p->is_map()) {
-      if (p->get<std::string>("type", "") == control::kRoverDriveControllerType) {
-        control::fill_rover_drive_geometry(*p, impl_->simulation->robot());
-      }
-    }
-  } catch (const std::exception& e) {
-    return {false, e.what()};
-  }
-  const control::ControlResult r = cm.load_controller(name);
+  // The simulation fills the geometry the rover drive, the PR2 base and diff_drive_controller
+  // take from the URDF where the parameters leave it out.
+  const control::ControlResult r = impl_->simulation->load_controller(name);
   return {r.ok, r.error};
 }
 
@@ -190,6 +183,7 @@ BridgeResult SimBridge::switch_controllers(const std::vector<std::string>& start
 std::vector<ControllerSummary> SimBridge::list_controllers() const {
   std::vector<ControllerSummary> out;
   for (const control::ControllerInfo& info : impl_->simulation->controllers().list_controllers()) {
+    if (info.model_plugin) continue;  // model_plugins()
     ControllerSummary s;
     s.name = info.name;
     s.type = info.type;
@@ -227,6 +221,40 @@ std::vector<PortRef> SimBridge::ports(const std::string& controller) const {
     if (auto* array = dynamic_cast<control::ArrayCommandPort*>(p)) ref.size = array->size();
     ref.port = p;
     out.push_back(std::move(ref));
+  }
+  return out;
+}
+
+std::vector<ModelPluginSummary> SimBridge::model_plugins() const {
+  std::vector<ModelPluginSummary> out;
+  control::ControllerManager& cm = impl_->simulation->controllers();
+  for (const control::ControllerInfo& info : cm.list_controllers()) {
+    if (!info.model_plugin) continue;
+    const auto* plugin = dynamic_cast<const control::ModelPlugin*>(cm.controller(info.name));
+    if (plugin == nullptr) continue;
+    const control::PluginRosInterface& ros = plugin->ros_interface();
+    ModelPluginSummary m;
+    m.name = info.name;
+    m.filename = info.type;
+    m.origin = info.origin;
+    m.robot_namespace = ros.robot_namespace;
+    m.odom_tf = ros.odom_tf;
+    m.wheel_tf_joints = ros.wheel_tf_joints;
+    const std::vector<PortRef> ports = this->ports(info.name);
+    for (const control::PluginTopic& t : ros.topics) {
+      for (const PortRef& p : ports) {
+        if (p.name == t.port) m.topics.push_back({p, t.topic});
+      }
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::vector<std::string> SimBridge::plugin_notes() const {
+  std::vector<std::string> out;
+  for (const control::ModelPluginStatus& s : control::model_plugin_status(impl_->simulation->robot())) {
+    if (!s.simulated()) out.push_back(control::describe(s));
   }
   return out;
 }

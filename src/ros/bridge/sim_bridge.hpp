@@ -90,6 +90,7 @@ enum class PortType : std::uint8_t {
   GripperGoal,        // pr2_controllers_msgs/Pr2GripperCommandAction ("gripper_action")
   TrajectoryQuery,    // control_msgs/QueryTrajectoryState service ("query_state")
   ScanCommand,        // pr2_msgs/PeriodicCmd and LaserTrajCmd (the PR2 laser tilt controller's "command")
+  TwistState,         // geometry_msgs/TwistStamped (diff_drive_controller's "cmd_vel_out")
   Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
 };
 
@@ -112,6 +113,24 @@ struct ControllerSummary {
   std::string name, type;
   std::string state;  // "initialized", "running", "stopped", "waiting" (its start is pending)
   std::vector<ClaimedResources> claims;
+};
+
+// A Gazebo model plugin of the robot (controllers/plugins/model_plugin.hpp) as ROS sees it: its
+// ports under the topic names the plugin gives them. The ROS binding publishes each new snapshot
+// of an output port (the plugin keeps its own rate) and writes each message of an input one.
+struct PluginTopicRef {
+  PortRef port;
+  std::string topic;  // as the plugin resolves it, relative to robot_namespace unless it starts with '/'
+};
+
+struct ModelPluginSummary {
+  std::string name, filename;
+  std::string origin;           // "file:line" of its <plugin> element
+  std::string robot_namespace;  // <robotNamespace>, "" for the root
+  std::vector<PluginTopicRef> topics;
+  bool odom_tf = false;  // the "odom" port's pose also on /tf
+  // publishWheelTF: these joints' parent -> child transforms on /tf with the "joint_states" port.
+  std::vector<std::string> wheel_tf_joints;
 };
 
 struct BridgeResult {
@@ -140,6 +159,7 @@ struct OdometryData {
   double stamp = 0.0;
   std::string frame_id, child_frame_id;
   double x = 0.0, y = 0.0;                     // m
+  double z = 0.0;                              // m (Gazebo plugins' world odometry)
   double qw = 1.0, qx = 0.0, qy = 0.0, qz = 0.0;  // orientation
   double vx = 0.0, vy = 0.0, wz = 0.0;         // m/s, rad/s in child_frame_id
   std::vector<double> pose_covariance, twist_covariance;  // 36 each, row-major
@@ -297,6 +317,12 @@ class SimBridge {
   std::vector<std::string> list_controller_types() const;
   bool is_loaded(const std::string& name) const;
   std::vector<PortRef> ports(const std::string& controller) const;  // empty when not loaded
+  // The robot's simulated Gazebo model plugins; they run from construction on and are not in
+  // list_controllers() (gazebo_ros_control's controller manager does not list them either).
+  std::vector<ModelPluginSummary> model_plugins() const;
+  // The model plugins mechsim does not simulate, one line each ("gazebo plugin 'x' (lib...so) at
+  // file:line: NOT SIMULATED: ...").
+  std::vector<std::string> plugin_notes() const;
 
  private:
   struct Impl;
@@ -313,6 +339,13 @@ bool write_twist(const PortRef& port, double vx, double vy, double vz, double wx
 bool read_joint_controller_state(const PortRef& port, JointControllerStateData& out, std::uint64_t* sequence);
 bool read_joint_states(const PortRef& port, JointStatesData& out, std::uint64_t* sequence);
 bool read_odometry(const PortRef& port, OdometryData& out, std::uint64_t* sequence);
+// geometry_msgs/TwistStamped's content.
+struct TwistStampedData {
+  double stamp = 0.0;
+  std::string frame_id;
+  double vx = 0.0, vy = 0.0, vz = 0.0, wx = 0.0, wy = 0.0, wz = 0.0;  // m/s, rad/s
+};
+bool read_twist_state(const PortRef& port, TwistStampedData& out, std::uint64_t* sequence);
 
 // Trajectory controllers (controllers/trajectory/trajectory_goal.hpp explains the goal life).
 bool write_trajectory(const PortRef& port, const control::JointTrajectory& trajectory, std::string* error);

@@ -1,0 +1,90 @@
+// `mechsim check` lists a description's Gazebo model plugins, simulated or not (an unknown one is
+// named once and is not an error), and reports a simulated plugin's bad elements as errors naming
+// the file, the line and the plugin.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "run_process.hpp"
+
+namespace mechsim::apps::test {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+// A two-wheel robot with `plugins` inside its <gazebo> block, in this program's scratch folder.
+std::string robot_file(const std::string& name, const std::string& plugins) {
+  std::string joints;
+  for (const char* side : {"left", "right"}) {
+    joints += std::string("<joint name='") + side + "_wheel' type='continuous'><parent link='base'/><child link='" + side +
+              "_link'/><axis xyz='0 1 0'/></joint><link name='" + side +
+              "_link'><inertial><mass value='0.5'/><inertia ixx='1e-3' ixy='0' ixz='0' iyy='1e-3' iyz='0' izz='1e-3'/>"
+              "</inertial></link>\n";
+  }
+  const fs::path dir = fs::path(::testing::TempDir()) / ("mechsim_check_plugins_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string path = (dir / name).string();
+  write_file(path, "<?xml version='1.0'?>\n<robot name='wheels'>\n<link name='base'><inertial><mass value='2'/>"
+                   "<inertia ixx='0.1' ixy='0' ixz='0' iyy='0.1' iyz='0' izz='0.1'/></inertial></link>\n" +
+                       joints + "<gazebo>\n" + plugins + "</gazebo>\n</robot>\n");
+  return path;
+}
+
+struct Cleanup {
+  ~Cleanup() {
+    std::error_code ignored;
+    fs::remove_all(fs::path(::testing::TempDir()) / ("mechsim_check_plugins_" + std::to_string(getpid())), ignored);
+  }
+} cleanup;
+
+constexpr const char* kDiffDrive =
+    "<plugin name='drive' filename='libgazebo_ros_diff_drive.so'><leftJoint>left_wheel</leftJoint>"
+    "<rightJoint>right_wheel</rightJoint><wheelDiameter>DIAMETER</wheelDiameter><updateRate>RATE</updateRate></plugin>\n";
+
+std::string diff_drive(const std::string& diameter, const std::string& rate) {
+  std::string s = kDiffDrive;
+  s.replace(s.find("DIAMETER"), 8, diameter);
+  s.replace(s.find("RATE"), 4, rate);
+  return s;
+}
+
+TEST(CheckPluginsCli, ListsEveryPluginAndNamesAnUnknownOneOnce) {
+  const std::string file = robot_file("good.urdf", diff_drive("0.1", "50") +
+                                                       "<plugin name='lights' filename='libdisco_lights.so'><hz>2</hz></plugin>\n");
+  const ProcessResult r = run_process({MECHSIM_EXE, "check", file}, 60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("drive (libgazebo_ros_diff_drive.so), line 7: simulated: differential drive"));
+  EXPECT_THAT(r.out, HasSubstr("lights (libdisco_lights.so), line 8: NOT SIMULATED"));
+  EXPECT_THAT(r.out, HasSubstr("NOT SIMULATED: mechsim does not know this plugin"));
+  // Said once (the summary above lists every plugin with its elements, simulated or not).
+  const std::string all = r.out + r.err;
+  const std::size_t first = all.find("NOT SIMULATED");
+  EXPECT_EQ(all.find("NOT SIMULATED", first + 1), std::string::npos) << "said twice:\n" << all;
+}
+
+TEST(CheckPluginsCli, BadElementsAreErrorsNamingFileLineAndPlugin) {
+  for (const auto& [diameter, rate, what] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"0", "50", "<wheelDiameter> must be > 0 (got 0)"}, {"0.1", "-10", "<updateRate> is a rate in Hz and must be >= 0"}}) {
+    const std::string file = robot_file("bad.urdf", diff_drive(diameter, rate));
+    const ProcessResult r = run_process({MECHSIM_EXE, "check", file}, 60.0);
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_THAT(r.err, HasSubstr("Gazebo model plugin 'drive' (libgazebo_ros_diff_drive.so, " + file + ":"));
+    EXPECT_THAT(r.err, HasSubstr(what));
+  }
+  const std::string missing = robot_file("missing.urdf", "<plugin name='drive' filename='libgazebo_ros_diff_drive.so'>"
+                                                         "<leftJoint>left_wheel</leftJoint><rightJoint>back_wheel</rightJoint>"
+                                                         "</plugin>\n");
+  const ProcessResult r = run_process({MECHSIM_EXE, "check", missing}, 60.0);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr(missing + ":"));
+  EXPECT_THAT(r.err, HasSubstr("gazebo plugin 'drive' (libgazebo_ros_diff_drive.so): <rightJoint> ("));
+  EXPECT_THAT(r.err, HasSubstr("names joint 'back_wheel', which robot 'wheels' does not have"));
+}
+
+}  // namespace
+}  // namespace mechsim::apps::test

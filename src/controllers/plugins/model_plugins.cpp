@@ -1,0 +1,146 @@
+#include "controllers/plugins/model_plugins.hpp"
+
+#include <algorithm>
+#include <functional>
+
+#include "control/hardware.hpp"
+#include "control/params_xml.hpp"
+#include "controllers/plugins/diff_drive_plugin.hpp"
+#include "controllers/plugins/joint_state_publisher_plugin.hpp"
+#include "controllers/plugins/mimic_joint_plugin.hpp"
+#include "controllers/plugins/planar_move_plugin.hpp"
+#include "controllers/plugins/skid_steer_plugin.hpp"
+#include "description/mimic_plugin.hpp"
+#include "description/sensor_spec.hpp"
+
+namespace mechsim::control {
+namespace {
+
+struct PluginKind {
+  const char* filename;
+  const char* what;
+  std::function<std::unique_ptr<ModelPlugin>(const PluginContext&)> make;
+  std::function<std::vector<std::string>(const Params&)> joints;
+};
+
+const std::vector<PluginKind>& kinds() {
+  // Immutable once made.
+  static const std::vector<PluginKind> table = {
+      {kDiffDrivePluginFile, "differential drive", [](const PluginContext&) { return std::make_unique<DiffDrivePlugin>(); },
+       DiffDrivePlugin::joints},
+      {kSkidSteerPluginFile, "skid-steer drive", [](const PluginContext&) { return std::make_unique<SkidSteerPlugin>(); },
+       SkidSteerPlugin::joints},
+      {kPlanarMovePluginFile, "planar move of the base",
+       [](const PluginContext&) { return std::make_unique<PlanarMovePlugin>(); },
+       [](const Params&) { return std::vector<std::string>{}; }},
+      {kJointStatePublisherPluginFile, "joint state publisher",
+       [](const PluginContext& c) { return std::make_unique<JointStatePublisherPlugin>(c); }, JointStatePublisherPlugin::joints},
+      {"libroboticsgroup_gazebo_mimic_joint_plugin.so", "mimic joint",
+       [](const PluginContext& c) { return std::make_unique<MimicJointPlugin>(c, false); }, MimicJointPlugin::joints},
+      {"libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so", "mimic joint",
+       [](const PluginContext& c) { return std::make_unique<MimicJointPlugin>(c, true); }, MimicJointPlugin::joints},
+  };
+  return table;
+}
+
+const PluginKind* find_kind(const std::string& filename) {
+  for (const PluginKind& k : kinds()) {
+    if (filename == k.filename) return &k;
+  }
+  return nullptr;
+}
+
+std::string origin_of(const description::RobotModel& robot, const description::GazeboPlugin& p) {
+  return robot.source + ":" + std::to_string(p.xml.line);
+}
+
+// "<leftJoint> (file:line) names" for the element whose text names `joint`, else "the plugin names"
+// (a default or a list).
+std::string naming(const Params& params, const std::string& joint) {
+  for (const std::string& key : params.keys()) {
+    const Params c = params.child(key);
+    if (c.is_scalar() && c.as<std::string>() == joint) return "<" + key + "> (" + c.location() + ") names";
+  }
+  return "the plugin names";
+}
+
+}  // namespace
+
+std::vector<ModelPluginStatus> model_plugin_status(const description::RobotModel& robot) {
+  std::vector<ModelPluginStatus> out;
+  for (const description::GazeboPlugin& p : robot.plugins) {
+    if (!p.sensor.empty()) continue;
+    ModelPluginStatus s{p.name, p.filename, origin_of(robot, p), PluginHandling::NotSimulated, ""};
+    if (const PluginKind* k = find_kind(p.filename)) {
+      s.handling = PluginHandling::Controller;
+      s.detail = std::string("simulated: ") + k->what + " (a model plugin controller)";
+    } else if (p.filename == "libgazebo_ros_control.so" || p.filename == "libgazebo_ros_controller_manager.so") {
+      s.handling = PluginHandling::ControllerManager;
+      s.detail = "simulated: mechsim's controller manager runs the controllers of the YAML";
+    } else if (p.filename.find("differential") != std::string::npos) {
+      s.handling = PluginHandling::Physics;
+      s.detail = "simulated: a law of the physics (the differential's spring)";
+    } else {
+      const auto sensor = std::find_if(robot.sensors.begin(), robot.sensors.end(), [&](const description::SensorSpec& spec) {
+        return spec.type == "plugin" && spec.line == p.xml.line;
+      });
+      if (sensor != robot.sensors.end() && sensor->simulated()) {
+        s.handling = PluginHandling::Sensor;
+        s.detail = std::string("simulated: a sensor (") + sensor->kind_name() + ")";
+      } else if (sensor != robot.sensors.end()) {
+        s.detail = "NOT SIMULATED: " + std::get<description::UnsupportedSpec>(sensor->details).reason;
+      } else {
+        s.detail = "NOT SIMULATED: mechsim does not know this plugin; the robot runs without it";
+      }
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::string describe(const ModelPluginStatus& s) {
+  return "gazebo plugin '" + s.name + "' (" + s.filename + ") at " + s.origin + ": " + s.detail;
+}
+
+std::vector<ModelPluginBuild> build_model_plugins(const description::RobotModel& robot, const PluginContext& context) {
+  std::vector<ModelPluginBuild> out;
+  for (const description::GazeboPlugin& p : robot.plugins) {
+    if (!p.sensor.empty()) continue;
+    const PluginKind* kind = find_kind(p.filename);
+    if (kind == nullptr) continue;
+    ModelPluginBuild b;
+    b.name = p.name.empty() ? std::string(kind->what) : p.name;
+    const std::string base = b.name;
+    for (int n = 2; std::any_of(out.begin(), out.end(), [&](const ModelPluginBuild& o) { return o.name == b.name; }); ++n) {
+      b.name = base + "#" + std::to_string(n);
+    }
+    b.filename = p.filename;
+    b.origin = origin_of(robot, p);
+    std::string key = b.name;
+    std::replace(key.begin(), key.end(), '/', '_');
+    b.params = params_from_xml(p.xml, robot.source, key);
+    const std::string where = b.origin + ": gazebo plugin '" + b.name + "' (" + b.filename + "): ";
+    try {
+      b.joints = kind->joints(b.params);
+    } catch (const std::exception& e) {
+      throw ControllerConfigError(where + e.what());
+    }
+    for (const std::string& j : b.joints) {
+      const description::Joint* joint = robot.joint(j);
+      if (joint == nullptr) {
+        throw ControllerConfigError(where + naming(b.params, j) + " joint '" + j + "', which robot '" + robot.name +
+                                    "' does not have");
+      }
+      using description::JointType;
+      if (joint->type != JointType::Revolute && joint->type != JointType::Continuous && joint->type != JointType::Prismatic) {
+        throw ControllerConfigError(where + "joint '" + j + "' (line " + std::to_string(joint->line) +
+                                    ") is not revolute, continuous or prismatic");
+      }
+    }
+    b.controller = kind->make(context);
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+}  // namespace mechsim::control

@@ -1,0 +1,78 @@
+// The floating root link as a physics port (read in the tick, a velocity set before a step) and
+// per-joint effort bounds that model plugins change at run time.
+#include "physics/physics.hpp"
+#include "physics/physics_data.hpp"
+#include "physics/transform.hpp"
+
+namespace mechsim::physics {
+namespace {
+
+using description::Pose;
+using description::Quat;
+using description::Vec3;
+
+// Finds the root's free joint and the root link's frame in its body the first time.
+void find_root(const PhysicsModel& model, const Physics::Data& data) {
+  if (data.root_known) return;
+  data.root_free_joint = -1;
+  for (int j = 0; j < data.m->njnt; ++j) {
+    if (data.m->jnt_type[j] == mjJNT_FREE) {
+      data.root_free_joint = j;
+      break;
+    }
+  }
+  const auto link = model.link_index(model.root_link());
+  data.X_BodyRoot = link ? model.links()[*link].X_BL : Pose{};
+  data.root_known = true;
+}
+
+Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
+}  // namespace
+
+void Physics::set_effort_limit(std::size_t j, double limit) noexcept {
+  const JointInfo& info = model_->joints()[j];
+  if (info.actuator < 0) return;
+  mjModel* m = data_->m;
+  const double bound = limit > 0.0 ? limit : info.effort_limit;
+  m->actuator_forcelimited[info.actuator] = bound > 0.0 ? 1 : 0;
+  m->actuator_forcerange[2 * info.actuator] = -bound;
+  m->actuator_forcerange[2 * info.actuator + 1] = bound;
+}
+
+bool Physics::root_state(Pose& X_WB, Twist& V_WB) const noexcept {
+  find_root(*model_, *data_);
+  const mjModel* m = data_->m;
+  const int j = data_->root_free_joint;
+  if (j < 0) return false;
+  const mjtNum* q = data_->d->qpos + m->jnt_qposadr[j];
+  const mjtNum* v = data_->d->qvel + m->jnt_dofadr[j];
+  const Pose X_WBody{{q[0], q[1], q[2]}, quat_normalized(Quat{q[3], q[4], q[5], q[6]})};
+  const Pose& X_BodyL = data_->X_BodyRoot;
+  X_WB = compose(X_WBody, X_BodyL);
+  // MuJoCo's free joint: the body origin's velocity in W, the angular velocity in the body frame.
+  const Vec3 w = rotate(X_WBody.orientation, Vec3{v[3], v[4], v[5]});
+  const Vec3 r = rotate(X_WBody.orientation, X_BodyL.position);  // body origin -> link origin, W
+  const Vec3 wr = cross(w, r);
+  V_WB.linear = {v[0] + wr.x, v[1] + wr.y, v[2] + wr.z};
+  V_WB.angular = w;
+  return true;
+}
+
+void Physics::command_root_velocity(const Twist& V_WB) noexcept {
+  find_root(*model_, *data_);
+  const mjModel* m = data_->m;
+  const int j = data_->root_free_joint;
+  if (j < 0) return;
+  const mjtNum* q = data_->d->qpos + m->jnt_qposadr[j];
+  mjtNum* v = data_->d->qvel + m->jnt_dofadr[j];
+  const Quat R_WBody = quat_normalized(Quat{q[3], q[4], q[5], q[6]});
+  const Vec3 r = rotate(R_WBody, data_->X_BodyRoot.position);
+  const Vec3 wr = cross(V_WB.angular, r);
+  const Vec3 w_body = rotate(quat_conjugate(R_WBody), V_WB.angular);
+  const mjtNum values[6] = {V_WB.linear.x - wr.x, V_WB.linear.y - wr.y, V_WB.linear.z - wr.z, w_body.x, w_body.y, w_body.z};
+  for (int i = 0; i < 6; ++i) v[i] = values[i];
+  data_->stale = true;
+}
+
+}  // namespace mechsim::physics
