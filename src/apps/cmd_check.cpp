@@ -7,6 +7,7 @@
 // the robot is loaded once, then each check of the loaded robot runs in turn (the summary, the
 // meshes the physics would leave out, the controllers). A further check
 // (`--controllers FILE.yaml` is one) adds its option in add_check_command and a step in run_check.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -55,15 +56,33 @@ void controllers_step(const CheckOptions& options, CheckContext& context, std::o
   for (const std::string& key : root.keys()) {
     if (root.child(key).is_map() && !root.child(key).has("type")) sim::fill_description_params(root.child(key), context.robot.model);
   }
-  const std::vector<control::ControllerCheck> checks =
-      control::check_controllers(mechanism, root, control::builtin_controller_registry());
+  const control::ControllerPluginSet plugins = control::find_controller_plugins();
+  const control::ControllerRegistry registry = control::controller_registry_with_plugins(plugins);
+  if (!plugins.files.empty()) {
+    out << "controller plugins (" << plugins.classes.size() << " types from " << plugins.files.size() << " descriptions):\n";
+    for (const control::ControllerPluginClass& p : plugins.classes) {
+      out << "  " << p.name << " (" << p.type << " in " << p.library << "), " << p.origin << "\n";
+    }
+  }
+  for (const std::string& note : registry.notes()) context.warnings.push_back(note);
+  const std::vector<control::ControllerCheck> checks = control::check_controllers(mechanism, root, registry);
   std::size_t loaded = 0;
+  std::vector<std::string> unsupported;  // each unknown type once, in document order
   out << "controllers (" << options.controllers << "):\n";
   for (const control::ControllerCheck& c : checks) {
     out << "  " << control::describe(c) << "\n";
     if (c.ok()) ++loaded;
+    if (!c.type.empty() && !registry.has(c.type) &&
+        std::find(unsupported.begin(), unsupported.end(), c.type) == unsupported.end()) {
+      unsupported.push_back(c.type);
+    }
   }
   out << "  " << loaded << " of " << checks.size() << " controllers load\n";
+  if (!unsupported.empty()) {
+    out << "  unsupported types (" << unsupported.size() << "):";
+    for (const std::string& t : unsupported) out << " " << t;
+    out << "\n";
+  }
   if (checks.empty()) {
     std::cerr << "mechsim check: error: " << options.controllers << ": no controllers found (a controller is a map with a 'type')\n";
     context.failed = true;
@@ -110,7 +129,7 @@ void plugins_step(const CheckOptions& options, CheckContext& context, std::ostre
     for (const control::ModelPluginBuild& b : plugins) mechanism::add_direct_joints(mechanism, robot, b.joints);
     mechanism::MechanismState state = mechanism::make_state(mechanism);
     state.base.floating = robot.root_link != "world";
-    control::ControllerManager manager(mechanism, state, server, control::builtin_controller_registry());
+    control::ControllerManager manager(mechanism, state, server, control::controller_registry_with_plugins());
     for (control::ModelPluginBuild& b : plugins) {
       const control::ControlResult r = manager.add_model_plugin(b.name, b.filename, std::move(b.controller), b.params, b.origin, 0.0);
       if (!r) {

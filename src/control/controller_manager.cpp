@@ -200,11 +200,17 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
   } catch (const ParamsError& e) {
     return ControlResult::failure("could not load controller '" + name + "': " + e.what());
   }
-  entry->controller = registry_.create(entry->type);
+  try {
+    entry->controller = registry_.create(entry->type);
+  } catch (const std::exception& e) {
+    return ControlResult::failure("could not load controller '" + name + "': " + e.what());
+  }
   if (!entry->controller) {
+    std::string notes;
+    for (const std::string& note : registry_.notes()) notes += "; " + note;
     return ControlResult::failure("could not load controller '" + name + "': unknown type '" + entry->type +
                                   "' (parameter " + join_param_path(path, "type") + "); known types: " +
-                                  join(registry_.types()));
+                                  join(registry_.types()) + notes);
   }
   RobotHardware hardware(model_, state_);
   hardware.set_direct_joint_owner([this](int joint) {  // under config_mutex_, as load_controller

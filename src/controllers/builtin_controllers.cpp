@@ -75,4 +75,10 @@ ControllerRegistry builtin_controller_registry() {
   return registry;
 }
 
+ControllerRegistry controller_registry_with_plugins(const ControllerPluginSet& plugins) {
+  ControllerRegistry registry = builtin_controller_registry();
+  register_controller_plugins(registry, plugins);
+  return registry;
+}
+
 }  // namespace mechsim::control

@@ -64,7 +64,9 @@ void collect_packages(const fs::path& root, int depth, std::vector<fs::path>& ou
 
 }  // namespace
 
-std::vector<std::string> gazebo_ros_exports(const std::string& attribute) {
+std::vector<std::string> gazebo_ros_exports(const std::string& attribute) { return package_exports("gazebo_ros", attribute); }
+
+std::vector<std::string> package_exports(const std::string& element, const std::string& attribute) {
   std::vector<std::string> out;
   const char* env = std::getenv("ROS_PACKAGE_PATH");
   if (env == nullptr) return out;
@@ -83,8 +85,8 @@ std::vector<std::string> gazebo_ros_exports(const std::string& attribute) {
     if (doc.LoadFile((dir / "package.xml").string().c_str()) != tinyxml2::XML_SUCCESS) continue;
     const tinyxml2::XMLElement* package = doc.FirstChildElement("package");
     const tinyxml2::XMLElement* exports = package != nullptr ? package->FirstChildElement("export") : nullptr;
-    for (const tinyxml2::XMLElement* g = exports != nullptr ? exports->FirstChildElement("gazebo_ros") : nullptr; g != nullptr;
-         g = g->NextSiblingElement("gazebo_ros")) {
+    for (const tinyxml2::XMLElement* g = exports != nullptr ? exports->FirstChildElement(element.c_str()) : nullptr;
+         g != nullptr; g = g->NextSiblingElement(element.c_str())) {
       const char* value = g->Attribute(attribute.c_str());
       if (value == nullptr) continue;
       std::string path = value;

@@ -29,4 +29,9 @@ std::optional<std::string> resolve_uri(const std::string& uri, const PackageMap&
 // takes every package that exports the attribute.
 std::vector<std::string> gazebo_ros_exports(const std::string& attribute);
 
+// The same for any exporting element: `attribute` of every <element> in the <export> of every
+// package.xml under ROS_PACKAGE_PATH, ${prefix} replaced, in the same order. Controller plugin
+// descriptions are ("controller_interface", "plugin"), as pluginlib finds them.
+std::vector<std::string> package_exports(const std::string& element, const std::string& attribute);
+
 }  // namespace mechsim::description

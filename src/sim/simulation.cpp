@@ -114,7 +114,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   mechanism_state_->base.floating = !physics_model_->fixed_to_world();
   fill_description_params(controller_params, robot_);
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
-                                                         control::builtin_controller_registry());
+                                                         control::controller_registry_with_plugins());
 
   const std::size_t n = mechanism_->joints.size();
   physics_joint_.assign(n, -1);

@@ -2,9 +2,10 @@
 // through diff_drive_controller (cmd_vel -> odom and /tf, cmd_vel_out) and through Gazebo's diff
 // drive plugin alone (cmd_vel, odom at updateRate, /tf, wheel joint_states, the wheels' ramp at
 // wheelAcceleration), the skid steer and planar move plugins and the joint state publisher plugin
-// on their gazebo_plugins topics, and effort_controllers/GripperActionController's
+// on their gazebo_plugins topics, effort_controllers/GripperActionController's
 // control_msgs/GripperCommand action (reached for free closing, stalled on a block with its
-// max_effort). The node runs at half real time, so that commands timed by the wall clock are
+// max_effort), and a controller plugin's type (examples/controller_plugin) spawned by name and
+// commanded on its command topic. The node runs at half real time, so that commands timed by the wall clock are
 // timed to a few ms of simulated time; every figure is measured in simulated time (message
 // stamps), the true pose from the physics (_publish_odom_tf with odom frame "world").
 #include <gmock/gmock.h>
@@ -23,6 +24,7 @@
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
+#include <std_msgs/Float64.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "ros_fixture.hpp"
@@ -377,6 +379,43 @@ TEST_F(TestbotNode, GripperCommandActionReachesFreeAndStallsOnTheBlock) {
   EXPECT_FALSE(r.reached_goal);
   EXPECT_NEAR(r.position, 0.253, 0.005);
   EXPECT_NEAR(r.effort, 0.05, 0.001);
+}
+
+// The example controller plugin's type, found through its package's export on ROS_PACKAGE_PATH as
+// the node starts, is loaded by name by the spawner; std_msgs/Float64 on <controller>/command
+// moves the finger there, and joint_states shows it.
+TEST_F(TestbotNode, ControllerPluginTypeSpawnsByNameAndFollowsItsCommandTopic) {
+  const std::string packages = std::string(MECHSIM_BINARY_DIR) + "/plugin_packages";
+  const char* old = std::getenv("ROS_PACKAGE_PATH");
+  const std::string saved = old != nullptr ? old : "";
+  ::setenv("ROS_PACKAGE_PATH", (packages + (saved.empty() ? "" : ":" + saved)).c_str(), 1);
+  start("gripper", {{"interface", "EffortJointInterface"}}, "", "/gripper");
+  if (old != nullptr) ::setenv("ROS_PACKAGE_PATH", saved.c_str(), 1);
+  else ::unsetenv("ROS_PACKAGE_PATH");
+  load(std::string(MECHSIM_SOURCE_DIR) + "/examples/controller_plugin/config/gripper_bang_bang.yaml");
+  std::mutex m;
+  double finger = std::nan("");
+  ::ros::Subscriber sub = nh_.subscribe<sensor_msgs::JointState>("/gripper/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& js) {
+    for (std::size_t i = 0; i < js->name.size() && i < js->position.size(); ++i) {
+      if (js->name[i] != "left_finger_joint") continue;
+      std::lock_guard<std::mutex> lock(m);
+      finger = js->position[i];
+    }
+  });
+  const auto position = [&] {
+    std::lock_guard<std::mutex> lock(m);
+    return finger;
+  };
+  ASSERT_TRUE(spawn({"joint_state_controller", "finger_bang_bang"})) << spawner_->log() << node_->log();
+  // setpoint 0.2 rad from the YAML
+  EXPECT_TRUE(wait_until([&] { return std::fabs(position() - 0.2) < 0.01; }, 20.0)) << "finger at " << position();
+  ::ros::Publisher pub = nh_.advertise<std_msgs::Float64>("/gripper/finger_bang_bang/command", 1, true);
+  std_msgs::Float64 target;
+  target.data = -0.1;
+  pub.publish(target);
+  EXPECT_TRUE(wait_until([&] { return std::fabs(position() + 0.1) < 0.01; }, 20.0)) << "finger at " << position();
+  settle(0.3);
+  EXPECT_NEAR(position(), -0.1, 0.01);
 }
 
 }  // namespace
