@@ -23,18 +23,23 @@ namespace {
 
 std::string at(const std::string& file, int line) { return file + ":" + std::to_string(line); }
 
+struct ResolvedLibrary {
+  std::string path;
+  std::string missing;  // the file beside the description, when it was not there
+};
+
 // pluginlib's library path: relative to the description's folder here, the platform's suffix added.
-std::string resolve_library(const std::string& xml_path, const std::string& path) {
+ResolvedLibrary resolve_library(const std::string& xml_path, const std::string& path) {
   fs::path library(path);
   if (!library.has_extension()) library += ".so";
-  if (library.is_absolute()) return library.string();
-  const fs::path beside = fs::path(xml_path).parent_path() / library;
+  if (library.is_absolute()) return {library.string(), ""};
   std::error_code ec;
-  if (fs::exists(beside, ec)) return fs::absolute(beside, ec).lexically_normal().string();
-  return library.filename().string();  // the dynamic loader's search path
+  const fs::path beside = fs::absolute(fs::path(xml_path).parent_path() / library, ec).lexically_normal();
+  if (fs::exists(beside, ec)) return {beside.string(), ""};
+  return {library.filename().string(), beside.string()};  // the dynamic loader's search path
 }
 
-void read_class(const tinyxml2::XMLElement& element, const std::string& xml_path, const std::string& library,
+void read_class(const tinyxml2::XMLElement& element, const std::string& xml_path, const ResolvedLibrary& library,
                 ControllerPluginSet& set) {
   const std::string where = at(xml_path, element.GetLineNum());
   const char* type = element.Attribute("type");
@@ -43,7 +48,7 @@ void read_class(const tinyxml2::XMLElement& element, const std::string& xml_path
     return;
   }
   const char* name = element.Attribute("name");
-  ControllerPluginClass c{(name != nullptr && *name != '\0') ? name : type, type, library, where};
+  ControllerPluginClass c{(name != nullptr && *name != '\0') ? name : type, type, library.path, library.missing, where};
   for (const ControllerPluginClass& other : set.classes) {
     if (other.name == c.name) {
       set.errors.push_back(where + ": controller type '" + c.name + "' is declared again (first at " + other.origin +
@@ -60,7 +65,7 @@ void read_library(const tinyxml2::XMLElement& element, const std::string& xml_pa
     set.errors.push_back(at(xml_path, element.GetLineNum()) + ": <library> has no 'path' attribute (e.g. lib/libmy_controllers)");
     return;
   }
-  const std::string library = resolve_library(xml_path, path);
+  const ResolvedLibrary library = resolve_library(xml_path, path);
   bool any = false;
   for (const tinyxml2::XMLElement* c = element.FirstChildElement("class"); c != nullptr; c = c->NextSiblingElement("class")) {
     read_class(*c, xml_path, library, set);
@@ -131,7 +136,9 @@ std::unique_ptr<Controller> create_plugin_controller(const ControllerPluginClass
   void* raw = dlopen(plugin.library.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
   if (raw == nullptr) {
     const char* why = dlerror();
-    throw ControllerConfigError(what + ": cannot load library " + plugin.library + ": " + (why != nullptr ? why : "unknown error"));
+    const std::string searched = plugin.missing.empty() ? "" : " (not at " + plugin.missing + ", so looked up by name)";
+    throw ControllerConfigError(what + ": cannot load library " + plugin.library + searched + ": " +
+                                (why != nullptr ? why : "unknown error"));
   }
   std::shared_ptr<void> library(raw, [](void* h) { dlclose(h); });
   using Entry = const api::Library* (*)();

@@ -33,6 +33,7 @@ struct ControllerPluginClass {
   std::string name;     // the controller type users write: "my_pkg/MyController"
   std::string type;     // the C++ type the library lists: "my_pkg::MyController"
   std::string library;  // the library file as resolved
+  std::string missing;  // the file beside the description that was not there ("" when found)
   std::string origin;   // where it was declared: "/path/controller_plugins.xml:3"
 };
 

@@ -223,7 +223,8 @@ TEST_F(ControllerPlugins, AMissingLibraryIsOneLineNamingLibraryTypeAndReason) {
   const std::string error = load_error(controller_registry_with_plugins(set));
   EXPECT_THAT(error, HasSubstr("could not load controller 'bang'"));
   EXPECT_THAT(error, HasSubstr(std::string("controller type '") + kType + "' (declared at " + xml + ":2)"));
-  EXPECT_THAT(error, HasSubstr("cannot load library libmechsim_example_controllers.so"));
+  EXPECT_THAT(error, HasSubstr("cannot load library libmechsim_example_controllers.so (not at " +
+                               (dir_ / "pkg/lib/libmechsim_example_controllers.so").string() + ", so looked up by name)"));
   EXPECT_THAT(error, HasSubstr("cannot open shared object file"));  // dlerror's reason
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
@@ -264,7 +265,7 @@ TEST_F(ControllerPlugins, ALibraryOfAnotherApiVersionOrWithoutEntryPointIsRefuse
 TEST_F(ControllerPlugins, AnUnknownTypeNamesTheDescriptionsThatFailedAndBuiltinsWin) {
   ControllerPluginSet set;
   read_controller_plugin_description(write("broken.xml", "<library path=\"x\">\n<class"), set);
-  set.classes.push_back({"effort_controllers/JointEffortController", "x::Y", "libx.so", "y.xml:4"});
+  set.classes.push_back({"effort_controllers/JointEffortController", "x::Y", "libx.so", "", "y.xml:4"});
   const ControllerRegistry registry = controller_registry_with_plugins(set);
   EXPECT_TRUE(registry.has("effort_controllers/JointEffortController"));
   const std::string error = load_error(registry);
