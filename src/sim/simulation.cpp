@@ -535,9 +535,8 @@ std::vector<std::string> Simulation::physics_warnings() const {
 
 void Simulation::load_and_start(const std::vector<std::string>& controllers) {
   for (const std::string& name : controllers) {
-    if (control::ControlResult r = load_controller(name); !r) {
-      throw std::runtime_error("could not load controller '" + name + "': " + r.error);
-    }
+    // The manager's error names the controller already.
+    if (control::ControlResult r = load_controller(name); !r) throw std::runtime_error(r.error);
   }
   control::SwitchResult s = manager_->switch_controllers(controllers, {}, control::SwitchStrictness::Strict);
   if (!s) throw std::runtime_error("could not start controllers: " + s.error);

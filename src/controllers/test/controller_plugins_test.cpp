@@ -136,7 +136,7 @@ TEST_F(ControllerPlugins, MalformedAndIncompleteDescriptionsNameFileAndLine) {
   read_controller_plugin_description(wrong_root, set);
   read_controller_plugin_description((dir_ / "absent.xml").string(), set);
   ASSERT_EQ(set.errors.size(), 5u);
-  EXPECT_THAT(set.errors[0], HasSubstr(broken + ":3: malformed controller plugin description"));
+  EXPECT_THAT(set.errors[0], HasSubstr(broken + ":2: malformed controller plugin description"));
   EXPECT_THAT(set.errors[1], HasSubstr(no_type + ":3: <class> has no 'type' attribute"));
   EXPECT_THAT(set.errors[2], HasSubstr(no_path + ":1: <library> has no 'path' attribute"));
   EXPECT_THAT(set.errors[3], HasSubstr(wrong_root + ":1: <robot> is not a controller plugin description"));
