@@ -169,8 +169,7 @@ std::unique_ptr<Controller> create_plugin_controller(const ControllerPluginClass
     }
     std::unique_ptr<api::Controller> object(c.create != nullptr ? c.create() : nullptr);
     if (!object) throw ControllerConfigError(what + ": library " + plugin.library + " made no '" + plugin.type + "'");
-    return std::make_unique<PluginController>(std::move(library), std::move(object), plugin.name,
-                                              plugin.library + " (" + plugin.origin + ")");
+    return std::make_unique<PluginController>(std::move(library), std::move(object));
   }
   throw ControllerConfigError(what + ": library " + plugin.library + " has no class '" + plugin.type + "' (it has: " +
                               (listed.empty() ? std::string("none") : listed) + ")");

@@ -137,13 +137,8 @@ class ApiSetup final : public api::Setup {
 
 }  // namespace
 
-PluginController::PluginController(std::shared_ptr<void> library, std::unique_ptr<api::Controller> plugin,
-                                   std::string type, std::string origin)
-    : library_(std::move(library)),
-      bindings_(std::make_unique<Bindings>()),
-      plugin_(std::move(plugin)),
-      type_(std::move(type)),
-      origin_(std::move(origin)) {}
+PluginController::PluginController(std::shared_ptr<void> library, std::unique_ptr<api::Controller> plugin)
+    : library_(std::move(library)), bindings_(std::make_unique<Bindings>()), plugin_(std::move(plugin)) {}
 
 PluginController::~PluginController() = default;
 

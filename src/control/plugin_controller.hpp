@@ -18,10 +18,8 @@ namespace mechsim::control {
 
 class PluginController : public Controller {
  public:
-  // `library` keeps the plugin's code loaded for as long as `plugin` lives; `type` (the YAML's type
-  // name) and `origin` ("library (from xml:line)") appear in errors.
-  PluginController(std::shared_ptr<void> library, std::unique_ptr<controller_api::Controller> plugin, std::string type,
-                   std::string origin);
+  // `library` keeps the plugin's code loaded for as long as `plugin` lives.
+  PluginController(std::shared_ptr<void> library, std::unique_ptr<controller_api::Controller> plugin);
   ~PluginController() override;
 
   bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
@@ -38,8 +36,6 @@ class PluginController : public Controller {
   std::unique_ptr<StatePort<JointControllerState>> state_;
   std::unique_ptr<Bindings> bindings_;
   std::unique_ptr<controller_api::Controller> plugin_;
-  std::string type_;
-  std::string origin_;
 };
 
 }  // namespace mechsim::control
