@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -388,11 +389,12 @@ TEST_F(TestbotNode, ControllerPluginTypeSpawnsByNameAndFollowsItsCommandTopic) {
   const std::string packages = std::string(MECHSIM_BINARY_DIR) + "/plugin_packages";
   const char* old = std::getenv("ROS_PACKAGE_PATH");
   const std::string saved = old != nullptr ? old : "";
+  test_ = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  load(std::string(MECHSIM_SOURCE_DIR) + "/examples/controller_plugin/config/gripper_bang_bang.yaml");
   ::setenv("ROS_PACKAGE_PATH", (packages + (saved.empty() ? "" : ":" + saved)).c_str(), 1);
   start("gripper", {{"interface", "EffortJointInterface"}}, "", "/gripper");
   if (old != nullptr) ::setenv("ROS_PACKAGE_PATH", saved.c_str(), 1);
   else ::unsetenv("ROS_PACKAGE_PATH");
-  load(std::string(MECHSIM_SOURCE_DIR) + "/examples/controller_plugin/config/gripper_bang_bang.yaml");
   std::mutex m;
   double finger = std::nan("");
   ::ros::Subscriber sub = nh_.subscribe<sensor_msgs::JointState>("/gripper/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& js) {
