@@ -53,7 +53,9 @@ if ((with_ros)); then
              # packages hold diagnostic_aggregator's and stereo_image_proc's package.xml, which roslaunch
              # looks for).
              ros-robot-state-publisher ros-image-proc ros-stereo-image-proc libdiagnostic-aggregator-tools
-             libdiagnostic-aggregator-dev libstereo-image-proc-dev)
+             libdiagnostic-aggregator-dev libstereo-image-proc-dev
+             # stereo_image_proc.launch runs its nodelets through the nodelet tool.
+             libnodeletlib-tools)
 fi
 
 missing=()

@@ -25,6 +25,7 @@ struct RunArgs {
   bool no_plots = false;
   double duration = 0.0;
   std::string integrator;  // empty: the scenario's own
+  double timing = 0.0;     // s of simulated time per timing.csv row; 0: no timing
 };
 
 // A one-line progress bar on a terminal; a plain line every 10 % of the run otherwise.
@@ -80,6 +81,7 @@ void run(const RunArgs& args, CommandResult& result) {
   sim::RunOptions options;
   options.output_dir = args.output.empty() ? (std::filesystem::path("out") / scenario.name).string() : args.output;
   options.plots = !args.no_plots;
+  options.timing_window = args.timing;
   options.progress = progress_printer();
   // Warnings as they arise (at spawn, before a long run), each printed once.
   auto printed = std::make_shared<std::vector<std::string>>();
@@ -117,6 +119,9 @@ void add_run_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("-o,--output", args->output, "Report folder (default: out/<scenario name>)");
   cmd->add_flag("--no-plots", args->no_plots, "Do not draw PNG plots");
   cmd->add_option("--duration", args->duration, "Override the scenario's duration (s)");
+  cmd->add_option("--timing", args->timing,
+                  "Write timing.csv: tick time p50/p99/max, CPU time and resident memory per this many s of simulated time")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--integrator", args->integrator, "Override the scenario's integrator: implicit, euler or rk4")
       ->check(CLI::IsMember({"implicit", "euler", "rk4"}));
   cmd->callback([args, &result] { run(*args, result); });

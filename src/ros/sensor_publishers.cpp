@@ -60,12 +60,19 @@ struct SensorPublishers::Output {
   std::string encoding;
   std::vector<::ros::Publisher> images, infos;
   ::ros::Publisher depth, depth_info, points;
+  // Only camera_info subscribed (rostest's hztest on a camera_info topic): the plugins publish it
+  // at the camera's rate; mechsim does without rendering, from the intrinsics.
+  std::atomic<bool> info_wanted{false};
+  std::vector<sensors::CameraInfo> lens_infos;
+  double period = 0.0;    // s of sim time between camera_info messages
+  double next_info = 0.0;  // s of sim time
 
   // Under a lock so that the last recount sees the last connection change (a recount that read
   // the counts before a connection cannot overwrite the one its callback made after it).
   void recount() {
     std::lock_guard<std::mutex> lock(recount_mutex);
     wanted.store(any_subscribed(triggers), std::memory_order_relaxed);
+    info_wanted.store(any_subscribed(infos) || (depth_info && depth_info.getNumSubscribers() > 0), std::memory_order_relaxed);
   }
   std::mutex recount_mutex;
 };
@@ -292,6 +299,8 @@ void SensorPublishers::add_camera(std::size_t sensor, const description::SensorS
   o.name = spec.name;
   o.frame = frame;
   o.encoding = image_encoding(camera.lenses.empty() ? std::string() : camera.lenses.front().format);
+  o.lens_infos = bridge_.camera_infos(sensor);
+  o.period = spec.update_rate > 0.0 ? 1.0 / spec.update_rate : 0.0;
   auto note = [&](const std::string& topic, const char* type) {
     topics_.push_back(spec.name + " -> " + topic + " (" + type + ", frame " + frame + ")");
   };
@@ -337,7 +346,13 @@ void SensorPublishers::publish() {
       // What the sensor read before it was switched off is stale: wait for a fresh sample.
       o.published = bridge_.sensor_reading(o.sensor).count;
     }
-    if (!wanted) continue;
+    if (!wanted) {
+      if (o.kind == Kind::Camera && o.info_wanted.load(std::memory_order_relaxed)) {
+        if (cpu_start < 0.0) cpu_start = thread_cpu_seconds();
+        publish_camera_info_only(o);
+      }
+      continue;
+    }
     const sensors::SensorReading& r = bridge_.sensor_reading(o.sensor);
     if (r.count == o.published) continue;
     o.published = r.count;
@@ -389,6 +404,20 @@ void SensorPublishers::publish() {
   pushed_ = false;
   if (cpu_start >= 0.0) stats_.publish_cpu_seconds += thread_cpu_seconds() - cpu_start;
   stats_.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+}
+
+void SensorPublishers::publish_camera_info_only(Output& o) {
+  const double time = bridge_.time();
+  // Not due yet (unless the clock went back, a reset of the world).
+  if (time + 1e-9 < o.next_info && o.next_info - time <= o.period + 1e-9) return;
+  o.next_info = o.period > 0.0 ? next_due_after(time, o.period) : time;
+  const ::ros::Time stamp(time);
+  for (std::size_t k = 0; k < o.infos.size() && k < o.lens_infos.size(); ++k) {
+    if (o.infos[k].getNumSubscribers() > 0)
+      send<sensor_msgs::CameraInfo>(o.infos[k], stamp, o.frame, [&](auto& m) { fill_camera_info(o.lens_infos[k], m); });
+  }
+  if (o.depth_info && o.depth_info.getNumSubscribers() > 0 && !o.lens_infos.empty())
+    send<sensor_msgs::CameraInfo>(o.depth_info, stamp, o.frame, [&](auto& m) { fill_camera_info(o.lens_infos.front(), m); });
 }
 
 void SensorPublishers::publish_camera(Output& o, const sensors::SensorReading& r) {

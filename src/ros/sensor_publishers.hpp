@@ -73,6 +73,7 @@ class SensorPublishers {
  private:
   void add_camera(std::size_t sensor, const description::SensorSpec& spec, const std::string& frame);
   void publish_camera(Output& o, const sensors::SensorReading& r);
+  void publish_camera_info_only(Output& o);
   void add_pressure(const std::string& side);
   void publish_pressure(Pressure& p, double time);
   // A new message of type M stamped and framed, filled by fill(M&), queued for the sender.

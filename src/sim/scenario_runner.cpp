@@ -295,6 +295,8 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     return wall > 0.0 ? sim->time() / wall : 0.0;
   };
 
+  std::optional<TickTiming> timing;
+  if (options.timing_window > 0.0) timing.emplace(options.timing_window, s.period);
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
     if (options.interrupt != nullptr) {
       if (const int signal = options.interrupt->load(std::memory_order_relaxed); signal != 0) {
@@ -318,7 +320,9 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       }
     }
 
+    const auto tick_start = timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     const TickResult r = sim->step();
+    if (timing) timing->tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - tick_start).count(), sim->time());
     if (!r) {
       result.error = r.error;
       break;
@@ -348,6 +352,10 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   }
   result.completed = result.error.empty();
   result.sim_time = sim->time();
+  if (timing) {
+    timing->finish(sim->time());
+    result.timing = timing->windows();
+  }
   result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   result.real_time_factor = rtf_now();
   for (std::string& w : sim->physics_warnings()) result.warnings.push_back(std::move(w));
@@ -480,6 +488,10 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     sensor_report.write(result, options.plots);  // before summary.json, which lists the files
     wheel_report.write(result, options.plots);
     camera_report.write(result);
+    if (timing) {
+      timing->write_csv((std::filesystem::path(options.output_dir) / "timing.csv").string());
+      result.files.push_back("timing.csv");
+    }
     write_report(s, *sim, recorder, result, options);
   }
   return result;

@@ -34,6 +34,7 @@
 #include "controllers/gripper/pr2_gripper_ports.hpp"
 #include "controllers/trajectory/trajectory_msgs.hpp"
 #include "sim/scenario.hpp"
+#include "sim/tick_timing.hpp"
 
 namespace mechsim::sim {
 
@@ -53,6 +54,9 @@ struct RunOptions {
   // Non-zero (a signal number, set by a signal handler): the run stops before its next tick and
   // its report says "interrupted". Read once per tick; lock-free, so a handler may write it.
   const std::atomic<int>* interrupt = nullptr;
+  // > 0: measure every tick and write timing.csv with one row per this many s of simulated time
+  // (tick_timing.hpp: tick time p50/p99/max, CPU time, resident memory); ScenarioResult::timing.
+  double timing_window = 0.0;
 };
 
 // Something that happened to the robot during a run (summary.json "events").
@@ -136,6 +140,7 @@ struct ScenarioResult {
   std::vector<GripperGoalOutcome> gripper_goals;
   std::vector<CheckOutcome> checks;
   std::vector<WheelOutcome> wheels;  // with a soil only
+  std::vector<TimingWindow> timing;  // RunOptions::timing_window
   std::vector<std::string> files;  // written, relative to output_dir
   std::vector<std::string> warnings;
 };

@@ -9,6 +9,7 @@
 #include "controllers/plugins/model_plugins.hpp"
 #include "ros/bridge/bridge_impl.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
+#include "sensors/sensor_types.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world.hpp"
 
@@ -272,6 +273,13 @@ const sensors::SensorReading& SimBridge::sensor_reading(std::size_t i) const {
 }
 
 void SimBridge::set_sensor_enabled(std::size_t i, bool enabled) { impl_->simulation->sensors().set_enabled(i, enabled); }
+
+std::vector<sensors::CameraInfo> SimBridge::camera_infos(std::size_t i) const {
+  std::vector<sensors::CameraInfo> out;
+  if (const auto* camera = dynamic_cast<const sensors::CameraSensor*>(&impl_->simulation->sensors().sensor(i)))
+    for (const sensors::CameraSensor::Lens& lens : camera->lenses()) out.push_back(lens.info);
+  return out;
+}
 
 std::vector<std::string> SimBridge::skipped_sensors() const {
   std::vector<std::string> out;

@@ -247,6 +247,8 @@ class SimBridge {
   const description::SensorSpec& sensor_spec(std::size_t i) const;
   const sensors::SensorReading& sensor_reading(std::size_t i) const;
   void set_sensor_enabled(std::size_t i, bool enabled);
+  // A camera sensor's CameraInfo per lens, known without rendering (empty for other sensors).
+  std::vector<sensors::CameraInfo> camera_infos(std::size_t i) const;
   // Declared sensors mechsim does not simulate: "SOURCE:LINE: sensor 'NAME': reason", one line
   // each (the ones left out for this physics model are in physics_warnings()).
   std::vector<std::string> skipped_sensors() const;
