@@ -12,6 +12,7 @@
 #include "controllers/drive/diff_drive_params.hpp"
 #include "controllers/drive/pr2_base_params.hpp"
 #include "controllers/drive/rover_drive_params.hpp"
+#include "description/ros_control_plugin.hpp"
 #include "description/sensor_spec.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/direct_joints.hpp"
@@ -113,6 +114,15 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   mechanism_state_->base.floating = !physics_model_->fixed_to_world();
   fill_description_params(controller_params, robot_);
+  // gazebo_ros_control's plugin element: its pid_gains (read now, as DefaultRobotHWSim reads them
+  // at load) and a RobotHWSim mechsim cannot load.
+  const std::optional<description::RosControlPlugin> ros_control = description::find_ros_control_plugin(robot_);
+  if (ros_control && !ros_control->default_hw()) {
+    plugin_notes_.push_back(ros_control->origin + ": gazebo_ros_control robotSimType '" + ros_control->robot_sim_type +
+                            "' is not simulated (mechsim cannot load a RobotHWSim plugin): the transmissions' joints get " +
+                            description::kDefaultRobotHWSim + "'s behaviour instead");
+  }
+  pid_drive_ = PidGainsDrive(*mechanism_, ros_control, options_.parameter_root.value_or(controller_params));
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
                                                          control::builtin_controller_registry());
 
@@ -343,11 +353,18 @@ void Simulation::write_physics() {
       physics_->set_effort_limit(pj, js.effort_limit);
       physics_effort_limit_[j] = js.effort_limit;
     }
-    if (js.command_mode != physics_mode_[j]) {
-      physics_->set_mode(pj, to_physics_mode(js.command_mode), servo_gains_[j]);
-      physics_mode_[j] = js.command_mode;
+    // gazebo_ros_control's pid_gains turn a position/velocity command into an effort here.
+    const bool pid = js.command_mode != HardwareInterface::Effort && pid_drive_.active(j);
+    const HardwareInterface mode = pid ? HardwareInterface::Effort : js.command_mode;
+    if (mode != physics_mode_[j]) {
+      physics_->set_mode(pj, to_physics_mode(mode), servo_gains_[j]);
+      physics_mode_[j] = mode;
     }
-    switch (js.command_mode) {
+    if (pid) {
+      physics_->set_effort(pj, pid_drive_.effort(j, mechanism_->joints[j], js, options_.period));
+      continue;
+    }
+    switch (mode) {
       case HardwareInterface::Effort: physics_->set_effort(pj, effort_scale_[j] * js.commanded_effort); break;
       case HardwareInterface::Position: physics_->set_position_command(pj, js.commanded_position); break;
       case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
@@ -493,6 +510,7 @@ void Simulation::reset() {
   external_.clear();
   apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
+  pid_drive_.reset();
   mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
   fresh.base.floating = !physics_model_->fixed_to_world();
   *mechanism_state_ = fresh;
