@@ -123,6 +123,22 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
                             description::kDefaultRobotHWSim + "'s behaviour instead");
   }
   pid_drive_ = PidGainsDrive(*mechanism_, ros_control, options_.parameter_root.value_or(controller_params));
+  if (ros_control && ros_control->control_period) {
+    const double wanted = *ros_control->control_period;
+    const long long n = std::llround(wanted / options_.period);
+    control_every_ = static_cast<std::uint64_t>(std::max(1LL, n));
+    char note[1024];
+    if (wanted < options_.period) {
+      std::snprintf(note, sizeof note, "%s: gazebo_ros_control controlPeriod %g s is shorter than the period %g s: "
+                    "the controllers update every tick", ros_control->origin.c_str(), wanted, options_.period);
+      plugin_notes_.emplace_back(note);
+    } else if (std::abs(control_period() - wanted) > 1e-9 * wanted) {
+      std::snprintf(note, sizeof note, "%s: gazebo_ros_control controlPeriod %g s is not a whole number of periods "
+                    "(%g s): the controllers update every %g s", ros_control->origin.c_str(), wanted, options_.period,
+                    control_period());
+      plugin_notes_.emplace_back(note);
+    }
+  }
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
                                                          control::builtin_controller_registry());
 
@@ -425,7 +441,7 @@ void Simulation::state_changed() {
 TickResult Simulation::step() {
   apply_requests();
   read_physics();
-  manager_->update(time(), options_.period);
+  if (ticks_ % control_every_ == 0) manager_->update(time(), control_period());
   write_physics();
   if (external_.active()) external_.apply(*physics_, time());
   for (const Observer& observer : control_observers_) observer(*this);

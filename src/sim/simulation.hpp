@@ -205,6 +205,11 @@ class Simulation {
   // Per joint with a position or velocity interface, how its commands reach the physics:
   // gazebo_ros_control's PID (pid_gains) or mechsim's servo, with the parameter path read.
   const std::vector<std::string>& joint_drive_notes() const { return pid_drive_.notes(); }
+  // s between controller manager updates: gazebo_ros_control's <controlPeriod> rounded to whole
+  // ticks (at least one), else period(). Commands are held in between and written to the
+  // physics every tick (the pid_gains PIDs run every tick), as its writeSim does; the model
+  // plugins, which the manager runs, update at this period too.
+  double control_period() const { return static_cast<double>(control_every_) * options_.period; }
 
   // Time of the constructor's stages (wall-clock and CPU).
   struct StartupTimes {
@@ -298,6 +303,9 @@ class Simulation {
   std::vector<std::uint64_t> notice_ticks_;  // the tick that raised each physics notice
   StartupTimes startup_times_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
+  // The controller manager updates on ticks that are multiples of this (gazebo_ros_control's
+  // <controlPeriod> in ticks; 1 without one).
+  std::uint64_t control_every_ = 1;
   double measured_rtf_ = 0.0;
   std::atomic<bool> paused_{false};
   std::atomic<bool> reset_requested_{false};

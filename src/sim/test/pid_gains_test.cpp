@@ -233,6 +233,25 @@ TEST(PidGains, ARobotSimTypeMechsimCannotLoadIsNamed) {
   EXPECT_FALSE(any_contains(plain->physics_warnings(), "robotSimType"));
 }
 
+// <controlPeriod>: the controllers update every 5 ticks with a 5 ms period; the PID runs every tick.
+TEST(PidGains, ControlPeriodSpacesTheControllerUpdates) {
+  auto sim = make("<controlPeriod>0.005</controlPeriod>", std::string(kGains) + kControllers);
+  EXPECT_DOUBLE_EQ(sim->control_period(), 0.005);
+  const Response run = step_response(*sim, "pos", 0.5, 0.3);
+  auto* state = dynamic_cast<control::StatePort<control::JointControllerState>*>(sim->controllers().controller("pos")->port("state"));
+  ASSERT_NE(state, nullptr);
+  const control::JointControllerState s = state->read();
+  EXPECT_DOUBLE_EQ(s.time_step, 0.005);
+  EXPECT_NEAR(std::fmod(s.stamp + 1e-9, 0.005), 0.0, 1e-6);  // updated on multiples of 5 ms only
+  EXPECT_GT(run.q[peak_index(run.q)], 0.75);                  // the PID still drives the step
+  // Faster than the step, or not a whole number of steps: said, and rounded.
+  auto fast = make("<controlPeriod>0.0001</controlPeriod>", kControllers);
+  EXPECT_DOUBLE_EQ(fast->control_period(), 0.001);
+  EXPECT_TRUE(any_contains(fast->physics_warnings(), "controlPeriod 0.0001 s is shorter than the period 0.001 s"));
+  auto odd = make("<controlPeriod>0.0025</controlPeriod>", kControllers);
+  EXPECT_TRUE(any_contains(odd->physics_warnings(), "controlPeriod 0.0025 s is not a whole number of periods"));
+}
+
 TEST(PidGains, BadPluginElementsNameTheirLine) {
   try {
     make("\n<legacyModeNS>maybe</legacyModeNS>", kControllers);
