@@ -120,8 +120,17 @@ void plugins_step(const CheckOptions& options, CheckContext& context, std::ostre
   }
   control::Params server;
   if (!options.controllers.empty()) server = control::Params::from_yaml_file(options.controllers);
-  for (const std::string& key : server.keys()) {  // the robot namespace, as the node reads it
-    if (server.child(key).is_map() && !server.child(key).has("type")) server = server.child(key);
+  // The robot namespace, as the node reads it: the file's top when controllers are there, else the
+  // first map below it (not gazebo_ros_control's pid_gains block, which sits beside controllers).
+  const control::Params top = server;
+  bool top_has_controllers = false;
+  for (const std::string& key : top.keys()) top_has_controllers = top_has_controllers || (top.child(key).is_map() && top.child(key).has("type"));
+  for (const std::string& key : top.keys()) {
+    if (top_has_controllers) break;
+    if (key != "gazebo_ros_control" && top.child(key).is_map() && !top.child(key).has("type")) {
+      server = top.child(key);
+      break;
+    }
   }
   try {
     std::vector<control::ModelPluginBuild> plugins = control::build_model_plugins(robot, control::PluginContext{robot.name, server});

@@ -1,5 +1,6 @@
 #include "mechanism/build_mechanism.hpp"
 
+#include "mechanism/simple_transmission.hpp"
 #include "mechanism/transmission_builder.hpp"
 #include "mechanism/transmission_factory.hpp"
 
@@ -10,11 +11,11 @@ MechanismModel build_mechanism(const description::RobotModel& robot) {
   model.source = robot.source;
   for (const description::Transmission& spec : robot.transmissions) {
     TransmissionBuilder builder(robot, model, spec, static_cast<int>(model.transmissions.size()));
-    std::unique_ptr<Transmission> t = build_transmission(builder);
     if (spec.name.empty()) builder.fail("the transmission has no name");
-    for (const auto& other : model.transmissions)
-      if (other->name() == spec.name) builder.fail("a transmission of this name already exists");
-    model.transmissions.push_back(std::move(t));
+    // A repeated name is no error (ros_control keys transmissions by joint; description validation
+    // warns, naming both lines).
+    if (add_to_driven_joint(builder, robot, model)) continue;
+    model.transmissions.push_back(build_transmission(builder));
   }
   return model;
 }

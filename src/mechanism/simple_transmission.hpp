@@ -23,11 +23,13 @@
 
 #include <memory>
 
+#include "description/robot_model.hpp"
 #include "mechanism/transmission.hpp"
 
 namespace mechsim::mechanism {
 
 class TransmissionBuilder;
+struct MechanismModel;
 
 class SimpleTransmission final : public Transmission {
  public:
@@ -54,5 +56,15 @@ class SimpleTransmission final : public Transmission {
 // From the URDF: ros_control format (<actuator><mechanicalReduction>, <joint><offset>) or the
 // PR2 format (top-level <mechanicalReduction>, <simulated_actuated_joint>).
 std::unique_ptr<Transmission> build_simple_transmission(TransmissionBuilder& b);
+
+// ros_control descriptions may give one joint several SimpleTransmissions, one per hardware
+// interface (transmission_interface and gazebo_ros_control register a handle per interface). When
+// b.spec() is a SimpleTransmission of one joint that an earlier SimpleTransmission (`model`'s)
+// already drives, this adds its interfaces to that joint and returns true: no second transmission
+// is built, and an actuator name it adds is not a second motor (the joint has one, the first's).
+// Throws, naming both transmissions and their lines, when the two disagree on the reduction or
+// the offset (two motors driving one joint in conflicting ways) or when its actuator belongs to a
+// transmission of another joint. Returns false for anything else (built as usual).
+bool add_to_driven_joint(TransmissionBuilder& b, const description::RobotModel& robot, const MechanismModel& model);
 
 }  // namespace mechsim::mechanism

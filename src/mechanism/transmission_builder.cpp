@@ -119,11 +119,19 @@ int TransmissionBuilder::joint(const std::string& name, JointRole role, int line
 }
 
 int TransmissionBuilder::joint(const description::TransmissionJoint& entry, JointRole role) {
+  const int index = joint(entry.name, role, line_of(entry.name));
+  if (role == JointRole::Actuated) add_interfaces(index, entry);
+  return index;
+}
+
+void TransmissionBuilder::add_interfaces(int index, const description::TransmissionJoint& entry) {
   const int line = line_of(entry.name);
-  const int index = joint(entry.name, role, line);
-  if (role != JointRole::Actuated) return index;
-  std::vector<HardwareInterface>& interfaces = model_.joints[index].interfaces;
-  for (const std::string& text : entry.hardware_interfaces) {
+  // gazebo_ros_control reads the interfaces of the <actuator> when the <joint> names none (with a
+  // deprecation warning, which description validation gives).
+  const std::vector<std::string>* names = &entry.hardware_interfaces;
+  if (names->empty() && spec_.actuators.size() == 1) names = &spec_.actuators[0].hardware_interfaces;
+  std::vector<HardwareInterface>& interfaces = model_.joints[static_cast<std::size_t>(index)].interfaces;
+  for (const std::string& text : *names) {
     const auto parsed = parse_hardware_interface(text);
     if (!parsed)
       fail("joint '" + entry.name + "': unknown hardware interface '" + text +
@@ -133,12 +141,13 @@ int TransmissionBuilder::joint(const description::TransmissionJoint& entry, Join
     const auto hw = command_interface(*parsed);
     if (hw && std::find(interfaces.begin(), interfaces.end(), *hw) == interfaces.end()) interfaces.push_back(*hw);
   }
-  if (entry.hardware_interfaces.empty()) {
+  if (names->empty()) {
     if (ros_control_format())
-      fail("joint '" + entry.name + "' names no <hardwareInterface>", entry.name, line);
-    interfaces.push_back(HardwareInterface::Effort);
+      fail("joint '" + entry.name + "' names no <hardwareInterface> (neither in its <joint> nor in its <actuator>)",
+           entry.name, line);
+    if (std::find(interfaces.begin(), interfaces.end(), HardwareInterface::Effort) == interfaces.end())
+      interfaces.push_back(HardwareInterface::Effort);
   }
-  return index;
 }
 
 int TransmissionBuilder::actuator(const description::TransmissionActuator& entry) {

@@ -26,8 +26,13 @@ class TransmissionBuilder {
   // Adds the joint as a mechanism joint of this transmission and returns its index. Errors:
   // the joint is not in the robot, is fixed/floating/planar, or another transmission drives it.
   // Actuated joints get the hardware interfaces the entry names (Effort when a PR2 transmission
-  // names none; a ros_control transmission must name one).
+  // names none; a ros_control transmission must name one, in its <joint> or, as gazebo_ros_control
+  // also reads it, in its <actuator>).
   int joint(const description::TransmissionJoint& entry, JointRole role);
+  // Adds the interfaces `entry` names (as joint() does) to the mechanism joint `index`, which an
+  // earlier transmission made: several ros_control transmissions may name one joint, each adding
+  // an interface (transmission_interface and gazebo_ros_control register one handle per interface).
+  void add_interfaces(int index, const description::TransmissionJoint& entry);
   int joint(const std::string& name, JointRole role, int line);
   // Adds the actuator and returns its index; an actuator belongs to one transmission only.
   // Its <hardwareInterface> names must be known ones.

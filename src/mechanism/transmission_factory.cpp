@@ -46,6 +46,12 @@ std::unique_ptr<Transmission> build_transmission(TransmissionBuilder& builder) {
                             : "unknown transmission type '" + type + "' (known: " + known + ")");
 }
 
+bool is_simple_transmission_type(const std::string& type) {
+  for (const TypeEntry& t : kTypes)
+    if (t.name == type) return t.build == &build_simple_transmission;
+  return false;
+}
+
 std::vector<std::string> known_transmission_types() {
   std::vector<std::string> out;
   for (const TypeEntry& t : kTypes) out.emplace_back(t.name);

@@ -14,6 +14,9 @@ class TransmissionBuilder;
 // Builds the transmission that builder.spec() describes; MechanismError for an unknown type.
 std::unique_ptr<Transmission> build_transmission(TransmissionBuilder& builder);
 
+// Whether `type` names a SimpleTransmission (any of its spellings).
+bool is_simple_transmission_type(const std::string& type);
+
 // The type names build_transmission accepts.
 std::vector<std::string> known_transmission_types();
 

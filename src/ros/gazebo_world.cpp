@@ -217,6 +217,7 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   const std::string key = ns.find_first_not_of('/') == std::string::npos ? "" : ns.substr(ns.find_first_not_of('/'));
   control::Params root;
   bridge.controller_params = key.empty() ? root : root.child_or_create(key);
+  bridge.parameter_root = root;
 
   std::lock_guard<std::mutex> lock(clock_mutex_);  // the clock stands still while the robot comes in
   bridge.start_time = static_cast<double>(ticks_) * options_.period;

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "description/ros_control_plugin.hpp"
 #include "ros/xmlrpc_params.hpp"
 
 namespace mechsim::ros {
@@ -21,7 +22,22 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
     fill_params_from_xmlrpc(bridge.controller_params, all, &warning);
     if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
   }
+  // gazebo_ros_control's legacy pid_gains live at the absolute /gazebo_ros_control (outside a
+  // robot namespace other than /).
+  XmlRpc::XmlRpcValue gains;
+  if (bridge.parameter_root && robot_nh_.getNamespace() != "/" && root_nh_.getParam("/gazebo_ros_control", gains) &&
+      gains.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
+    std::string warning;
+    set_param_from_xmlrpc(*bridge.parameter_root, "gazebo_ros_control", gains, &warning);
+    if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
+  }
   bridge_ = std::make_unique<SimBridge>(std::move(bridge));
+  for (const std::string& note : bridge_->joint_drive_notes()) ROS_INFO_STREAM("mechsim: " << note);
+  if (const auto plugin = description::find_ros_control_plugin(bridge_->robot()); plugin && !plugin->default_hw()) {
+    ROS_WARN_STREAM("mechsim: " << plugin->origin << ": gazebo_ros_control robotSimType '" << plugin->robot_sim_type
+                                << "' is not simulated (mechsim cannot load a RobotHWSim plugin): the transmissions' "
+                                   "joints get gazebo_ros_control/DefaultRobotHWSim's behaviour instead");
+  }
   clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   if (options_.publish_tf) {
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");

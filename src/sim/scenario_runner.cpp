@@ -145,8 +145,10 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
     throw ScenarioError(s.file + ": world: " + e.what());
   }
   control::Params params;
+  control::Params root;  // the whole file: gazebo_ros_control's legacy pid_gains are at its top
   try {
     if (!s.controllers_file.empty()) params = control::Params::from_yaml_file(s.controllers_file);
+    root = params;
     if (!s.controllers_namespace.empty()) params = params.child(s.controllers_namespace);
     for (const ControllerParam& p : s.controller_params) control::replace(params, p.key, p.value);
   } catch (const std::exception& e) {
@@ -162,6 +164,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   // controllers starting in it hold them.
   options.initial_joints = s.initial_joints;
   options.sensor_seed = s.seed;
+  options.parameter_root = root;
   try {
     auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options);
     sim->load_and_start(s.start);

@@ -12,6 +12,7 @@
 #include "controllers/drive/diff_drive_params.hpp"
 #include "controllers/drive/pr2_base_params.hpp"
 #include "controllers/drive/rover_drive_params.hpp"
+#include "description/ros_control_plugin.hpp"
 #include "description/sensor_spec.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/direct_joints.hpp"
@@ -113,6 +114,31 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   mechanism_state_->base.floating = !physics_model_->fixed_to_world();
   fill_description_params(controller_params, robot_);
+  // gazebo_ros_control's plugin element: its pid_gains (read now, as DefaultRobotHWSim reads them
+  // at load) and a RobotHWSim mechsim cannot load.
+  const std::optional<description::RosControlPlugin> ros_control = description::find_ros_control_plugin(robot_);
+  if (ros_control && !ros_control->default_hw()) {
+    plugin_notes_.push_back(ros_control->origin + ": gazebo_ros_control robotSimType '" + ros_control->robot_sim_type +
+                            "' is not simulated (mechsim cannot load a RobotHWSim plugin): the transmissions' joints get " +
+                            description::kDefaultRobotHWSim + "'s behaviour instead");
+  }
+  pid_drive_ = PidGainsDrive(*mechanism_, ros_control, options_.parameter_root.value_or(controller_params));
+  if (ros_control && ros_control->control_period) {
+    const double wanted = *ros_control->control_period;
+    const long long n = std::llround(wanted / options_.period);
+    control_every_ = static_cast<std::uint64_t>(std::max(1LL, n));
+    char note[1024];
+    if (wanted < options_.period) {
+      std::snprintf(note, sizeof note, "%s: gazebo_ros_control controlPeriod %g s is shorter than the period %g s: "
+                    "the controllers update every tick", ros_control->origin.c_str(), wanted, options_.period);
+      plugin_notes_.emplace_back(note);
+    } else if (std::abs(control_period() - wanted) > 1e-9 * wanted) {
+      std::snprintf(note, sizeof note, "%s: gazebo_ros_control controlPeriod %g s is not a whole number of periods "
+                    "(%g s): the controllers update every %g s", ros_control->origin.c_str(), wanted, options_.period,
+                    control_period());
+      plugin_notes_.emplace_back(note);
+    }
+  }
   manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
                                                          control::controller_registry_with_plugins());
 
@@ -343,11 +369,18 @@ void Simulation::write_physics() {
       physics_->set_effort_limit(pj, js.effort_limit);
       physics_effort_limit_[j] = js.effort_limit;
     }
-    if (js.command_mode != physics_mode_[j]) {
-      physics_->set_mode(pj, to_physics_mode(js.command_mode), servo_gains_[j]);
-      physics_mode_[j] = js.command_mode;
+    // gazebo_ros_control's pid_gains turn a position/velocity command into an effort here.
+    const bool pid = js.command_mode != HardwareInterface::Effort && pid_drive_.active(j);
+    const HardwareInterface mode = pid ? HardwareInterface::Effort : js.command_mode;
+    if (mode != physics_mode_[j]) {
+      physics_->set_mode(pj, to_physics_mode(mode), servo_gains_[j]);
+      physics_mode_[j] = mode;
     }
-    switch (js.command_mode) {
+    if (pid) {
+      physics_->set_effort(pj, pid_drive_.effort(j, mechanism_->joints[j], js, options_.period));
+      continue;
+    }
+    switch (mode) {
       case HardwareInterface::Effort: physics_->set_effort(pj, effort_scale_[j] * js.commanded_effort); break;
       case HardwareInterface::Position: physics_->set_position_command(pj, js.commanded_position); break;
       case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
@@ -408,7 +441,7 @@ void Simulation::state_changed() {
 TickResult Simulation::step() {
   apply_requests();
   read_physics();
-  manager_->update(time(), options_.period);
+  if (ticks_ % control_every_ == 0) manager_->update(time(), control_period());
   write_physics();
   if (external_.active()) external_.apply(*physics_, time());
   for (const Observer& observer : control_observers_) observer(*this);
@@ -493,6 +526,7 @@ void Simulation::reset() {
   external_.clear();
   apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
+  pid_drive_.reset();
   mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
   fresh.base.floating = !physics_model_->fixed_to_world();
   *mechanism_state_ = fresh;

@@ -48,6 +48,7 @@
 #include "physics/physics_model.hpp"
 #include "sensors/sensor_set.hpp"
 #include "sim/external_forces.hpp"
+#include "sim/pid_gains_drive.hpp"
 #include "sim/world.hpp"
 
 namespace mechsim::control {
@@ -88,9 +89,15 @@ struct SimulationOptions {
   // kMaxPaceLag behind (it then goes on from there instead of racing to catch up).
   double real_time_factor = 0.0;
   DivergencePolicy on_divergence = DivergencePolicy::Stop;
-  // Servo gains of joints commanded through position/velocity interfaces, by joint name
-  // (gazebo_ros_control's pid_gains/<joint>: p -> kp, d -> kv). Missing: the physics default.
+  // Gains of the implicit servo of joints commanded through position/velocity interfaces, by
+  // joint name (a test's or a tuning run's). Missing: the physics default. Joints with
+  // gazebo_ros_control pid_gains (see parameter_root) are driven by that PID instead.
   std::map<std::string, physics::ServoGains> servo_gains;
+  // The root of the parameter tree the controller parameters belong to (standalone: the whole
+  // controllers YAML; ROS: what the node fetched from the server), where gazebo_ros_control's
+  // pid_gains are looked up at the path its plugin element gives (sim/pid_gains_drive.hpp). None:
+  // the controller parameters are the root.
+  std::optional<control::Params> parameter_root;
   // MuJoCo's contact and constraint arena (physics::BuildOptions): nullopt sizes it from the model;
   // a tick that needs more grows it (reported in physics_warnings()) or, with Fail, stops the run.
   std::optional<physics::ArenaSize> arena;
@@ -195,6 +202,14 @@ class Simulation {
   // with how often it recurred; then the sensors left out, and the Gazebo model plugins mechsim
   // does not simulate (once each: controllers/plugins/model_plugins.hpp).
   std::vector<std::string> physics_warnings() const;
+  // Per joint with a position or velocity interface, how its commands reach the physics:
+  // gazebo_ros_control's PID (pid_gains) or mechsim's servo, with the parameter path read.
+  const std::vector<std::string>& joint_drive_notes() const { return pid_drive_.notes(); }
+  // s between controller manager updates: gazebo_ros_control's <controlPeriod> rounded to whole
+  // ticks (at least one), else period(). Commands are held in between and written to the
+  // physics every tick (the pid_gains PIDs run every tick), as its writeSim does; the model
+  // plugins, which the manager runs, update at this period too.
+  double control_period() const { return static_cast<double>(control_every_) * options_.period; }
 
   // Time of the constructor's stages (wall-clock and CPU).
   struct StartupTimes {
@@ -257,6 +272,7 @@ class Simulation {
   std::vector<double> physics_effort_limit_;  // JointState::effort_limit as the physics has it
   std::vector<physics::ServoGains> servo_gains_;
   std::vector<bool> commanded_;  // the physics applies this joint's command (actuated joints)
+  PidGainsDrive pid_drive_;  // gazebo_ros_control's pid_gains, per mechanism joint
   std::vector<double> effort_scale_;  // applied effort = scale * commanded effort (1 but for fingers)
 
   // A PR2 gripper whose gap joint the physics dropped (URDF: a prismatic joint to a massless
@@ -287,6 +303,9 @@ class Simulation {
   std::vector<std::uint64_t> notice_ticks_;  // the tick that raised each physics notice
   StartupTimes startup_times_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
+  // The controller manager updates on ticks that are multiples of this (gazebo_ros_control's
+  // <controlPeriod> in ticks; 1 without one).
+  std::uint64_t control_every_ = 1;
   double measured_rtf_ = 0.0;
   std::atomic<bool> paused_{false};
   std::atomic<bool> reset_requested_{false};

@@ -86,5 +86,25 @@ TEST(CheckPluginsCli, BadElementsAreErrorsNamingFileLineAndPlugin) {
   EXPECT_THAT(r.err, HasSubstr("names joint 'back_wheel', which robot 'wheels' does not have"));
 }
 
+// A gazebo_ros_control pid_gains block beside the controllers (gazebo's usual file) is no
+// namespace; the turntable's three same-name transmissions load with warnings.
+TEST(CheckPluginsCli, PidGainsBesideTheControllersAndRepeatedTransmissionNames) {
+  const fs::path testbots = fs::path(MECHSIM_SOURCE_DIR) / "robots/testbots";
+  const ProcessResult r = run_process({MECHSIM_EXE, "check", (testbots / "urdf/turntable.urdf").string(), "--controllers",
+                                       (testbots / "config/turntable_controllers.yaml").string()},
+                                      60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("3 of 3 controllers load"));
+  EXPECT_THAT(r.out + r.err, HasSubstr("turntable.urdf:28: transmission 'hinge_trans' is defined twice (first at line 22)"));
+}
+
+TEST(CheckPluginsCli, NamesARobotSimTypeItCannotLoad) {
+  const std::string file = robot_file("hwsim.urdf", "<plugin name='gazebo_ros_control' filename='libgazebo_ros_control.so'>"
+                                                    "<robotSimType>my_hw/MyRobotHWSim</robotSimType></plugin>\n");
+  const ProcessResult r = run_process({MECHSIM_EXE, "check", file}, 60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("robotSimType 'my_hw/MyRobotHWSim' is NOT SIMULATED"));
+}
+
 }  // namespace
 }  // namespace mechsim::apps::test

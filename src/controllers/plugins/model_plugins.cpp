@@ -77,6 +77,14 @@ std::vector<ModelPluginStatus> model_plugin_status(const description::RobotModel
     } else if (p.filename == "libgazebo_ros_control.so" || p.filename == "libgazebo_ros_controller_manager.so") {
       s.handling = PluginHandling::ControllerManager;
       s.detail = "simulated: mechsim's controller manager runs the controllers of the YAML";
+      // A RobotHWSim of the user's own (gazebo_ros_control's <robotSimType>) is a Gazebo plugin
+      // mechsim cannot load: its joints get DefaultRobotHWSim's behaviour.
+      if (auto it = p.parameters.find("robotSimType");
+          it != p.parameters.end() && !it->second.empty() && it->second != "gazebo_ros_control/DefaultRobotHWSim") {
+        s.detail += "; robotSimType '" + it->second +
+                    "' is NOT SIMULATED (mechsim cannot load a RobotHWSim plugin: gazebo_ros_control/DefaultRobotHWSim's "
+                    "behaviour instead)";
+      }
     } else if (p.filename.find("differential") != std::string::npos) {
       s.handling = PluginHandling::Physics;
       s.detail = "simulated: a law of the physics (the differential's spring)";

@@ -166,13 +166,47 @@ int entry_line(const Transmission& t, const std::string& name) {
   return t.line;
 }
 
+// What ros_control and gazebo_ros_control accept with at most a warning: a repeated transmission
+// name (both load), the <hardwareInterface> in the <actuator> only (gazebo_ros_control reads it
+// there), a joint several transmissions name (each adds an interface) with different actuators.
+void check_transmissions(const RobotModel& model, Reporter& r) {
+  std::map<std::string, const Transmission*> by_name;
+  std::map<std::string, const Transmission*> by_joint;
+  for (const Transmission& t : model.transmissions) {
+    if (auto [it, inserted] = by_name.emplace(t.name, &t); !inserted) {
+      r.warning(t.line, "transmission '" + t.name + "' is defined twice (first at line " + std::to_string(it->second->line) +
+                            "); both are loaded, as ros_control does");
+    }
+    const bool ros_control = t.type.rfind("transmission_interface/", 0) == 0;
+    for (const TransmissionJoint& j : t.joints) {
+      if (ros_control && j.hardware_interfaces.empty() && t.actuators.size() == 1 &&
+          !t.actuators[0].hardware_interfaces.empty()) {
+        r.warning(entry_line(t, j.name), "transmission '" + t.name + "': joint '" + j.name +
+                                             "' names its <hardwareInterface> in <actuator> '" + t.actuators[0].name +
+                                             "'; used for the joint, as gazebo_ros_control does (which asks for it "
+                                             "inside <joint>)");
+      }
+      if (!j.role.empty()) continue;
+      auto [it, inserted] = by_joint.emplace(j.name, &t);
+      if (inserted || t.actuators.size() != 1 || it->second->actuators.size() != 1) continue;
+      const std::string& first = it->second->actuators[0].name;
+      if (t.actuators[0].name != first) {
+        r.warning(entry_line(t, t.actuators[0].name),
+                  "transmission '" + t.name + "': joint '" + j.name + "' is also driven by transmission '" +
+                      it->second->name + "' (line " + std::to_string(it->second->line) + ") through actuator '" + first +
+                      "'; actuator '" + t.actuators[0].name + "' is no second motor (the joint gets this one's interfaces)");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void validate_structure(const RobotModel& model, ValidationReport& report) {
   Reporter r(model, report);
   check_unique(model.links, "link", r);
   check_unique(model.joints, "joint", r);
-  check_unique(model.transmissions, "transmission", r);
+  check_transmissions(model, r);
 
   std::map<std::string, const Link*> links;
   for (const Link& l : model.links) links.emplace(l.name, &l);

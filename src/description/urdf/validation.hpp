@@ -20,7 +20,8 @@ struct ValidationOptions {
   bool lenient = false;
 };
 
-// The tree: duplicate link/joint/transmission names, joints naming missing links, a joint whose
+// The tree: duplicate link/joint names (repeated transmission names, a <hardwareInterface> only in
+// the <actuator>, and one joint given several actuators are warnings: ros_control accepts them), joints naming missing links, a joint whose
 // parent is its child, a link with two parent joints, kinematic cycles, no root or several roots.
 void validate_structure(const RobotModel& model, ValidationReport& report);
 

@@ -106,12 +106,65 @@ TEST(BuildMechanism, RosControlReductionDefaultsToOne) {
   EXPECT_DOUBLE_EQ(s.joints[0].position, 0.25);
 }
 
-TEST(BuildMechanism, JointDrivenTwice) {
+TEST(BuildMechanism, TransmissionsDrivingOneJointWithDifferentReductionsConflict) {
   description::RobotModel robot = two_joint_robot();
   robot.transmissions.push_back(test::ros_simple("t1", "j1", "m1", 1.0, "EffortJointInterface", 10));
-  robot.transmissions.push_back(test::ros_simple("t2", "j1", "m2", 1.0, "EffortJointInterface", 20));
-  EXPECT_THAT(build_error(robot), HasSubstr("test.urdf:22: transmission 't2' (transmission_interface/SimpleTransmission): "
-                                            "joint 'j1' is already driven by transmission 't1'"));
+  robot.transmissions.push_back(test::ros_simple("t2", "j1", "m2", 2.0, "EffortJointInterface", 20));
+  const std::string error = build_error(robot);
+  EXPECT_THAT(error, HasSubstr("test.urdf:22: transmission 't2' (transmission_interface/SimpleTransmission): "
+                               "joint 'j1' is already driven by transmission 't1' (line 10) with reduction 1"));
+  EXPECT_THAT(error, HasSubstr("this one gives 2 and 0"));
+  EXPECT_THAT(error, HasSubstr("conflicting"));
+}
+
+// ros_control descriptions give a joint one transmission per interface, often all of one name.
+TEST(BuildMechanism, SameNameTransmissionsOnOneJointAddTheirInterfaces) {
+  description::RobotModel robot = two_joint_robot();
+  robot.transmissions.push_back(test::ros_simple("j1_trans", "j1", "j1_motor", 160.0, "PositionJointInterface", 10));
+  robot.transmissions.push_back(test::ros_simple("j1_trans", "j1", "j1_motor", 160.0, "VelocityJointInterface", 20));
+  robot.transmissions.push_back(test::ros_simple("j1_trans", "j1", "j1_motor", 160.0, "EffortJointInterface", 30));
+  robot.transmissions.push_back(test::ros_simple("j2_trans", "j2", "j2_motor", 1.0, "EffortJointInterface", 40));
+  const MechanismModel m = build_mechanism(robot);
+  ASSERT_EQ(m.transmissions.size(), 2u);
+  ASSERT_EQ(m.joints.size(), 2u);
+  ASSERT_EQ(m.actuators.size(), 2u);
+  const JointInfo& j1 = m.joints[static_cast<std::size_t>(m.joint_index("j1"))];
+  EXPECT_EQ(j1.interfaces, (std::vector<HardwareInterface>{HardwareInterface::Position, HardwareInterface::Velocity,
+                                                           HardwareInterface::Effort}));
+  EXPECT_EQ(j1.transmission, 0);
+  EXPECT_EQ(m.joints[static_cast<std::size_t>(m.joint_index("j2"))].transmission, 1);
+  MechanismState s = make_state(m);
+  s.actuators[0].position = 16.0;
+  propagate_actuator_to_joint_position(m, s);
+  EXPECT_DOUBLE_EQ(s.joints[0].position, 0.1);  // one actuator, the reduction applied once
+}
+
+TEST(BuildMechanism, SecondActuatorOfAJointWithTheSameReductionIsNoSecondMotor) {
+  description::RobotModel robot = two_joint_robot();
+  robot.transmissions.push_back(test::ros_simple("t1", "j1", "m1", 2.0, "EffortJointInterface", 10));
+  robot.transmissions.push_back(test::ros_simple("t2", "j1", "m2", 2.0, "VelocityJointInterface", 20));
+  const MechanismModel m = build_mechanism(robot);
+  ASSERT_EQ(m.actuators.size(), 1u);
+  EXPECT_EQ(m.actuators[0].name, "m1");
+  EXPECT_EQ(m.actuator_index("m2"), -1);
+  EXPECT_EQ(m.joints[0].interfaces, (std::vector<HardwareInterface>{HardwareInterface::Effort, HardwareInterface::Velocity}));
+}
+
+TEST(BuildMechanism, ActuatorOfAnotherJointCannotAddAnInterface) {
+  description::RobotModel robot = two_joint_robot();
+  robot.transmissions.push_back(test::ros_simple("t1", "j1", "m1", 1.0, "EffortJointInterface", 10));
+  robot.transmissions.push_back(test::ros_simple("t2", "j2", "m2", 1.0, "EffortJointInterface", 20));
+  robot.transmissions.push_back(test::ros_simple("t3", "j1", "m2", 1.0, "VelocityJointInterface", 30));
+  EXPECT_THAT(build_error(robot), HasSubstr("actuator 'm2' already belongs to transmission 't2', which drives another joint"));
+}
+
+TEST(BuildMechanism, HardwareInterfaceInTheActuatorIsTheJoints) {
+  description::RobotModel robot = two_joint_robot();
+  description::Transmission t = test::ros_simple("t1", "j1", "m1", std::nullopt, "", 10);
+  t.actuators[0].hardware_interfaces.push_back("hardware_interface/VelocityJointInterface");
+  robot.transmissions.push_back(t);
+  const MechanismModel m = build_mechanism(robot);
+  EXPECT_EQ(m.joints[0].interfaces, (std::vector<HardwareInterface>{HardwareInterface::Velocity}));
 }
 
 TEST(BuildMechanism, ActuatorSharedByTwoTransmissions) {
@@ -127,12 +180,13 @@ TEST(BuildMechanism, FixedJointCannotBeDriven) {
   EXPECT_THAT(build_error(robot), HasSubstr("joint 'fixed' is fixed"));
 }
 
-TEST(BuildMechanism, DuplicateTransmissionName) {
+TEST(BuildMechanism, RepeatedTransmissionNameOnOtherJointsLoads) {
   description::RobotModel robot = two_joint_robot();
   robot.transmissions.push_back(test::ros_simple("t1", "j1", "m1", 1.0, "EffortJointInterface", 10));
   robot.transmissions.push_back(test::ros_simple("t1", "j2", "m2", 1.0, "EffortJointInterface", 20));
-  EXPECT_THAT(build_error(robot), HasSubstr("test.urdf:20: transmission 't1'"));
-  EXPECT_THAT(build_error(robot), HasSubstr("already exists"));
+  const MechanismModel m = build_mechanism(robot);
+  ASSERT_EQ(m.transmissions.size(), 2u);
+  EXPECT_EQ(m.joints[static_cast<std::size_t>(m.joint_index("j2"))].transmission, 1);
 }
 
 TEST(BuildMechanism, WristWithoutFlexJoint) {

@@ -156,6 +156,7 @@ int run(int argc, char** argv) {
   const std::string key = ns.find_first_not_of('/') == std::string::npos ? "" : ns.substr(ns.find_first_not_of('/'));
   mechsim::control::Params root;
   bridge.controller_params = key.empty() ? root : root.child_or_create(key);
+  bridge.parameter_root = root;
 
   mechsim::ros::SimNode node(pnh, std::move(bridge), options);
   for (const std::string& w : node.bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);

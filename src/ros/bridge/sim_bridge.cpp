@@ -69,6 +69,7 @@ SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::
   sim_options.real_time_factor = m.options.real_time_factor;
   sim_options.start_time = m.options.start_time;
   sim_options.initial_joints = m.options.initial_joints;
+  sim_options.parameter_root = m.options.parameter_root;
   m.params = m.options.controller_params;
   m.simulation = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, sim_options);
   if (m.options.paused) m.simulation->pause();
@@ -150,6 +151,7 @@ bool SimBridge::paused() const { return impl_->simulation->paused(); }
 void SimBridge::request_reset() { impl_->simulation->request_reset(); }
 const description::RobotModel& SimBridge::robot() const { return impl_->simulation->robot(); }
 control::Params SimBridge::controller_params() const { return impl_->params; }
+const std::vector<std::string>& SimBridge::joint_drive_notes() const { return impl_->simulation->joint_drive_notes(); }
 const std::vector<std::string>& SimBridge::physics_warnings() const {
   return impl_->simulation->physics().model().warnings();
 }

@@ -30,6 +30,9 @@ namespace mechsim::ros {
 struct BridgeOptions {
   description::RobotModel robot;       // parsed robot_description
   control::Params controller_params;  // the namespace holding the controllers (e.g. /cc8)
+  // The tree controller_params belongs to, where gazebo_ros_control's pid_gains are looked up
+  // (sim::SimulationOptions::parameter_root); none: controller_params is the root.
+  std::optional<control::Params> parameter_root;
   std::string world = "empty";        // empty | mars_yard_2024 | heightmap file path
   double x = 0.0, y = 0.0, z = 0.0;   // m, spawn position (z above the ground under x, y)
   double roll = 0.0, pitch = 0.0, yaw = 0.0;  // rad, spawn orientation
@@ -266,6 +269,8 @@ class SimBridge {
   // What the physics left out or changed and why (meshes it could not use, with the link and the
   // path tried; massless links; dropped joints), one line each.
   const std::vector<std::string>& physics_warnings() const;
+  // Per joint with a position or velocity interface: gazebo_ros_control's PID or mechsim's servo.
+  const std::vector<std::string>& joint_drive_notes() const;
   // The controllers' parameter namespace (a handle on the tree the manager reads at load time).
   control::Params controller_params() const;
 

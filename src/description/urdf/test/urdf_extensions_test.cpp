@@ -149,9 +149,24 @@ TEST(UrdfTransmissions, RejectsBadTransmissions) {
   expect_error(robot_with(R"(<transmission name="t" type="x"><joint name="flex"/><actuator name="m"/>
       <mechanicalReduction>0</mechanicalReduction></transmission>)"),
                "transmission 't'", "mechanical reduction is zero");
-  expect_error(robot_with(R"(<transmission name="t" type="x"><joint name="flex"/><actuator name="m"/></transmission>
-      <transmission name="t" type="x"><joint name="roll"/><actuator name="m2"/></transmission>)"),
-               "transmission 't' is defined twice", "first at line 12");
+}
+
+// What ros_control accepts loads, with a warning naming the lines.
+TEST(UrdfTransmissions, RepeatedNamesAndInterfacesInTheActuatorAreWarnings) {
+  std::vector<std::string> warnings;
+  const RobotModel m = parse_urdf_string(robot_with(R"(<transmission name="t" type="x"><joint name="flex"/><actuator name="m"/></transmission>
+      <transmission name="t" type="x"><joint name="roll"/><actuator name="m2"/></transmission>
+      <transmission name="f"><type>transmission_interface/SimpleTransmission</type><joint name="flex"/>
+        <actuator name="m"><hardwareInterface>VelocityJointInterface</hardwareInterface></actuator></transmission>
+      <transmission name="g"><type>transmission_interface/SimpleTransmission</type><joint name="flex"/>
+        <actuator name="m3"/></transmission>)"),
+                                         "r.urdf", UrdfOptions{}, &warnings);
+  EXPECT_EQ(m.transmissions.size(), 4u);
+  ASSERT_EQ(warnings.size(), 3u) << ::testing::PrintToString(warnings);
+  EXPECT_THAT(warnings[0], HasSubstr("r.urdf:13: transmission 't' is defined twice (first at line 12); both are loaded"));
+  EXPECT_THAT(warnings[1], HasSubstr("r.urdf:14: transmission 'f': joint 'flex' names its <hardwareInterface> in <actuator> 'm'"));
+  EXPECT_THAT(warnings[2], HasSubstr("r.urdf:17: transmission 'g': joint 'flex' is also driven by transmission 't' (line 12) "
+                                     "through actuator 'm'; actuator 'm3' is no second motor"));
 }
 
 TEST(UrdfGazebo, ReadsLinkAndJointPropertiesInBothSpellings) {

@@ -2,7 +2,8 @@
 // and a four-wheel skid steer driven by diff_drive_controller and by Gazebo's drive plugins, a
 // planar-move base, and a gripper whose second finger follows the first through the mimic joint
 // plugin (the acceptance figures of issues 15 and 25: 1 m within 1 %, 90 deg within 1 deg,
-// odometry within 1 %, mimic tracking within 1e-3 rad). Every check of every scenario passes, and
+// odometry within 1 %, mimic tracking within 1e-3 rad), and a turntable whose one joint has three
+// transmissions, stepped through gazebo_ros_control's pid_gains and through the servo. Every check of every scenario passes, and
 // the figures are printed.
 
 #include <gtest/gtest.h>
@@ -38,7 +39,8 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, Testbots,
                                          "diffbot_plugin_turn_90", "skidbot_straight_1m", "skidbot_turn_90",
                                          "skidbot_plugin_straight_1m", "skidbot_plugin_turn_90", "planarbot_straight_1m",
                                          "planarbot_turn_90", "gripper_mimic_close", "gripper_mimic_pid_close",
-                                         "gripper_action_close", "gripper_position_action_close", "diffbot_plugin_square"),
+                                         "gripper_action_close", "gripper_position_action_close", "diffbot_plugin_square",
+                                         "turntable_pid_step", "turntable_servo_step"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
 
 }  // namespace
