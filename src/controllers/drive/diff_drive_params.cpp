@@ -4,21 +4,13 @@
 #include <cmath>
 
 #include "control/hardware.hpp"
+#include "controllers/param_checks.hpp"
 #include "description/rover_geometry.hpp"
 
 namespace mechsim::control {
 namespace {
 
 std::string path_of(const Params& params, std::string_view key) { return join_param_path(params.path(), key); }
-
-double positive(const Params& params, const char* key, double fallback) {
-  if (!params.has(key)) return fallback;
-  const double v = params.get<double>(key);
-  if (!(v > 0.0) || !std::isfinite(v)) {
-    throw ControllerConfigError("parameter " + path_of(params, key) + " must be finite and > 0 (got " + std::to_string(v) + ")");
-  }
-  return v;
-}
 
 std::array<double, 6> diagonal(const Params& params, const char* key) {
   std::array<double, 6> out{};
@@ -72,15 +64,15 @@ DiffDriveConfig read_diff_drive_config(const Params& params) {
                                   " not found, and the robot description did not give it (fill_diff_drive_geometry)");
     }
   }
-  c.wheel_separation = positive(params, "wheel_separation", 0.0);
-  c.wheel_radius = positive(params, "wheel_radius", 0.0);
-  c.wheel_separation_multiplier = positive(params, "wheel_separation_multiplier", 1.0);
+  c.wheel_separation = positive_param(params, "wheel_separation", 0.0);
+  c.wheel_radius = positive_param(params, "wheel_radius", 0.0);
+  c.wheel_separation_multiplier = positive_param(params, "wheel_separation_multiplier", 1.0);
   // wheel_radius_multiplier, when given, sets both sides (ros_controllers' rule).
   if (params.has("wheel_radius_multiplier")) {
-    c.left_wheel_radius_multiplier = c.right_wheel_radius_multiplier = positive(params, "wheel_radius_multiplier", 1.0);
+    c.left_wheel_radius_multiplier = c.right_wheel_radius_multiplier = positive_param(params, "wheel_radius_multiplier", 1.0);
   } else {
-    c.left_wheel_radius_multiplier = positive(params, "left_wheel_radius_multiplier", 1.0);
-    c.right_wheel_radius_multiplier = positive(params, "right_wheel_radius_multiplier", 1.0);
+    c.left_wheel_radius_multiplier = positive_param(params, "left_wheel_radius_multiplier", 1.0);
+    c.right_wheel_radius_multiplier = positive_param(params, "right_wheel_radius_multiplier", 1.0);
   }
   c.cmd_vel_timeout = params.get<double>("cmd_vel_timeout", 0.5);
   if (!std::isfinite(c.cmd_vel_timeout)) throw ControllerConfigError("parameter " + path_of(params, "cmd_vel_timeout") + " is not finite");

@@ -5,21 +5,13 @@
 #include <sstream>
 
 #include "controllers/drive/rover_drive_params.hpp"  // read_rover_joint_list
+#include "controllers/param_checks.hpp"
 #include "description/rover_geometry.hpp"  // joint_pose_at_zero
 
 namespace mechsim::control {
 namespace {
 
 std::string path_of(const Params& params, std::string_view key) { return join_param_path(params.path(), key); }
-
-double positive(const Params& params, const char* key, double fallback) {
-  if (!params.has(key)) return fallback;
-  const double v = params.get<double>(key);
-  if (!(v > 0.0) || !std::isfinite(v)) {
-    throw ControllerConfigError("parameter " + path_of(params, key) + " must be finite and > 0 (got " + std::to_string(v) + ")");
-  }
-  return v;
-}
 
 // A map parameter keyed by joint name, every key one of `joints`; nullopt when absent.
 std::optional<Params> joint_map(const Params& params, const char* key, const std::vector<std::string>& joints,
@@ -74,7 +66,7 @@ Pr2BaseGeometry read_pr2_base_geometry(const Params& params) {
     throw ControllerConfigError("parameter " + path_of(params, "wheel_radius") +
                                 " not found (m; or let the simulation fill it from the robot description)");
   }
-  k.wheel_radius = positive(params, "wheel_radius", 0.0) * positive(params, "wheel_radius_multiplier", 1.0);
+  k.wheel_radius = positive_param(params, "wheel_radius", 0.0) * positive_param(params, "wheel_radius_multiplier", 1.0);
 
   const Params positions = *joint_map(params, "caster_positions", g.caster_joints, true);
   const auto caster_signs = joint_map(params, "caster_axis_signs", g.caster_joints, false);
@@ -115,14 +107,14 @@ Pr2BaseGeometry read_pr2_base_geometry(const Params& params) {
 Pr2BaseConfig read_pr2_base_config(const Params& params) {
   Pr2BaseConfig c;
   c.geometry = read_pr2_base_geometry(params);
-  c.max_translational_velocity = positive(params, "max_translational_velocity", 0.5);
-  c.max_rotational_velocity = positive(params, "max_rotational_velocity", 10.0);
-  c.max_translational_acceleration_x = positive(params, "max_translational_acceleration/x", 0.2);
-  c.max_translational_acceleration_y = positive(params, "max_translational_acceleration/y", 0.2);
-  c.max_rotational_acceleration = positive(params, "max_rotational_acceleration", 10.0);
+  c.max_translational_velocity = positive_param(params, "max_translational_velocity", 0.5);
+  c.max_rotational_velocity = positive_param(params, "max_rotational_velocity", 10.0);
+  c.max_translational_acceleration_x = positive_param(params, "max_translational_acceleration/x", 0.2);
+  c.max_translational_acceleration_y = positive_param(params, "max_translational_acceleration/y", 0.2);
+  c.max_rotational_acceleration = positive_param(params, "max_rotational_acceleration", 10.0);
   c.timeout = params.get<double>("timeout", 0.2);
   if (!std::isfinite(c.timeout)) throw ControllerConfigError("parameter " + path_of(params, "timeout") + " is not finite");
-  c.caster_hold_speed = positive(params, "caster_hold_speed", 1e-5);
+  c.caster_hold_speed = positive_param(params, "caster_hold_speed", 1e-5);
   return c;
 }
 

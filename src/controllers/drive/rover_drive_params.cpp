@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 
+#include "controllers/param_checks.hpp"
 #include "description/rover_geometry.hpp"
 
 namespace mechsim::control {
@@ -48,23 +49,6 @@ SteeredJointLists read_steered_joint_lists(const Params& params, const char* ste
 }
 
 namespace {
-
-// A strictly positive number; absent gives `fallback`.
-double positive(const Params& params, const char* key, double fallback) {
-  if (!params.has(key)) return fallback;
-  const double v = params.get<double>(key);
-  if (!(v > 0.0)) throw ControllerConfigError("parameter " + path_of(params, key) + " must be > 0 (got " + std::to_string(v) + ")");
-  return v;
-}
-
-double non_negative(const Params& params, const char* key, double fallback) {
-  if (!params.has(key)) return fallback;
-  const double v = params.get<double>(key);
-  if (!(v >= 0.0) || !std::isfinite(v)) {
-    throw ControllerConfigError("parameter " + path_of(params, key) + " must be finite and >= 0 (got " + std::to_string(v) + ")");
-  }
-  return v;
-}
 
 // A map parameter keyed by joint name: every key must be one of `joints`.
 Params joint_map(const Params& params, const char* key, const std::vector<std::string>& joints) {
@@ -144,7 +128,7 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
     throw ControllerConfigError("parameter " + path_of(params, "wheel_radius") +
                                 " not found (m; or let the simulation fill it from the robot description)");
   }
-  k.wheel_radius = positive(params, "wheel_radius", 0.0);
+  k.wheel_radius = positive_param(params, "wheel_radius", 0.0);
   if (!std::isfinite(k.wheel_radius)) throw ControllerConfigError("parameter " + path_of(params, "wheel_radius") + " is not finite");
   // Default: +-90 deg, narrowed to the steering joints' URDF limits where they have them.
   double feasible = std::numbers::pi / 2.0;
@@ -156,7 +140,7 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
     const double both_ways = std::fmin(std::abs(info.limits->lower), std::abs(info.limits->upper));
     if (both_ways > 0.0) feasible = std::fmin(feasible, both_ways);
   }
-  k.max_steering_angle = positive(params, "max_steering_angle", feasible);
+  k.max_steering_angle = positive_param(params, "max_steering_angle", feasible);
   if (k.max_steering_angle > std::numbers::pi) {
     throw ControllerConfigError("parameter " + path_of(params, "max_steering_angle") + " must be <= pi");
   }
@@ -215,15 +199,15 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
   }
   finish_rover_kinematics(k);
 
-  c.max_steering_rate = positive(params, "max_steering_rate", velocity_limit(hardware, c.steering_joints));
-  c.max_wheel_speed = positive(params, "max_wheel_speed", velocity_limit(hardware, c.wheel_joints));
-  c.max_linear_velocity = positive(params, "max_linear_velocity", kInf);
-  c.max_angular_velocity = positive(params, "max_angular_velocity", kInf);
-  c.max_linear_acceleration = positive(params, "max_linear_acceleration", kInf);
-  c.max_angular_acceleration = positive(params, "max_angular_acceleration", kInf);
+  c.max_steering_rate = positive_param(params, "max_steering_rate", velocity_limit(hardware, c.steering_joints));
+  c.max_wheel_speed = positive_param(params, "max_wheel_speed", velocity_limit(hardware, c.wheel_joints));
+  c.max_linear_velocity = positive_param(params, "max_linear_velocity", kInf);
+  c.max_angular_velocity = positive_param(params, "max_angular_velocity", kInf);
+  c.max_linear_acceleration = positive_param(params, "max_linear_acceleration", kInf);
+  c.max_angular_acceleration = positive_param(params, "max_angular_acceleration", kInf);
   c.cmd_vel_timeout = params.get<double>("cmd_vel_timeout", 0.5);
-  c.steering_tolerance = non_negative(params, "steering_tolerance", 0.05);
-  c.steering_stop_error = non_negative(params, "steering_stop_error", 0.35);
+  c.steering_tolerance = non_negative_param(params, "steering_tolerance", 0.05);
+  c.steering_stop_error = non_negative_param(params, "steering_stop_error", 0.35);
   if (!(c.steering_stop_error > c.steering_tolerance)) {
     throw ControllerConfigError("parameter " + path_of(params, "steering_stop_error") + " must exceed " +
                                 path_of(params, "steering_tolerance"));
@@ -257,15 +241,15 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
       if (!sensing.empty()) c.crab_sensing_mode = RoverDriveConfig::CrabSensing::Listed;
     }
   }
-  c.crab_driven_rolling_weight = non_negative(params, "crab_driven_rolling_weight", 0.01);
-  c.crab_lateral_weight = non_negative(params, "crab_lateral_weight", 0.1);
-  c.crab_heading_p = non_negative(params, "crab_heading_p", 0.0);
-  c.crab_heading_i = non_negative(params, "crab_heading_i", 0.0);
-  c.crab_heading_max_rate = positive(params, "crab_heading_max_rate", 0.2);
+  c.crab_driven_rolling_weight = non_negative_param(params, "crab_driven_rolling_weight", 0.01);
+  c.crab_lateral_weight = non_negative_param(params, "crab_lateral_weight", 0.1);
+  c.crab_heading_p = non_negative_param(params, "crab_heading_p", 0.0);
+  c.crab_heading_i = non_negative_param(params, "crab_heading_i", 0.0);
+  c.crab_heading_max_rate = positive_param(params, "crab_heading_max_rate", 0.2);
   if (!std::isfinite(c.crab_heading_max_rate)) {
     throw ControllerConfigError("parameter " + path_of(params, "crab_heading_max_rate") + " is not finite");
   }
-  c.odometry_robust.scale = non_negative(params, "odometry_robust_scale", 0.05);
+  c.odometry_robust.scale = non_negative_param(params, "odometry_robust_scale", 0.05);
   c.odometry_robust.iterations = params.get<int>("odometry_robust_iterations", 3);
   if (c.odometry_robust.iterations < 0 || c.odometry_robust.iterations > 20) {
     throw ControllerConfigError("parameter " + path_of(params, "odometry_robust_iterations") + " must be in [0, 20] (got " +

@@ -3,19 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "controllers/param_checks.hpp"
+
 namespace mechsim::control {
-namespace {
-
-double non_negative(const Params& params, const char* key, double fallback) {
-  const double v = params.get<double>(key, fallback);
-  if (!(v >= 0.0) || !std::isfinite(v)) {
-    throw ControllerConfigError("parameter " + join_param_path(params.path(), key) + " must be finite and >= 0 (got " +
-                                std::to_string(v) + ")");
-  }
-  return v;
-}
-
-}  // namespace
 
 bool GripperActionController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
   const std::string joint_path = join_param_path(params.path(), "joint");
@@ -23,10 +13,10 @@ bool GripperActionController::init(RobotHardware& hardware, const Params& params
   const std::string joint = params.get<std::string>("joint");
   joint_ = hardware.claim_joint(joint, iface_, joint_path);
   if (iface_ == HardwareInterface::Effort) pid_.init(params, "gains/" + joint);
-  goal_tolerance_ = non_negative(params, "goal_tolerance", 0.01);
-  default_max_effort_ = non_negative(params, "max_effort", 0.0);
-  stall_velocity_threshold_ = non_negative(params, "stall_velocity_threshold", 0.001);
-  stall_timeout_ = non_negative(params, "stall_timeout", 1.0);
+  goal_tolerance_ = non_negative_param(params, "goal_tolerance", 0.01);
+  default_max_effort_ = non_negative_param(params, "max_effort", 0.0);
+  stall_velocity_threshold_ = non_negative_param(params, "stall_velocity_threshold", 0.001);
+  stall_timeout_ = non_negative_param(params, "stall_timeout", 1.0);
   state_.init(JointControllerState{});
   return true;
 }

@@ -2,28 +2,18 @@
 
 #include <cmath>
 
+#include "controllers/param_checks.hpp"
+
 namespace mechsim::control {
-namespace {
-
-double non_negative(const Params& params, const char* key, double fallback) {
-  const double v = params.get<double>(key, fallback);
-  if (!(v >= 0.0) || !std::isfinite(v)) {
-    throw ControllerConfigError("parameter " + join_param_path(params.path(), key) + " must be finite and >= 0 (got " +
-                                std::to_string(v) + ")");
-  }
-  return v;
-}
-
-}  // namespace
 
 bool Pr2GripperController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
   const std::string joint_path = join_param_path(params.path(), "joint");
   if (!params.has("joint")) throw ControllerConfigError("no joint given: parameter " + joint_path + " not found");
   joint_ = hardware.claim_joint(params.get<std::string>("joint"), HardwareInterface::Effort, joint_path);
   pid_.init(params, "pid");
-  goal_threshold_ = non_negative(params, "goal_threshold", 0.01);
-  stall_velocity_threshold_ = non_negative(params, "stall_velocity_threshold", 0.001);
-  stall_timeout_ = non_negative(params, "stall_timeout", 0.1);
+  goal_threshold_ = non_negative_param(params, "goal_threshold", 0.01);
+  stall_velocity_threshold_ = non_negative_param(params, "stall_velocity_threshold", 0.001);
+  stall_timeout_ = non_negative_param(params, "stall_timeout", 0.1);
   initial_max_effort_ = params.get<double>("max_effort", -1.0);
   if (!std::isfinite(initial_max_effort_)) {
     throw ControllerConfigError("parameter " + join_param_path(params.path(), "max_effort") + " is not finite");

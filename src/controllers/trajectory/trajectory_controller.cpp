@@ -5,18 +5,10 @@
 
 #include "control/angles.hpp"
 #include "control/controller_params.hpp"
+#include "controllers/param_checks.hpp"
 
 namespace mechsim::control {
 namespace {
-
-double non_negative(const Params& params, const char* key, double fallback) {
-  const double v = params.get<double>(key, fallback);
-  if (!std::isfinite(v) || v < 0.0) {
-    throw ControllerConfigError("parameter " + join_param_path(params.path(), key) +
-                                " must be a finite value >= 0, got " + std::to_string(v));
-  }
-  return v;
-}
 
 double period_of(double rate) noexcept { return rate > 0.0 ? 1.0 / rate : 0.0; }
 
@@ -85,9 +77,9 @@ bool JointTrajectoryController::init(RobotHardware& hardware, const Params& para
                                 " must be at least 1, got " + std::to_string(max_points));
   }
   config.max_points = static_cast<std::size_t>(max_points);
-  state_period_ = period_of(non_negative(params, "state_publish_rate", 50.0));
-  monitor_period_ = period_of(non_negative(params, "action_monitor_rate", 20.0));
-  stop_duration_ = non_negative(params, "stop_trajectory_duration", 0.0);
+  state_period_ = period_of(non_negative_param(params, "state_publish_rate", 50.0));
+  monitor_period_ = period_of(non_negative_param(params, "action_monitor_rate", 20.0));
+  stop_duration_ = non_negative_param(params, "stop_trajectory_duration", 0.0);
 
   const std::size_t n = names.size();
   // Room for the kept part of the current trajectory, the bridge and the new points.

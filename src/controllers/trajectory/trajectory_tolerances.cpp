@@ -3,18 +3,10 @@
 #include <cmath>
 
 #include "control/hardware.hpp"
+#include "controllers/param_checks.hpp"
 
 namespace mechsim::control {
 namespace {
-
-double non_negative(const Params& p, const char* key, double fallback) {
-  const double v = p.get<double>(key, fallback);
-  if (!std::isfinite(v) || v < 0.0) {
-    throw ControllerConfigError("parameter " + join_param_path(p.path(), key) + " must be a finite value >= 0, got " +
-                                std::to_string(v));
-  }
-  return v;
-}
 
 // control_msgs/JointTolerance: > 0 sets, 0 keeps the default, < 0 removes.
 void apply(double requested, double& value) noexcept {
@@ -31,15 +23,15 @@ TrajectoryTolerances read_default_tolerances(const std::optional<Params>& constr
   t.goal.assign(joints.size(), StateTolerance{});
   double stopped = kDefaultStoppedVelocityTolerance;
   if (constraints) {
-    t.goal_time = non_negative(*constraints, "goal_time", 0.0);
-    stopped = non_negative(*constraints, "stopped_velocity_tolerance", kDefaultStoppedVelocityTolerance);
+    t.goal_time = non_negative_param(*constraints, "goal_time", 0.0);
+    stopped = non_negative_param(*constraints, "stopped_velocity_tolerance", kDefaultStoppedVelocityTolerance);
   }
   for (std::size_t i = 0; i < joints.size(); ++i) {
     t.goal[i].velocity = stopped;
     if (!constraints) continue;
     if (auto joint = constraints->find(joints[i])) {
-      t.path[i].position = non_negative(*joint, "trajectory", 0.0);
-      t.goal[i].position = non_negative(*joint, "goal", 0.0);
+      t.path[i].position = non_negative_param(*joint, "trajectory", 0.0);
+      t.goal[i].position = non_negative_param(*joint, "goal", 0.0);
     }
   }
   return t;
