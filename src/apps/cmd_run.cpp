@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/stop_on_signals.hpp"
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
 
@@ -51,29 +52,6 @@ std::function<void(const sim::RunProgress&)> progress_printer() {
   };
 }
 
-// The signal that asked the run to stop. A signal handler can only reach a static object; this is
-// the one, written by the handler and read by the run loop (lock-free, hence async-signal-safe).
-std::atomic<int> g_interrupt{0};
-static_assert(std::atomic<int>::is_always_lock_free);
-
-extern "C" void request_stop(int signal) {
-  g_interrupt.store(signal, std::memory_order_relaxed);
-  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
-}
-
-// SIGINT/SIGTERM end the run at the next tick with its report written and marked interrupted.
-struct StopOnSignals {
-  StopOnSignals() {
-    g_interrupt.store(0);
-    std::signal(SIGINT, request_stop);
-    std::signal(SIGTERM, request_stop);
-  }
-  ~StopOnSignals() {
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-  }
-};
-
 void run(const RunArgs& args, CommandResult& result) {
   sim::Scenario scenario = sim::load_scenario(args.scenario);
   if (args.duration > 0.0) scenario.duration = args.duration;
@@ -91,7 +69,7 @@ void run(const RunArgs& args, CommandResult& result) {
   };
   std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time, "
             << physics::integrator_name(scenario.integrator) << " integrator\n" << std::flush;
-  options.interrupt = &g_interrupt;
+  options.interrupt = &g_stop_signal;
   const StopOnSignals stop_on_signals;
   const sim::ScenarioResult r = sim::run_scenario(scenario, options);
   std::cout << "distance " << r.distance << " m, final pose (" << r.final_x << ", " << r.final_y << ") yaw "

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "apps/commands.hpp"
+#include "apps/stop_on_signals.hpp"
 #include "batch/local_runner.hpp"
 #include "batch/point_result.hpp"
 #include "batch/point_run.hpp"
@@ -42,27 +43,6 @@ struct SweepArgs {
   std::size_t points_per_task = 0;
   std::string dir;  // collect, status, run-point, run-task
   std::size_t index = 0;
-};
-
-// The signal that asked the sweep (or a point) to stop: a handler can only reach a static object.
-std::atomic<int> g_interrupt{0};
-static_assert(std::atomic<int>::is_always_lock_free);
-
-extern "C" void request_sweep_stop(int signal) {
-  g_interrupt.store(signal, std::memory_order_relaxed);
-  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
-}
-
-struct StopOnSignals {
-  StopOnSignals() {
-    g_interrupt.store(0);
-    std::signal(SIGINT, request_sweep_stop);
-    std::signal(SIGTERM, request_sweep_stop);
-  }
-  ~StopOnSignals() {
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-  }
 };
 
 std::string this_binary() {
@@ -153,7 +133,7 @@ void run_sweep(const SweepArgs& args, CommandResult& result) {
   batch::LocalOptions o;
   o.exe = exe;
   o.jobs = args.jobs > 0 ? args.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  o.interrupt = &g_interrupt;
+  o.interrupt = &g_stop_signal;
   o.progress = &std::cerr;
   o.tty = isatty(fileno(stderr)) != 0;
   std::cout << "sweep " << plan.name << ": " << plan.points.size() << " points, " << todo.size() << " to run ("
@@ -166,7 +146,7 @@ void run_sweep(const SweepArgs& args, CommandResult& result) {
   collect(dir, plan, !args.no_plots);
   if (tally.interrupted) {
     std::cout << "interrupted: continue with mechsim sweep " << args.sweep_file << " -o " << dir.string() << " --resume\n";
-    result.exit_code = 128 + g_interrupt.load();
+    result.exit_code = 128 + g_stop_signal.load();
   }
 }
 
@@ -181,13 +161,13 @@ void run_task(const SweepArgs& args, CommandResult& result) {
   batch::LocalOptions o;
   o.exe = this_binary();
   o.jobs = std::max(1, args.jobs);
-  o.interrupt = &g_interrupt;
+  o.interrupt = &g_stop_signal;
   o.progress = &std::cout;
   const StopOnSignals stop_on_signals;
   const batch::Tally tally = batch::run_points_locally(dir, plan, todo, o);
   // A task with a point that crashed or timed out fails, so that sacct shows which to resubmit.
   const std::vector<std::size_t> left = batch::unfinished_points(dir, plan, first, first + args.points_per_task);
-  if (tally.interrupted) result.exit_code = 128 + g_interrupt.load();
+  if (tally.interrupted) result.exit_code = 128 + g_stop_signal.load();
   else if (!left.empty()) result.exit_code = 1;
 }
 
@@ -263,7 +243,7 @@ void add_sweep_command(CLI::App& app, CommandResult& result) {
     if (args->index >= plan.points.size()) throw UserError("the sweep has no point " + std::to_string(args->index));
     const StopOnSignals stop_on_signals;
     inject_test_fault(args->index);
-    result.exit_code = batch::run_point(args->dir, plan, args->index, &g_interrupt);
+    result.exit_code = batch::run_point(args->dir, plan, args->index, &g_stop_signal);
   });
   CLI::App* task_cmd = cmd->add_subcommand("run-task", "Run a Slurm array task's points")->group("");
   task_cmd->add_option("dir", args->dir, "Sweep folder")->required();
