@@ -29,17 +29,15 @@ function(mechsim_test name)
     set(ARG_LABELS unit)
   endif()
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gmock GTest::gtest_main)
-  target_compile_definitions(${name} PRIVATE
-    MECHSIM_SHARED_DIR="${MECHSIM_SHARED_DIR}"
-    MECHSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    MECHSIM_BINARY_DIR="${PROJECT_BINARY_DIR}"
-    MECHSIM_EXE="${PROJECT_BINARY_DIR}/bin/mechsim")
+  # mechsim_test_paths: MECHSIM_SHARED_DIR, MECHSIM_SOURCE_DIR, MECHSIM_BINARY_DIR, MECHSIM_EXE (and
+  # the like) as calls into one generated source, not absolute paths on the compile line.
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} mechsim_test_paths GTest::gtest GTest::gmock GTest::gtest_main)
   mechsim_warnings(${name})
   # GoogleTest/GoogleMock and the standard headers every test uses, parsed once per program
   # instead of once per source (they were about half of a test source's compile time).
   target_precompile_headers(${name} PRIVATE <gmock/gmock.h> <gtest/gtest.h> <filesystem> <fstream>
-                                            <functional> <map> <memory> <sstream> <string> <vector>)
+                                            <functional> <map> <memory> <sstream> <string> <vector>
+                                            <mechsim_test_paths.hpp>)
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # Through the precompiled header, GCC 12 at -O3 reports its known false positives on inlined
     # std::string code ("literal" + std::string: GCC bugs 105329, 105651; memcpy bounds) that it
@@ -84,8 +82,8 @@ function(mechsim_benchmark name)
   endif()
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPS} benchmark::benchmark)
-  target_compile_definitions(${name} PRIVATE MECHSIM_SHARED_DIR="${MECHSIM_SHARED_DIR}"
-                                             MECHSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  # The paths as in mechsim_test (no precompiled header here: the declarations come by -include).
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} mechsim_test_paths benchmark::benchmark)
+  target_compile_options(${name} PRIVATE -include mechsim_test_paths.hpp)
   mechsim_warnings(${name})
 endfunction()

@@ -23,6 +23,7 @@ void add_xacro_options(CLI::App& app);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_world_command(CLI::App& app, CommandResult& result);
 void add_run_command(CLI::App& app, CommandResult& result);
+void add_render_command(CLI::App& app, CommandResult& result);
 void add_tune_command(CLI::App& app, CommandResult& result);
 void add_spawner_command(CLI::App& app, CommandResult& result);  // ROS builds: mechsim_spawner
 void add_bench_command(CLI::App& app, CommandResult& result);

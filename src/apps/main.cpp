@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
   add_check_command(app, result);
   add_world_command(app, result);
   add_run_command(app, result);
+  add_render_command(app, result);
   add_tune_command(app, result);
   add_spawner_command(app, result);
   add_bench_command(app, result);

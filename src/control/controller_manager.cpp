@@ -477,37 +477,43 @@ void ControllerManager::fail(Entry& entry, const char* prefix, const char* reaso
 
 void ControllerManager::apply_switch(double time) noexcept {
   for (Entry* e : pending_stop_) {
-    if (e->state.load() != ControllerLifecycle::Running) continue;
-    try {
-      e->controller->stopping(time);
-    } catch (...) {
-      // A controller being stopped is stopped even if stopping() throws.
-    }
-    e->state.store(ControllerLifecycle::Stopped);
+    if (e->state.load() == ControllerLifecycle::Running) stop(*e, time);
   }
   for (Entry* e : pending_start_) {
-    if (e->state.load() == ControllerLifecycle::Running) continue;
-    const char* error = nullptr;
-    try {
-      e->controller->starting(time);
-    } catch (const std::exception& ex) {
-      error = ex.what();
-    } catch (...) {
-      error = "starting() threw an unknown exception";
-    }
-    if (error != nullptr) {
-      rt_add(e->failures, 1);
-      if (e->failure_mutex.try_lock()) {
-        std::size_t used = append(e->failure, sizeof e->failure, 0, "starting() failed: ");
-        append(e->failure, sizeof e->failure, used, error);
-        e->failure_mutex.unlock();
-      }
-      e->state.store(ControllerLifecycle::Stopped);
-      continue;
-    }
-    e->state.store(ControllerLifecycle::Running);
+    if (e->state.load() != ControllerLifecycle::Running) start(*e, time);
   }
   switch_pending_.store(false, std::memory_order_release);
+}
+
+void ControllerManager::stop(Entry& e, double time) noexcept {
+  try {
+    e.controller->stopping(time);
+  } catch (...) {
+    // A controller being stopped is stopped even if stopping() throws.
+  }
+  e.state.store(ControllerLifecycle::Stopped);
+}
+
+void ControllerManager::start(Entry& e, double time) noexcept {
+  const char* error = nullptr;
+  try {
+    e.controller->starting(time);
+  } catch (const std::exception& ex) {
+    error = ex.what();
+  } catch (...) {
+    error = "starting() threw an unknown exception";
+  }
+  if (error != nullptr) {
+    rt_add(e.failures, 1);
+    if (e.failure_mutex.try_lock()) {
+      std::size_t used = append(e.failure, sizeof e.failure, 0, "starting() failed: ");
+      append(e.failure, sizeof e.failure, used, error);
+      e.failure_mutex.unlock();
+    }
+    e.state.store(ControllerLifecycle::Stopped);
+    return;
+  }
+  e.state.store(ControllerLifecycle::Running);
 }
 
 void ControllerManager::run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept {
@@ -538,8 +544,8 @@ void ControllerManager::run_controllers(const std::vector<Entry*>& list, double 
   }
 }
 
-void ControllerManager::update(double time, double period) noexcept {
-  const Clock::time_point start = Clock::now();
+void ControllerManager::update(double time, double period, bool reset_controllers) noexcept {
+  const Clock::time_point began = Clock::now();
   int index = 0;
   do {
     index = current_list_.load();
@@ -549,6 +555,16 @@ void ControllerManager::update(double time, double period) noexcept {
 
   mechanism::propagate_actuator_to_joint_position(model_, state_);
   if (switch_pending_.load(std::memory_order_acquire)) apply_switch(time);
+  if (reset_controllers) {
+    // ros_control's ControllerManager::update(time, period, true): every running controller is
+    // stopped and started again (gazebo_ros_control asks for it when its e-stop is released).
+    // Model plugins are not ros_control controllers: they run on.
+    for (Entry* e : list) {
+      if (e->model_plugin || e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
+      stop(*e, time);
+      start(*e, time);
+    }
+  }
   for (mechanism::JointState& joint : state_.joints) {
     if (joint.command_mode == HardwareInterface::Effort) joint.commanded_effort = 0.0;
   }
@@ -557,7 +573,7 @@ void ControllerManager::update(double time, double period) noexcept {
   mechanism::propagate_joint_to_actuator_effort(model_, state_);
 
   list_in_use_.store(-1);
-  const std::uint64_t ns = elapsed_ns(start, Clock::now());
+  const std::uint64_t ns = elapsed_ns(began, Clock::now());
   rt_add(ticks_, 1);
   rt_add(tick_time_sum_ns_, ns);
   rt_max(tick_time_max_ns_, ns);

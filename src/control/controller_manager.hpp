@@ -145,8 +145,10 @@ class ControllerManager {
   Controller* controller(const std::string& name) const;
   ManagerStatistics statistics() const;
 
-  // The real-time tick. `time` and `period` in seconds.
-  void update(double time, double period) noexcept;
+  // The real-time tick. `time` and `period` in seconds. `reset_controllers`: ros_control's flag of
+  // the same name; every running controller (model plugins aside) is stopped and started again
+  // before this tick's update (gazebo_ros_control sets it on the tick its e-stop is released).
+  void update(double time, double period, bool reset_controllers = false) noexcept;
 
  private:
   struct Entry;
@@ -156,6 +158,10 @@ class ControllerManager {
   void publish_list(std::vector<Entry*> list);
   void run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept;
   void apply_switch(double time) noexcept;
+  // stopping() / starting() of one entry, in the tick: a throw from starting() leaves it stopped
+  // with the reason recorded; a throw from stopping() still stops it.
+  void stop(Entry& entry, double time) noexcept;
+  void start(Entry& entry, double time) noexcept;
   void fail(Entry& entry, const char* prefix, const char* reason, double time) noexcept;
 
   const mechanism::MechanismModel& model_;

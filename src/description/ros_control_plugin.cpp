@@ -38,6 +38,7 @@ std::optional<RosControlPlugin> find_ros_control_plugin(const RobotModel& robot)
     };
     if (auto ns = text("robotNamespace")) out.robot_namespace = *ns;
     if (auto type = text("robotSimType"); type && !type->empty()) out.robot_sim_type = *type;
+    if (auto topic = text("eStopTopic")) out.e_stop_topic = *topic;
     if (auto period = text("controlPeriod")) {
       errno = 0;
       char* end = nullptr;

@@ -7,6 +7,10 @@
 //   <legacyModeNS>    with DefaultRobotHWSim: true (also when absent, where Gazebo logs an
 //                     error) reads pid_gains at the absolute /gazebo_ros_control/pid_gains/<joint>;
 //                     false at <robotNamespace>/gazebo_ros_control/pid_gains/<joint>
+//   <eStopTopic>      a std_msgs/Bool topic (relative to <robotNamespace>): while the last message
+//                     is true, effort joints get no effort, velocity joints zero velocity and
+//                     position joints hold where they were when it came; the controllers run on
+//                     and are restarted when it is released (DefaultRobotHWSim::eStopActive)
 
 #include <optional>
 #include <string>
@@ -24,6 +28,7 @@ struct RosControlPlugin {
   std::string robot_sim_type = kDefaultRobotHWSim;
   std::optional<double> control_period;  // s, when given
   std::optional<bool> legacy_mode_ns;    // when given
+  std::string e_stop_topic;              // as written ("" when absent: no e-stop)
 
   bool default_hw() const { return robot_sim_type == kDefaultRobotHWSim; }
   // Whether pid_gains are read at the absolute path (gazebo_ros_control's default is true; the

@@ -2,7 +2,11 @@
 #include "ros/node_params.hpp"
 
 #include <algorithm>
+#include <map>
 #include <sstream>
+#include <stdexcept>
+
+#include "description/camera_override.hpp"
 
 namespace mechsim::ros {
 
@@ -39,6 +43,9 @@ const std::vector<PrivateParam>& private_params() {
        "not read, ~lenient defaults to true and ~publish_tf to false (robot_state_publisher's job in Gazebo)"},
       {"gazebo_ignored", "string", "",
        "gazebo mode: gazebo_ros arguments that mean nothing here (GUI, ODE), logged once (empty_world.launch)"},
+      {"camera_overrides", "map", "{}",
+       "per camera sensor name (or all): {rate: Hz, width: px, height: px} in place of the description's, for "
+       "faster runs (one of width/height keeps the aspect ratio; the field of view stays)"},
       {"model_states_rate", "double", "0",
        "gazebo mode: Hz (sim time) of /gazebo/model_states and link_states while subscribed; 0: every tick"},
   };
@@ -83,6 +90,37 @@ void report_private_params(const ::ros::NodeHandle& pnh) {
                                  << ") is not a mechsim_node parameter (left from another node, or misspelt?); "
                                     "ignored. `mechsim_node --params` lists them");
   }
+}
+
+void apply_camera_overrides_param(const ::ros::NodeHandle& pnh, description::RobotModel& robot) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam("camera_overrides", value)) return;
+  const std::string where = pnh.resolveName("camera_overrides");
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+    throw std::runtime_error(where + ": expected a map: camera sensor name (or all) -> {rate, width, height}");
+  }
+  std::map<std::string, description::CameraOverride> overrides;
+  for (auto& [name, entry] : value) {
+    const std::string at = where + "/" + name;
+    if (entry.getType() != XmlRpc::XmlRpcValue::TypeStruct) throw std::runtime_error(at + ": expected {rate, width, height}");
+    description::CameraOverride o;
+    o.origin = "parameter " + at;
+    for (auto& [key, v] : entry) {
+      const bool number = v.getType() == XmlRpc::XmlRpcValue::TypeInt || v.getType() == XmlRpc::XmlRpcValue::TypeDouble;
+      if (!number) throw std::runtime_error(at + "/" + key + ": expected a number");
+      const double x = v.getType() == XmlRpc::XmlRpcValue::TypeInt ? static_cast<double>(static_cast<int>(v)) : static_cast<double>(v);
+      if (key == "rate") {
+        o.rate = x;
+      } else if (key == "width" || key == "height") {
+        if (v.getType() != XmlRpc::XmlRpcValue::TypeInt) throw std::runtime_error(at + "/" + key + ": expected whole pixels");
+        (key == "width" ? o.width : o.height) = static_cast<int>(v);
+      } else {
+        throw std::runtime_error(at + "/" + key + ": unknown key (rate, width, height)");
+      }
+    }
+    overrides[name] = o;
+  }
+  for (const std::string& note : description::apply_camera_overrides(robot, overrides)) ROS_INFO_STREAM("mechsim: " << note);
 }
 
 }  // namespace mechsim::ros

@@ -10,6 +10,8 @@
 
 #include <ros/ros.h>
 
+#include "description/robot_model.hpp"
+
 namespace mechsim::ros {
 
 struct PrivateParam {
@@ -27,5 +29,10 @@ std::string describe_private_params();
 // Logs (INFO) each parameter of the list that is set under `pnh` with its value, and warns about
 // each name under `pnh` that is not in the list (stale from another node, or misspelt).
 void report_private_params(const ::ros::NodeHandle& pnh);
+
+// Applies ~camera_overrides (description/camera_override.hpp) to `robot` and logs each camera
+// changed. Throws std::runtime_error naming the parameter for a malformed value, an unknown
+// camera or an impossible rate/size.
+void apply_camera_overrides_param(const ::ros::NodeHandle& pnh, description::RobotModel& robot);
 
 }  // namespace mechsim::ros

@@ -2,6 +2,7 @@
 #include "ros/sim_node.hpp"
 
 #include <rosgraph_msgs/Clock.h>
+#include <std_msgs/Bool.h>
 #include <std_srvs/Empty.h>
 
 #include <time.h>
@@ -39,6 +40,18 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
                                    "joints get gazebo_ros_control/DefaultRobotHWSim's behaviour instead");
   }
   clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  if (!bridge_->e_stop_topic().empty()) {
+    // gazebo_ros_control subscribes to its <eStopTopic> in the robot's namespace, queue 1.
+    SimBridge* sim = bridge_.get();
+    e_stop_sub_ = robot_nh_.subscribe<std_msgs::Bool>(
+        bridge_->e_stop_topic(), 1, [sim](const std_msgs::Bool::ConstPtr& msg) {
+          if (msg->data != sim->e_stop_active()) {
+            ROS_INFO_STREAM("mechsim: e-stop " << (msg->data ? "active: joints hold, no effort" : "released: controllers restart"));
+          }
+          sim->set_e_stop(msg->data);
+        });
+    ROS_INFO_STREAM("mechsim: gazebo_ros_control e-stop on " << e_stop_sub_.getTopic());
+  }
   if (options_.publish_tf) {
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
     tf_->publish_static(bridge_->time());

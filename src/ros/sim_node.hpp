@@ -99,6 +99,7 @@ class SimNode {
   std::unique_ptr<ModelPluginTopics> plugins_;  // the robot's Gazebo model plugins (model_plugin_topics.hpp)
 
   ::ros::Publisher clock_pub_;
+  ::ros::Subscriber e_stop_sub_;  // gazebo_ros_control's <eStopTopic>, when the description names one
   std::vector<::ros::ServiceServer> services_;
   std::chrono::steady_clock::time_point last_clock_{};  // wall time of the last /clock
   double next_clock_ = 0.0;              // s, sim time of the next /clock

@@ -560,6 +560,20 @@ Scenario load_scenario(const Params& root, const std::string& path) {
       for (const double t : s.laser_picture_times)
         if (!(t >= 0.0) || !std::isfinite(t)) fail(root.child("laser_picture_times"), "times must be >= 0 s");
     }
+    if (auto overrides = root.find("camera_overrides")) {
+      if (!overrides->is_map()) fail(*overrides, "expected a map: camera sensor name (or all) -> {rate, width, height}");
+      for (const std::string& name : overrides->keys()) {
+        const Params o = overrides->child(name);
+        only_keys(o, {"rate", "width", "height"});
+        description::CameraOverride c;
+        c.origin = o.location().empty() ? o.path() : o.location();
+        if (o.has("rate")) c.rate = o.get<double>("rate");
+        if (o.has("width")) c.width = o.get<int>("width");
+        if (o.has("height")) c.height = o.get<int>("height");
+        if (!c.rate && !c.width && !c.height) fail(o, "an override sets rate, width or height");
+        s.camera_overrides[name] = c;
+      }
+    }
     if (root.has("camera_picture_times")) {
       s.camera_picture_times = root.get<std::vector<double>>("camera_picture_times");
       for (const double t : s.camera_picture_times)

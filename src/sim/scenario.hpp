@@ -124,6 +124,10 @@
 //   # Every camera of the robot renders once at these times (none by default: cameras render
 //   # only when asked); frames in cameras/, side by side in camera_sheet.png.
 //   camera_picture_times: [0.5, 10]
+//   # A camera's rate (Hz) and image size (pixels; one of width/height keeps the aspect ratio) in
+//   # place of the description's, by sensor name or for every camera ("all"), for faster runs;
+//   # the field of view stays (description/camera_override.hpp).
+//   camera_overrides: {all: {rate: 5, width: 640}, zed2_depth_camera: {rate: 2}}
 //
 // Unknown keys inside timeline events, world boxes and checks are errors (a misspelt bound
 // must not pass silently). Every error names the file, the line and the parameter path.
@@ -136,6 +140,7 @@
 #include <string>
 #include <vector>
 
+#include "description/camera_override.hpp"
 #include "control/params.hpp"
 #include "control/ports.hpp"
 #include "controllers/gripper/pr2_gripper_ports.hpp"
@@ -251,6 +256,8 @@ struct Scenario {
   std::vector<SensorBlock> sensor_blocks;    // sensors: added to the robot
   std::vector<double> laser_picture_times;   // s; empty: start, middle and end
   std::vector<double> camera_picture_times;  // s; empty: no camera pictures
+  // camera_overrides: per camera sensor (or "all") a lower rate or resolution for a fast run.
+  std::map<std::string, description::CameraOverride> camera_overrides;
 };
 
 // Reads and validates a scenario file. Errors name the file and the parameter path.

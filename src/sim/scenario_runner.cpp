@@ -12,6 +12,7 @@
 #include "control/params.hpp"
 #include "control/params_edit.hpp"
 #include "controllers/drive/rover_drive_ports.hpp"
+#include "description/camera_override.hpp"
 #include "description/robot_loader.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/urdf/sensor_reader.hpp"
@@ -129,6 +130,13 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
       robot.model.sensors.insert(robot.model.sensors.end(), specs.begin(), specs.end());
     } catch (const std::exception& e) {
       throw ScenarioError(std::string("sensors: ") + e.what());
+    }
+  }
+  if (!s.camera_overrides.empty()) {
+    try {
+      description::apply_camera_overrides(robot.model, s.camera_overrides);
+    } catch (const std::exception& e) {
+      throw ScenarioError(std::string("camera_overrides: ") + e.what());
     }
   }
   World world;

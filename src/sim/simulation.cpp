@@ -123,6 +123,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
                             description::kDefaultRobotHWSim + "'s behaviour instead");
   }
   pid_drive_ = PidGainsDrive(*mechanism_, ros_control, options_.parameter_root.value_or(controller_params));
+  if (ros_control) e_stop_topic_ = ros_control->e_stop_topic;
   if (ros_control && ros_control->control_period) {
     const double wanted = *ros_control->control_period;
     const long long n = std::llround(wanted / options_.period);
@@ -145,6 +146,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   const std::size_t n = mechanism_->joints.size();
   physics_joint_.assign(n, -1);
   physics_mode_.assign(n, HardwareInterface::Effort);
+  e_stop_position_.assign(n, 0.0);
   physics_effort_limit_.assign(n, 0.0);
   servo_gains_.assign(n, physics::ServoGains{});
   commanded_.assign(n, false);
@@ -364,7 +366,13 @@ void Simulation::write_physics() {
     // joints take commands.
     if (p < 0 || !commanded_[j]) continue;
     const auto pj = static_cast<std::size_t>(p);
-    const mechanism::JointState& js = state.joints[j];
+    mechanism::JointState js = state.joints[j];
+    if (e_stop_) {
+      // DefaultRobotHWSim::writeSim under e-stop: no effort, no velocity, positions held.
+      js.commanded_effort = 0.0;
+      js.commanded_velocity = 0.0;
+      js.commanded_position = e_stop_position_[j];
+    }
     if (js.effort_limit != physics_effort_limit_[j]) {
       physics_->set_effort_limit(pj, js.effort_limit);
       physics_effort_limit_[j] = js.effort_limit;
@@ -441,7 +449,16 @@ void Simulation::state_changed() {
 TickResult Simulation::step() {
   apply_requests();
   read_physics();
-  if (ticks_ % control_every_ == 0) manager_->update(time(), control_period());
+  const bool e_stop = e_stop_requested_.load(std::memory_order_acquire);
+  if (e_stop && !e_stop_) {
+    for (std::size_t j = 0; j < e_stop_position_.size(); ++j) e_stop_position_[j] = mechanism_state_->joints[j].position;
+  }
+  if (!e_stop && e_stop_) restart_controllers_ = true;
+  e_stop_ = e_stop;
+  if (ticks_ % control_every_ == 0) {
+    manager_->update(time(), control_period(), restart_controllers_);
+    restart_controllers_ = false;
+  }
   write_physics();
   if (external_.active()) external_.apply(*physics_, time());
   for (const Observer& observer : control_observers_) observer(*this);
@@ -527,6 +544,10 @@ void Simulation::reset() {
   apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
   pid_drive_.reset();
+  // An e-stop still requested latches the spawn positions at the next tick; the restart below
+  // stands for the one its release may owe.
+  e_stop_ = false;
+  restart_controllers_ = false;
   mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
   fresh.base.floating = !physics_model_->fixed_to_world();
   *mechanism_state_ = fresh;

@@ -148,6 +148,15 @@ class Simulation {
   void unpause() { paused_.store(false); }
   bool paused() const { return paused_.load(); }
   void request_reset() { reset_requested_.store(true); }
+  // gazebo_ros_control's e-stop (its <eStopTopic>; any thread). While active, the tick still runs
+  // the controllers but writes no effort, zero velocity, and for position-commanded joints the
+  // position each had when the e-stop came (pid_gains joints: their PID towards those); model
+  // plugins are not affected. On release the running controllers are stopped and started again
+  // at the next controller update (ros_control's reset_controllers), e.g. to hold where they are.
+  void set_e_stop(bool active) { e_stop_requested_.store(active, std::memory_order_release); }
+  bool e_stop_active() const { return e_stop_requested_.load(std::memory_order_acquire); }
+  // The e-stop topic of the description's gazebo_ros_control plugin ("" when it names none).
+  const std::string& e_stop_topic() const { return e_stop_topic_; }
   // Asks for `count` more ticks while paused (ROS 2's StepSimulation; run_for() ticks them while it
   // waits paused). pending_steps() counts down as they run.
   void request_steps(std::uint64_t count) { pending_steps_.fetch_add(count); }
@@ -309,6 +318,13 @@ class Simulation {
   double measured_rtf_ = 0.0;
   std::atomic<bool> paused_{false};
   std::atomic<bool> reset_requested_{false};
+  // E-stop: requested (any thread), in force in this tick, the positions latched when it came,
+  // and a controller restart owed to its release (done at the next controller update).
+  std::atomic<bool> e_stop_requested_{false};
+  bool e_stop_ = false;
+  bool restart_controllers_ = false;
+  std::vector<double> e_stop_position_;  // per mechanism joint
+  std::string e_stop_topic_;
   std::atomic<std::uint64_t> pending_steps_{0};
   ExternalForces external_;
   // Posted commands: the tick looks at the flag only; the lock is taken when there are some.

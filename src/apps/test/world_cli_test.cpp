@@ -49,7 +49,7 @@ fs::path scratch() {
 // bounded by coreutils' timeout so that a hang fails instead of blocking.
 CliRun mechsim(const std::string& args) {
   const fs::path dir = scratch();
-  const std::string cmd = "timeout 120 '" MECHSIM_EXE "' " + args + " >'" + (dir / "out").string() +
+  const std::string cmd = "timeout 120 '" + std::string(MECHSIM_EXE) + "' " + args + " >'" + (dir / "out").string() +
                           "' 2>'" + (dir / "err").string() + "' </dev/null";
   const int status = std::system(cmd.c_str());
   CliRun run;

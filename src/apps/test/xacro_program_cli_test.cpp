@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const std::string kXacro = MECHSIM_BINARY_DIR "/bin/xacro";
+const std::string kXacro = std::string(MECHSIM_BINARY_DIR) + "/bin/xacro";
 const fs::path kShared = MECHSIM_SHARED_DIR;
 
 TEST(XacroProgram, SameDocumentAsMechsimXacro) {

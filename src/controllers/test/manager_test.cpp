@@ -349,6 +349,28 @@ TEST_F(ManagerTest, FailingControllersAreStoppedAndReportedOthersKeepRunning) {
   EXPECT_EQ(state_of("failing"), ControllerLifecycle::Running);
 }
 
+// ros_control's update(time, period, reset_controllers = true): every running controller is
+// stopped and started again before the update (gazebo_ros_control, on an e-stop's release);
+// initialized and stopped ones are left alone.
+TEST_F(ManagerTest, ResetControllersRestartsTheRunningOnesOnly) {
+  load("failing");
+  load("pos_j0");
+  ASSERT_TRUE(manager.switch_controllers({"failing"}, {}, SwitchStrictness::Strict).ok);
+  tick(3);
+  auto* scripted = dynamic_cast<ScriptedController*>(manager.controller("failing"));
+  ASSERT_NE(scripted, nullptr);
+  manager.update(time, 0.001, true);  // tick 4 of its count before: starting() set it back to 0
+  time += 0.001;
+  EXPECT_EQ(scripted->stops, 1);
+  EXPECT_EQ(state_of("failing"), ControllerLifecycle::Running);
+  EXPECT_EQ(state_of("pos_j0"), ControllerLifecycle::Initialized);
+  tick(3);  // updates 2-4 since the restart: fail_at 5 not reached
+  EXPECT_EQ(state_of("failing"), ControllerLifecycle::Running);
+  tick(1);  // the fifth since the restart
+  EXPECT_EQ(state_of("failing"), ControllerLifecycle::Stopped);
+  EXPECT_EQ(manager.controller_info("failing")->statistics.updates, 8u);
+}
+
 TEST_F(ManagerTest, ThrowingControllerIsCaughtAtTheBoundary) {
   load("throwing");
   load("vel_j1");

@@ -129,6 +129,8 @@ int run(int argc, char** argv) {
     for (const std::string& w : warnings) ROS_WARN_STREAM("mechsim: " << source << ": " << w);
   }
 
+  mechsim::ros::apply_camera_overrides_param(pnh, bridge.robot);
+
   bool pr2 = false;
   mechsim::ros::NodeOptions options;
   options.robot_namespace = mechsim::ros::plugin_namespace(bridge.robot, &pr2);

@@ -149,6 +149,9 @@ void SimBridge::pause() { impl_->simulation->pause(); }
 void SimBridge::unpause() { impl_->simulation->unpause(); }
 bool SimBridge::paused() const { return impl_->simulation->paused(); }
 void SimBridge::request_reset() { impl_->simulation->request_reset(); }
+void SimBridge::set_e_stop(bool active) { impl_->simulation->set_e_stop(active); }
+bool SimBridge::e_stop_active() const { return impl_->simulation->e_stop_active(); }
+const std::string& SimBridge::e_stop_topic() const { return impl_->simulation->e_stop_topic(); }
 const description::RobotModel& SimBridge::robot() const { return impl_->simulation->robot(); }
 control::Params SimBridge::controller_params() const { return impl_->params; }
 const std::vector<std::string>& SimBridge::joint_drive_notes() const { return impl_->simulation->joint_drive_notes(); }

@@ -265,6 +265,11 @@ class SimBridge {
   void unpause();
   bool paused() const;
   void request_reset();
+  // gazebo_ros_control's e-stop (sim::Simulation::set_e_stop; any thread) and the topic the
+  // description's plugin names for it ("" when none: no e-stop).
+  void set_e_stop(bool active);
+  bool e_stop_active() const;
+  const std::string& e_stop_topic() const;
   const description::RobotModel& robot() const;
   // What the physics left out or changed and why (meshes it could not use, with the link and the
   // path tried; massless links; dropped joints), one line each.

@@ -1,6 +1,7 @@
 // gazebo_ros_control's pid_gains/<joint>: a position or velocity interface driven through a PID
 // to effort (DefaultRobotHWSim) when gains are given, mechsim's servo when not; which path is
-// read (legacyModeNS, robotNamespace); a robotSimType mechsim cannot load is named.
+// read (legacyModeNS, robotNamespace); a robotSimType mechsim cannot load is named; its e-stop
+// (<eStopTopic>: joints hold, controllers restart on release).
 
 #include <gtest/gtest.h>
 
@@ -261,6 +262,115 @@ TEST(PidGains, BadPluginElementsNameTheirLine) {
               std::string::npos)
         << e.what();
   }
+}
+
+// ---- e-stop (DefaultRobotHWSim::eStopActive, GazeboRosControlPlugin's reset_controllers)
+
+void run_ticks(Simulation& sim, double seconds) {
+  for (int k = 0; k < static_cast<int>(std::lround(seconds / kDt)); ++k) {
+    if (!sim.step()) throw std::runtime_error("tick failed");
+  }
+}
+
+control::ScalarCommandPort& command_port(Simulation& sim, const std::string& controller) {
+  auto* port = dynamic_cast<control::ScalarCommandPort*>(sim.controllers().controller(controller)->port("command"));
+  if (port == nullptr) throw std::runtime_error("no command port on " + controller);
+  return *port;
+}
+
+TEST(EStop, TheTopicComesFromThePluginElement) {
+  EXPECT_EQ(make("<eStopTopic>e_stop</eStopTopic>", kControllers)->e_stop_topic(), "e_stop");
+  EXPECT_EQ(make("", kControllers)->e_stop_topic(), "");
+}
+
+// Servo path (no pid_gains): a position joint stopped mid-step stays where the e-stop found it
+// while the controller keeps commanding 1 rad; on release the controller restarts, and a position
+// controller's start takes the current position as its command: the joint stays there.
+TEST(EStop, APositionJointHoldsWhereItWasAndStaysThereAfterTheRelease) {
+  auto sim = make("<eStopTopic>e_stop</eStopTopic>", kControllers);
+  const std::size_t j = *sim->physics().model().joint_index("hinge");
+  sim->load_and_start({"pos"});
+  run_ticks(*sim, 0.001);
+  ASSERT_TRUE(command_port(*sim, "pos").write(1.0));
+  run_ticks(*sim, 0.03);  // on its way: the servo follows the command (ramped at 100 rad/s)
+  sim->set_e_stop(true);
+  run_ticks(*sim, 0.001);
+  const double held = sim->physics().position(j);
+  EXPECT_GT(held, 0.02);
+  EXPECT_LT(held, 0.9);
+  run_ticks(*sim, 1.0);
+  std::printf("e-stop at %.4f rad on the way to 1 rad: %.4f rad after 1 s\n", held, sim->physics().position(j));
+  EXPECT_NEAR(sim->physics().position(j), held, 0.01);
+  EXPECT_EQ(sim->controllers().controller_info("pos")->state, control::ControllerLifecycle::Running);
+  sim->set_e_stop(false);
+  run_ticks(*sim, 0.5);
+  EXPECT_NEAR(sim->physics().position(j), held, 0.01);  // restarted: its command is where it stood
+  // A new command after the release moves it again.
+  ASSERT_TRUE(command_port(*sim, "pos").write(1.0));
+  run_ticks(*sim, 0.5);
+  EXPECT_NEAR(sim->physics().position(j), 1.0, 0.01);
+}
+
+TEST(EStop, AVelocityJointStopsAndMovesAgainOnlyOnANewCommand) {
+  auto sim = make("<eStopTopic>e_stop</eStopTopic>", kControllers);
+  const std::size_t j = *sim->physics().model().joint_index("hinge");
+  sim->load_and_start({"vel"});
+  run_ticks(*sim, 0.001);
+  ASSERT_TRUE(command_port(*sim, "vel").write(2.0));
+  run_ticks(*sim, 0.2);
+  EXPECT_NEAR(sim->physics().velocity(j), 2.0, 0.05);
+  sim->set_e_stop(true);
+  run_ticks(*sim, 0.05);
+  std::printf("velocity 50 ms into the e-stop: %.4f rad/s (2 rad/s before)\n", sim->physics().velocity(j));
+  EXPECT_NEAR(sim->physics().velocity(j), 0.0, 0.05);
+  const double q = sim->physics().position(j);
+  run_ticks(*sim, 0.5);
+  EXPECT_NEAR(sim->physics().position(j), q, 0.02);  // at 2 rad/s it would have turned 1 rad
+  sim->set_e_stop(false);
+  run_ticks(*sim, 0.2);
+  // The velocity controller's start commands zero: the 2 rad/s from before the e-stop is gone.
+  EXPECT_NEAR(sim->physics().velocity(j), 0.0, 0.05);
+  ASSERT_TRUE(command_port(*sim, "vel").write(-1.0));
+  run_ticks(*sim, 0.2);
+  EXPECT_NEAR(sim->physics().velocity(j), -1.0, 0.05);
+}
+
+// With pid_gains the PID pulls the joint back to the position latched at the e-stop (it overshoots
+// that position first: the joint was moving).
+TEST(EStop, WithPidGainsThePidHoldsTheLatchedPosition) {
+  constexpr const char* kDamped = R"(
+gazebo_ros_control:
+  pid_gains:
+    hinge: {p: 20.0, i: 0.0, d: 4.0}
+)";
+  auto sim = make("<eStopTopic>e_stop</eStopTopic>", std::string(kDamped) + kControllers);
+  const std::size_t j = *sim->physics().model().joint_index("hinge");
+  sim->load_and_start({"pos"});
+  run_ticks(*sim, 0.001);
+  ASSERT_TRUE(command_port(*sim, "pos").write(1.0));
+  run_ticks(*sim, 0.1);
+  sim->set_e_stop(true);
+  run_ticks(*sim, 0.001);
+  const double held = sim->physics().position(j);
+  EXPECT_LT(held, 0.8);
+  run_ticks(*sim, 3.0);
+  std::printf("pid_gains e-stop: latched %.4f rad, %.4f rad 3 s later\n", held, sim->physics().position(j));
+  EXPECT_NEAR(sim->physics().position(j), held, 0.01);
+}
+
+TEST(EStop, AResetDuringTheEStopHoldsTheSpawnPosition) {
+  auto sim = make("<eStopTopic>e_stop</eStopTopic>", kControllers);
+  const std::size_t j = *sim->physics().model().joint_index("hinge");
+  sim->load_and_start({"vel"});
+  run_ticks(*sim, 0.001);
+  ASSERT_TRUE(command_port(*sim, "vel").write(2.0));
+  run_ticks(*sim, 0.3);
+  sim->set_e_stop(true);
+  run_ticks(*sim, 0.1);
+  sim->reset();
+  run_ticks(*sim, 0.3);
+  EXPECT_NEAR(sim->physics().position(j), 0.0, 1e-3);
+  EXPECT_TRUE(sim->e_stop_active());
 }
 
 }  // namespace

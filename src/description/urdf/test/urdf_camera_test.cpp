@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "description/camera_override.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/urdf/urdf_parser.hpp"
 
@@ -195,6 +196,70 @@ TEST(UrdfCamera, Pr2HeadCameras) {
             "/wide_stereo/right/image_raw");
   ASSERT_TRUE(cams.count("high_def_sensor"));  // the Prosilica
   EXPECT_EQ(std::get<CameraSpec>(cams.at("high_def_sensor")->details).image_topics.at(0), "/prosilica/image_raw");
+}
+
+// ---- camera overrides (description/camera_override.hpp)
+
+TEST(CameraOverride, ARateAndAWidthKeepTheAspectRatioAndScaleThePluginsIntrinsics) {
+  RobotModel m = parse(kZedDepth);
+  CameraOverride o;
+  o.rate = 5.0;
+  o.width = 640;
+  const std::vector<std::string> notes = apply_camera_overrides(m, {{"zed2_left_camera", o}});
+  const SensorSpec& s = m.sensors[0];
+  const auto& c = std::get<CameraSpec>(s.details);
+  EXPECT_DOUBLE_EQ(s.update_rate, 5.0);
+  EXPECT_EQ(c.lenses[0].width, 640);
+  EXPECT_EQ(c.lenses[0].height, 360);
+  EXPECT_DOUBLE_EQ(c.lenses[0].horizontal_fov, 1.7633);  // the field of view stays
+  // Pixel centres: c' = (c - 0.5) * 0.5 + 0.5.
+  EXPECT_NEAR(c.cx, (658.8206787109375 - 0.5) * 0.5 + 0.5, 1e-9);
+  EXPECT_NEAR(c.cx_prime, (658.8206787109375 - 0.5) * 0.5 + 0.5, 1e-9);
+  EXPECT_NEAR(c.cy, (372.25787353515625 - 0.5) * 0.5 + 0.5, 1e-9);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "sensor 'zed2_left_camera': 15 Hz 1280x720 -> 5 Hz 640x360 (camera override 'zed2_left_camera')");
+}
+
+TEST(CameraOverride, AllAppliesToEveryCameraAndANamedOneWins) {
+  const std::string two = std::string(kZedDepth) + R"(
+<gazebo reference="base"><sensor type="camera" name="cam2"><update_rate>30</update_rate>
+  <camera><horizontal_fov>1.0</horizontal_fov><image><width>640</width><height>480</height></image></camera></sensor></gazebo>)";
+  RobotModel m = parse(two);
+  ASSERT_EQ(m.sensors.size(), 2u);
+  CameraOverride all, named;
+  all.height = 120;
+  named.rate = 1.0;
+  apply_camera_overrides(m, {{"all", all}, {"cam2", named}});
+  EXPECT_EQ(std::get<CameraSpec>(m.sensors[0].details).lenses[0].width, 213);  // 120 * 16 / 9 rounded
+  EXPECT_EQ(std::get<CameraSpec>(m.sensors[0].details).lenses[0].height, 120);
+  EXPECT_DOUBLE_EQ(m.sensors[0].update_rate, 15.0);
+  EXPECT_EQ(std::get<CameraSpec>(m.sensors[1].details).lenses[0].width, 640);  // the named override only
+  EXPECT_DOUBLE_EQ(m.sensors[1].update_rate, 1.0);
+}
+
+TEST(CameraOverride, AnUnknownCameraOrAnImpossibleValueIsAnErrorNamingWhere) {
+  RobotModel m = parse(kZedDepth);
+  CameraOverride o;
+  o.rate = 5.0;
+  o.origin = "s.yaml:7";
+  try {
+    apply_camera_overrides(m, {{"zed2_right", o}});
+    FAIL() << "expected an error";
+  } catch (const DescriptionError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("s.yaml:7: camera override 'zed2_right': the robot has no camera sensor of that name "
+                                    "(its cameras: zed2_left_camera)"));
+  }
+  o.rate = -1.0;
+  try {
+    apply_camera_overrides(m, {{"all", o}});
+    FAIL() << "expected an error";
+  } catch (const DescriptionError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("s.yaml:7: camera override 'all': rate must be > 0 Hz"));
+  }
+  CameraOverride zero;
+  zero.width = 0;
+  EXPECT_THROW(apply_camera_overrides(m, {{"all", zero}}), DescriptionError);
+  EXPECT_EQ(std::get<CameraSpec>(m.sensors[0].details).lenses[0].width, 1280);  // nothing changed
 }
 
 }  // namespace

@@ -10,10 +10,12 @@
 // stamps), the true pose from the physics (_publish_odom_tf with odom frame "world").
 #include <gmock/gmock.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <mutex>
 
@@ -25,6 +27,7 @@
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
+#include <std_msgs/Bool.h>
 #include <std_msgs/Float64.h>
 #include <tf2_msgs/TFMessage.h>
 
@@ -47,6 +50,7 @@ struct Planar {
 class TestbotNode : public ::testing::Test {
  protected:
   // Starts mechsim_node on robots/testbots/urdf/<robot>.urdf.xacro with `args` at half real time.
+  // `robot` may also be a description file's path (one with a '/').
   void start(const std::string& robot, const std::map<std::string, std::string>& args, const std::string& controllers,
              const std::string& ns) {
     ASSERT_TRUE(::ros::master::check()) << "no ROS master";
@@ -68,7 +72,7 @@ class TestbotNode : public ::testing::Test {
       }
     });
     node_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{MECHSIM_NODE_EXE, "__name:=mechsim_" + test_, "_model:=" + kTestbots + "/urdf/" + robot + ".urdf.xacro",
+        std::vector<std::string>{MECHSIM_NODE_EXE, "__name:=mechsim_" + test_, "_model:=" + (robot.find('/') != std::string::npos ? robot : kTestbots + "/urdf/" + robot + ".urdf.xacro"),
                                  "_real_time_factor:=0.5", "_publish_odom_tf:=true", "_odom_frame:=world"},
         log_dir() + "/node_" + test_ + ".log");
     controller_manager_msgs::ListControllers list;
@@ -97,7 +101,7 @@ class TestbotNode : public ::testing::Test {
   }
   // Loads and starts `controllers` in the robot namespace; true once all run.
   bool spawn(const std::vector<std::string>& controllers) {
-    std::vector<std::string> argv{MECHSIM_SPAWNER_EXE, "__ns:=" + ns_, "__name:=spawner"};
+    std::vector<std::string> argv{MECHSIM_SPAWNER_EXE, "__ns:=" + (ns_.empty() ? std::string("/") : ns_), "__name:=spawner"};
     argv.insert(argv.end(), controllers.begin(), controllers.end());
     spawner_ = std::make_unique<ChildProcess>(argv, log_dir() + "/spawner_" + test_ + ".log");
     return wait_until(
@@ -418,6 +422,102 @@ TEST_F(TestbotNode, ControllerPluginTypeSpawnsByNameAndFollowsItsCommandTopic) {
   EXPECT_TRUE(wait_until([&] { return std::fabs(position() + 0.1) < 0.01; }, 20.0)) << "finger at " << position();
   settle(0.3);
   EXPECT_NEAR(position(), -0.1, 0.01);
+}
+
+// ---- gazebo_ros_control's pid_gains and e-stop on the turntable (robots/testbots/urdf/turntable.urdf)
+
+// The turntable with <eStopTopic>e_stop</eStopTopic> in its gazebo_ros_control plugin, and a
+// joint_state_controller beside `controllers`; the robot in the root namespace.
+class TurntableNode : public TestbotNode {
+ protected:
+  void start_turntable(const std::string& controllers) {
+    std::ifstream in(kTestbots + "/urdf/turntable.urdf");
+    std::string urdf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string plugin = R"(<plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so"/>)";
+    const std::size_t at = urdf.find(plugin);
+    ASSERT_NE(at, std::string::npos) << "turntable.urdf changed: no plain gazebo_ros_control plugin element";
+    urdf.replace(at, plugin.size(),
+                 R"(<plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so"><eStopTopic>e_stop</eStopTopic></plugin>)");
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::string model = write(name + "_turntable.urdf", urdf);
+    load(write(name + "_jsc.yaml", "joint_state_controller: {type: joint_state_controller/JointStateController, publish_rate: 200}\n"));
+    start(model, {}, controllers, "");
+    sub_ = nh_.subscribe<sensor_msgs::JointState>("/joint_states", 1000, [this](const sensor_msgs::JointState::ConstPtr& js) {
+      for (std::size_t i = 0; i < js->name.size() && i < js->position.size(); ++i) {
+        if (js->name[i] != "hinge") continue;
+        std::lock_guard<std::mutex> lock(hinge_mutex_);
+        hinge_ = js->position[i];
+        peak_ = std::max(peak_, hinge_);
+      }
+    });
+  }
+  void TearDown() override {
+    sub_.shutdown();
+    TestbotNode::TearDown();
+  }
+  double hinge() {
+    std::lock_guard<std::mutex> lock(hinge_mutex_);
+    return hinge_;
+  }
+  double peak() {
+    std::lock_guard<std::mutex> lock(hinge_mutex_);
+    return peak_;
+  }
+  void command(double position) {
+    if (!command_pub_) command_pub_ = nh_.advertise<std_msgs::Float64>("/hinge_position_controller/command", 1, true);
+    std_msgs::Float64 m;
+    m.data = position;
+    command_pub_.publish(m);
+  }
+  void e_stop(bool active) {
+    if (!e_stop_pub_) {
+      e_stop_pub_ = nh_.advertise<std_msgs::Bool>("/e_stop", 1, true);
+      wait_until([&] { return e_stop_pub_.getNumSubscribers() > 0; }, 10.0);
+    }
+    std_msgs::Bool m;
+    m.data = active;
+    e_stop_pub_.publish(m);
+  }
+
+  ::ros::Subscriber sub_;
+  ::ros::Publisher command_pub_, e_stop_pub_;
+  std::mutex hinge_mutex_;
+  double hinge_ = std::nan(""), peak_ = -1e9;
+};
+
+// pid_gains from the parameter server (/gazebo_ros_control/pid_gains/hinge: p 20, d 0.5, a
+// lightly damped loop): a 0.5 rad step overshoots by about 70 % as in Gazebo; mechsim's servo
+// (no gains) would not overshoot.
+TEST_F(TurntableNode, PidGainsFromTheParameterServerDriveThePositionJoint) {
+  start_turntable("turntable_controllers.yaml");
+  ASSERT_TRUE(spawn({"joint_state_controller", "hinge_position_controller"})) << spawner_->log() << node_->log();
+  ASSERT_TRUE(wait_until([&] { return !std::isnan(hinge()); }, 10.0));
+  command(0.5);
+  settle(1.0);
+  std::printf("[ figures  ] ROS pid_gains p 20 d 0.5: a 0.5 rad step peaks at %.4f rad\n", peak());
+  EXPECT_GT(peak(), 0.75);
+  EXPECT_LT(peak(), 0.95);
+}
+
+// <eStopTopic>: while true the position joint holds where it was although the controller is sent
+// another position; on release the controller restarts (its command: where the joint is), and a
+// new command moves the joint again.
+TEST_F(TurntableNode, EStopHoldsTheJointAndTheReleaseRestartsTheControllers) {
+  start_turntable("turntable_servo_controllers.yaml");
+  ASSERT_TRUE(spawn({"joint_state_controller", "hinge_position_controller"})) << spawner_->log() << node_->log();
+  command(0.5);
+  ASSERT_TRUE(wait_until([&] { return std::fabs(hinge() - 0.5) < 0.005; }, 20.0)) << "hinge at " << hinge();
+  e_stop(true);
+  settle(0.2);
+  command(1.0);
+  settle(1.0);
+  EXPECT_NEAR(hinge(), 0.5, 0.005) << "moved during the e-stop\n" << node_->log();
+  e_stop(false);
+  settle(1.0);
+  EXPECT_NEAR(hinge(), 0.5, 0.005) << "the restarted controller should hold where the joint is";
+  command(1.0);
+  EXPECT_TRUE(wait_until([&] { return std::fabs(hinge() - 1.0) < 0.005; }, 20.0)) << "hinge at " << hinge();
+  EXPECT_NE(node_->log().find("e-stop on /e_stop"), std::string::npos) << node_->log();
 }
 
 }  // namespace
