@@ -17,6 +17,7 @@
 #include "description/urdf/urdf_parser.hpp"
 #include "physics/heightmap_sample.hpp"
 #include "physics/mars_yard.hpp"
+#include "description/camera_override.hpp"
 #include "physics/physics.hpp"
 #include "sensors/sensor_set.hpp"
 
@@ -77,12 +78,20 @@ Rig pr2_before_a_box() {
 }
 
 // Samples the named cameras at one instant per iteration (all due together at `rate`).
-void cameras(benchmark::State& state, Rig (*make)(), std::set<std::string> names, double rate) {
+// `width` > 0: every camera overridden to that width (aspect kept) and to `rate` (description/
+// camera_override.hpp, a fast run's settings).
+void cameras(benchmark::State& state, Rig (*make)(), std::set<std::string> names, double rate, int width = 0) {
   if (!std::filesystem::is_directory(kShared + "/robots/reference")) {
     state.SkipWithError("shared data folder absent");
     return;
   }
   Rig rig = make();
+  if (width > 0) {
+    description::CameraOverride o;
+    o.rate = rate;
+    o.width = width;
+    description::apply_camera_overrides(rig.robot, {{"all", o}});
+  }
   SensorSet set(rig.robot.sensors, rig.model, 1);
   std::size_t enabled = 0;
   for (std::size_t i = 0; i < set.size(); ++i) {
@@ -115,6 +124,13 @@ void cameras(benchmark::State& state, Rig (*make)(), std::set<std::string> names
 void zed2_set(benchmark::State& s) {
   cameras(s, cc8_on_mars_yard, {"zed2_left_raw_camera", "zed2_left_camera", "zed2_right_raw_camera", "zed2_right_camera"}, 15.0);
 }
+// The same set with camera_overrides {all: {width: W, rate: 5}}: what a fast run costs.
+void zed2_set_640x360_5hz(benchmark::State& s) {
+  cameras(s, cc8_on_mars_yard, {"zed2_left_raw_camera", "zed2_left_camera", "zed2_right_raw_camera", "zed2_right_camera"}, 5.0, 640);
+}
+void zed2_set_320x180_5hz(benchmark::State& s) {
+  cameras(s, cc8_on_mars_yard, {"zed2_left_raw_camera", "zed2_left_camera", "zed2_right_raw_camera", "zed2_right_camera"}, 5.0, 320);
+}
 void zed2_depth_only(benchmark::State& s) { cameras(s, cc8_on_mars_yard, {"zed2_left_camera"}, 15.0); }
 void pr2_stereo(benchmark::State& s) {
   cameras(s, pr2_before_a_box,
@@ -125,6 +141,8 @@ void pr2_stereo(benchmark::State& s) {
 void pr2_prosilica(benchmark::State& s) { cameras(s, pr2_before_a_box, {"high_def_sensor"}, 20.0); }
 
 BENCHMARK(zed2_set)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(zed2_set_640x360_5hz)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(zed2_set_320x180_5hz)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(zed2_depth_only)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(pr2_stereo)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(pr2_prosilica)->Unit(benchmark::kMillisecond)->UseRealTime();
