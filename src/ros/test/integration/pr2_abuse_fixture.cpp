@@ -110,22 +110,30 @@ void AbuseWatchdog::run() {
   }
 }
 
-bool must_reject(const trajectory_msgs::JointTrajectory& t, const std::vector<std::string>& joints) {
+std::string why_malformed(const trajectory_msgs::JointTrajectory& t, const std::vector<std::string>& joints) {
+  // No points: a stop request, whatever it names (mechsim's trajectory controllers; ros_controllers'
+  // rejects unknown joint names in an action goal first).
+  if (t.points.empty()) return "";
   Names seen;
   for (const std::string& n : t.joint_names) {
-    if (std::find(joints.begin(), joints.end(), n) == joints.end() || !seen.insert(n).second) return true;
+    if (std::find(joints.begin(), joints.end(), n) == joints.end()) return "unknown joint '" + n.substr(0, 20) + "'";
+    if (!seen.insert(n).second) return "joint '" + n + "' twice";
   }
   for (std::size_t k = 0; k < t.points.size(); ++k) {
     const auto& p = t.points[k];
-    if (p.positions.size() != t.joint_names.size()) return true;
-    if (!p.velocities.empty() && p.velocities.size() != t.joint_names.size()) return true;
+    const std::string at = "points[" + std::to_string(k) + "]";
+    if (p.positions.size() != t.joint_names.size()) return at + ": " + std::to_string(p.positions.size()) + " positions";
+    if (!p.velocities.empty() && p.velocities.size() != t.joint_names.size()) return at + ": velocities' length";
     for (double v : p.positions)
-      if (!std::isfinite(v)) return true;
+      if (!std::isfinite(v)) return at + ": a position not finite";
     for (double v : p.velocities)
-      if (!std::isfinite(v)) return true;
-    if (k > 0 && p.time_from_start.toSec() <= t.points[k - 1].time_from_start.toSec()) return true;
+      if (!std::isfinite(v)) return at + ": a velocity not finite";
+    if (k > 0 && p.time_from_start.toSec() <= t.points[k - 1].time_from_start.toSec()) {
+      return at + ": time " + std::to_string(p.time_from_start.toSec()) + " s not after " +
+             std::to_string(t.points[k - 1].time_from_start.toSec()) + " s";
+    }
   }
-  return false;
+  return "";
 }
 
 std::string str(const Names& n) {
@@ -178,10 +186,13 @@ void Pr2Abuse::SetUp() {
 }
 
 void Pr2Abuse::TearDown() {
-  // Goals and clients go before the node, which answers their cancels.
-  follow_ = {};
-  jta_ = {};
-  grip_ = {};
+  // Goal handles before their clients (actionlib's order), both before the node.
+  follow_.goals.clear();
+  jta_.goals.clear();
+  grip_.goals.clear();
+  follow_.client.reset();
+  jta_.client.reset();
+  grip_.client.reset();
   publishers_.clear();
   clients_.clear();
   clock_sub_.shutdown();
@@ -272,8 +283,10 @@ int Pr2Abuse::end_goals(double timeout, std::map<std::string, int>& outcomes) {
         continue;
       }
       const auto state = g.handle.getTerminalState().state_;
-      ++outcomes[what + (g.must_reject ? " (malformed) " : " ") + actionlib::TerminalState(state).toString()];
-      if (g.must_reject && state == actionlib::TerminalState::SUCCEEDED) wrong.push_back(what + ": a malformed goal SUCCEEDED");
+      ++outcomes[what + (g.malformed.empty() ? " " : " (malformed) ") + actionlib::TerminalState(state).toString()];
+      if (!g.malformed.empty() && state == actionlib::TerminalState::SUCCEEDED) {
+        wrong.push_back(what + ": a malformed goal SUCCEEDED (" + g.malformed + ")");
+      }
     }
     return open;
   };

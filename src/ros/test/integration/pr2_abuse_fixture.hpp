@@ -74,14 +74,16 @@ template <class Action>
 struct GoalLog {
   struct Goal {
     actionlib::ClientGoalHandle<Action> handle;
-    bool must_reject = false;  // malformed: wrong joints or lengths, non-finite, times not increasing
+    std::string malformed;  // why any controller must refuse it ("" when well formed)
   };
   std::unique_ptr<actionlib::ActionClient<Action>> client;
   std::vector<Goal> goals;
 };
 
-// A trajectory any trajectory controller must refuse (see GoalLog::Goal::must_reject).
-bool must_reject(const trajectory_msgs::JointTrajectory& t, const std::vector<std::string>& joints);
+// Why any trajectory controller must refuse `t` for `joints` ("" when it need not): an unknown or
+// repeated joint, a point's wrong number of values, a non-finite value, times not increasing; a
+// trajectory without points is a stop request, never malformed.
+std::string why_malformed(const trajectory_msgs::JointTrajectory& t, const std::vector<std::string>& joints);
 std::string str(const Names& n);  // "{a, b}"
 
 class Pr2Abuse : public ::testing::Test {

@@ -1,6 +1,7 @@
 // The abuse test's requests (pr2_abuse_fixture.hpp): command topics, action goals and cancels,
 // and the controller manager's services (switch storms, load/unload churn, lists, reloads,
 // query_state, the laser tilt's set_periodic_cmd). The /gazebo/* ones are pr2_abuse_gazebo.cpp.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -171,19 +172,19 @@ void Pr2Abuse::action_request(AbuseInputs& in) {
       tol.position = in.nasty(0.1);
       g.goal_tolerance.push_back(tol);
     }
-    follow_.goals.push_back({follow_.client->sendGoal(g), must_reject(g.trajectory, kAbuseRightArm)});
+    follow_.goals.push_back({follow_.client->sendGoal(g), why_malformed(g.trajectory, kAbuseRightArm)});
     ++sent_["action follow_joint_trajectory goal"];
   } else if (a == 1) {
     pcm::JointTrajectoryGoal g;
     bool sane = false;
     g.trajectory = in.trajectory(kAbuseLeftArm, kArmCentre, 0.3, &sane);
-    jta_.goals.push_back({jta_.client->sendGoal(g), must_reject(g.trajectory, kAbuseLeftArm)});
+    jta_.goals.push_back({jta_.client->sendGoal(g), why_malformed(g.trajectory, kAbuseLeftArm)});
     ++sent_["action joint_trajectory_action goal"];
   } else {
     pcm::Pr2GripperCommandGoal g;
     g.command.position = in.nasty(0.08);
     g.command.max_effort = in.nasty(100.0);
-    grip_.goals.push_back({grip_.client->sendGoal(g), !std::isfinite(g.command.position)});
+    grip_.goals.push_back({grip_.client->sendGoal(g), std::isfinite(g.command.position) ? "" : "position not finite"});
     ++sent_["action gripper_action goal"];
   }
   if (!in.chance(0.5)) return;
@@ -305,19 +306,19 @@ void Pr2Abuse::churn_request(AbuseInputs& in) {
   const bool pr2 = in.chance(0.3);
   std::string name;
   bool load = in.chance(0.5);
-  bool expect_ok = false;
   switch (in.below(4)) {
     case 0: name = in.bad_name(); break;
     case 1: name = in.chance(0.5) ? in.pick(kAbuseCore) : in.pick(kAbuseStorm); break;  // loaded (or running)
-    default: {
+    default:
       name = in.pick(kAbuseStorm);
       load = !loaded_.count(name);
-      expect_ok = load || !running_.count(name);
       break;
-    }
   }
-  if (load && loaded_.count(name)) expect_ok = false;
-  if (!load && (!loaded_.count(name) || running_.count(name))) expect_ok = false;
+  // Loading needs parameters (every core and storm controller has them) and a name not loaded;
+  // unloading a loaded controller that is not running.
+  const bool known = std::find(kAbuseCore.begin(), kAbuseCore.end(), name) != kAbuseCore.end() ||
+                     std::find(kAbuseStorm.begin(), kAbuseStorm.end(), name) != kAbuseStorm.end();
+  const bool expect_ok = load ? known && !loaded_.count(name) : loaded_.count(name) && !running_.count(name);
   bool answered = false, ok = false;
   if (load) {
     if (pr2) {
