@@ -369,8 +369,17 @@ SwitchResult ControllerManager::switch_controllers(const std::vector<std::string
   if (to_stop.empty() && accepted.empty()) return result;
   pending_stop_ = std::move(to_stop);
   pending_start_ = std::move(accepted);
-  switch_pending_.store(true, std::memory_order_release);
+  switch_state_.store(kPending, std::memory_order_release);
   return result;
+}
+
+bool ControllerManager::cancel_pending_switch() {
+  std::lock_guard<std::mutex> lock(config_mutex_);
+  int expected = kPending;
+  if (!switch_state_.compare_exchange_strong(expected, kNoSwitch, std::memory_order_acq_rel)) return false;
+  pending_start_.clear();
+  pending_stop_.clear();
+  return true;
 }
 
 bool ControllerManager::wait_for_switch(double timeout) const {
@@ -482,7 +491,12 @@ void ControllerManager::apply_switch(double time) noexcept {
   for (Entry* e : pending_start_) {
     if (e->state.load() != ControllerLifecycle::Running) start(*e, time);
   }
-  switch_pending_.store(false, std::memory_order_release);
+  switch_state_.store(kNoSwitch, std::memory_order_release);
+}
+
+void ControllerManager::try_apply_switch(double time) noexcept {
+  int expected = kPending;
+  if (switch_state_.compare_exchange_strong(expected, kApplying, std::memory_order_acq_rel)) apply_switch(time);
 }
 
 void ControllerManager::stop(Entry& e, double time) noexcept {
@@ -554,7 +568,7 @@ void ControllerManager::update(double time, double period, bool reset_controller
   const std::vector<Entry*>& list = lists_[index];
 
   mechanism::propagate_actuator_to_joint_position(model_, state_);
-  if (switch_pending_.load(std::memory_order_acquire)) apply_switch(time);
+  if (switch_state_.load(std::memory_order_acquire) == kPending) try_apply_switch(time);
   if (reset_controllers) {
     // ros_control's ControllerManager::update(time, period, true): every running controller is
     // stopped and started again (gazebo_ros_control asks for it when its e-stop is released).

@@ -129,14 +129,16 @@ class ControllerManager {
   ControlResult unload_controller(const std::string& name);
   SwitchResult switch_controllers(const std::vector<std::string>& start, const std::vector<std::string>& stop,
                                   SwitchStrictness strictness);
-  bool switch_pending() const { return switch_pending_.load(std::memory_order_acquire); }
+  bool switch_pending() const { return switch_state_.load(std::memory_order_acquire) != kNoSwitch; }
   // Waits until the tick has applied the pending switch; false on timeout (seconds).
   bool wait_for_switch(double timeout) const;
+  // Takes back the pending switch if no tick has begun to apply it: true when taken back (no
+  // controller changes state), false when there was none or a tick applies (or applied) it. A
+  // caller that gives up waiting calls this, so that its "not applied" answer stays true.
+  bool cancel_pending_switch();
   // Applies a pending switch now, outside the tick (`time` in s): only for the owner of the tick
   // while no tick can run (its loop thread stopped, e.g. a model about to be deleted).
-  void apply_pending_switch(double time) noexcept {
-    if (switch_pending()) apply_switch(time);
-  }
+  void apply_pending_switch(double time) noexcept { try_apply_switch(time); }
 
   std::vector<ControllerInfo> list_controllers() const;
   std::optional<ControllerInfo> controller_info(const std::string& name) const;
@@ -157,6 +159,8 @@ class ControllerManager {
   std::string claim_conflict(const Entry& entry) const;
   void publish_list(std::vector<Entry*> list);
   void run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept;
+  // Applies the pending switch unless cancel_pending_switch() takes it back first.
+  void try_apply_switch(double time) noexcept;
   void apply_switch(double time) noexcept;
   // stopping() / starting() of one entry, in the tick: a throw from starting() leaves it stopped
   // with the reason recorded; a throw from stopping() still stops it.
@@ -179,7 +183,10 @@ class ControllerManager {
 
   std::vector<Entry*> pending_start_;
   std::vector<Entry*> pending_stop_;
-  std::atomic<bool> switch_pending_{false};
+  // kPending: accepted, waiting for a tick; kApplying: a tick took it (cancel_pending_switch
+  // can no longer take it back). Only switch_controllers() sets kPending, under config_mutex_.
+  static constexpr int kNoSwitch = 0, kPending = 1, kApplying = 2;
+  std::atomic<int> switch_state_{kNoSwitch};
 
   std::atomic<std::uint64_t> ticks_{0};
   std::atomic<std::uint64_t> tick_time_sum_ns_{0};

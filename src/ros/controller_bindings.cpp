@@ -36,6 +36,8 @@
 // A controller parameter <port>_topic (e.g. cmd_vel_topic: /cc8/cmd_vel) renames a topic;
 // relative names resolve in the controller's namespace. Remapping the full name works too.
 
+#include <ros/names.h>
+
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -209,6 +211,13 @@ template <class Srv, class Binding, class Now>
 }  // namespace
 
 BridgeResult SimNode::load(const std::string& name) {
+  // The controller's parameters and topics live under <ns>/<name>: roscpp throws on a name it
+  // cannot resolve, which failed the whole service call instead of answering ok: false (as
+  // ros_control does, which catches the same exception).
+  std::string why;
+  if (!name.empty() && !::ros::names::validate(controller_ns(name), why)) {
+    return {false, "'" + name + "' cannot be a controller name: " + why};
+  }
   std::lock_guard<std::mutex> lock(manager_mutex_);
   refresh_params(name);
   BridgeResult r = bridge_->load_controller(name);

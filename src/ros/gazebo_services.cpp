@@ -33,6 +33,8 @@ namespace {
 using description::Pose;
 using description::Vec3;
 
+constexpr double kMaxStateValue = 1e10;  // MuJoCo's mjMAXVAL
+
 Pose pose_from(const geometry_msgs::Pose& p) {
   return {{p.position.x, p.position.y, p.position.z}, {p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}};
 }
@@ -79,6 +81,22 @@ EntityState absolute(const EntityState& R, const EntityState& E) {
   out.linear = physics::rotate(R.pose.orientation, E.linear);
   out.angular = physics::rotate(R.pose.orientation, E.angular);
   return out;
+}
+
+// Why a requested pose and twist cannot be set ("" when they can): a non-finite number, a value
+// at or beyond MuJoCo's mjMAXVAL (1e10: what its step takes for a diverged state), or a zero
+// quaternion (no orientation; spawn refuses it too).
+std::string unusable_state(const geometry_msgs::Pose& p, const geometry_msgs::Twist& t) {
+  const double values[] = {p.position.x,    p.position.y,    p.position.z,  p.orientation.w, p.orientation.x,
+                           p.orientation.y, p.orientation.z, t.linear.x,    t.linear.y,      t.linear.z,
+                           t.angular.x,     t.angular.y,     t.angular.z};
+  for (const double v : values) {
+    if (!std::isfinite(v)) return "the pose and twist must be finite";
+    if (std::abs(v) >= kMaxStateValue) return "the pose and twist must be below 1e10 (m, m/s, rad/s) in magnitude";
+  }
+  const auto& q = p.orientation;
+  if (std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z) < 1e-9) return "the orientation quaternion is zero";
+  return "";
 }
 
 // "model::name" -> {model, name}; a name without a scope -> {"", name}.
@@ -215,6 +233,13 @@ void GazeboWorld::advertise_model_services() {
     if (target.kind == Entity::Kind::RobotLink && target.link != robot_->bridge().robot().root_link) {
       *status = "link '" + target.link + "' is moved by its joints: mechsim sets a robot's root link (" +
                 robot_->bridge().robot().root_link + ", the model's pose) only";
+      return false;
+    }
+    // The request's own numbers first: composing with the frame normalises the orientation, which
+    // turned a zero quaternion into the identity, and 1e300 m went through to MuJoCo, which took it
+    // for a diverged simulation and stopped it.
+    if (const std::string why = unusable_state(pose, twist); !why.empty()) {
+      *status = why;
       return false;
     }
     Entity frame;

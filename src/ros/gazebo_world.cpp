@@ -270,6 +270,13 @@ bool GazeboWorld::step(std::uint64_t steps, std::string* status) {
     return false;
   }
   if (steps == 0) return true;
+  // The call holds every /gazebo service until its steps ran: a count of 2^64 - 1 used to hold
+  // them (pause and unpause included) for ever.
+  if (steps > kMaxSteps) {
+    *status = "steps " + std::to_string(steps) + " is more than " + std::to_string(kMaxSteps) +
+              " per call (the /gazebo services wait for the steps to run); step in smaller parts";
+    return false;
+  }
   if (robot_) {
     robot_->bridge().request_steps(steps);
   } else {

@@ -68,6 +68,9 @@ class GazeboWorld {
   double time() const;  // s
   bool paused() const;
   void set_paused(bool paused);
+  // `steps` ticks while paused; answers when they ran. At most kMaxSteps (100 s of simulated
+  // time at 1 kHz) per call.
+  static constexpr std::uint64_t kMaxSteps = 100000;
   bool step(std::uint64_t steps, std::string* status);
   // ---- gazebo_services.cpp: the state, property and force services
   void advertise_model_services();

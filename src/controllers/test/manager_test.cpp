@@ -283,6 +283,23 @@ TEST_F(ManagerTest, SecondSwitchWaitsForTheFirst) {
   EXPECT_TRUE(manager.wait_for_switch(0.0));
 }
 
+// What a caller that gave up waiting does (ros/bridge: switch_controller's timeout): a switch no
+// tick has applied is taken back whole, so that "not applied" stays true.
+TEST_F(ManagerTest, CancelTakesBackASwitchNoTickApplied) {
+  load("pos_j0");
+  ASSERT_TRUE(manager.switch_controllers({"pos_j0"}, {}, SwitchStrictness::Strict).ok);
+  EXPECT_TRUE(manager.cancel_pending_switch());
+  EXPECT_FALSE(manager.switch_pending());
+  EXPECT_FALSE(manager.controller_info("pos_j0")->start_pending);
+  tick();
+  EXPECT_EQ(state_of("pos_j0"), ControllerLifecycle::Initialized);
+  EXPECT_FALSE(manager.cancel_pending_switch()) << "nothing pending";
+  ASSERT_TRUE(manager.switch_controllers({"pos_j0"}, {}, SwitchStrictness::Strict).ok) << "no previous switch left";
+  tick();
+  EXPECT_FALSE(manager.cancel_pending_switch()) << "applied already";
+  EXPECT_EQ(state_of("pos_j0"), ControllerLifecycle::Running);
+}
+
 TEST_F(ManagerTest, UnloadsOnlyStoppedControllers) {
   load("pos_j0");
   ASSERT_TRUE(manager.switch_controllers({"pos_j0"}, {}, SwitchStrictness::Strict).ok);

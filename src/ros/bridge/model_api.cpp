@@ -10,6 +10,13 @@ namespace mechsim::ros {
 namespace {
 
 constexpr double kLoopTimeout = 5.0;  // s (wall) a call waits for the loop thread
+// MuJoCo's mjMAXVAL: a position or velocity at or beyond it is what MuJoCo's step takes for a
+// diverged state (it warns and resets its data), so a request for one would stop the simulation.
+constexpr double kMaxStateValue = 1e10;
+
+bool bounded(const description::Vec3& v) {
+  return std::abs(v.x) < kMaxStateValue && std::abs(v.y) < kMaxStateValue && std::abs(v.z) < kMaxStateValue;
+}
 
 bool finite(const description::Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -102,6 +109,9 @@ BridgeResult SimBridge::set_root_state(const EntityState& state) {
   if (!finite(state.pose) || !finite(state.linear) || !finite(state.angular)) {
     return refuse("the pose and twist must be finite");
   }
+  if (!bounded(state.pose.position) || !bounded(state.linear) || !bounded(state.angular)) {
+    return refuse("the pose and twist must be below 1e10 (m, m/s, rad/s) in magnitude");
+  }
   const description::Quat& q = state.pose.orientation;
   const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
   if (norm < 1e-9) return refuse("the orientation quaternion is zero");
@@ -124,7 +134,9 @@ BridgeResult SimBridge::set_joint_positions(const std::vector<std::string>& join
                   std::to_string(positions.size()) + " values");
   }
   for (std::size_t i = 0; i < joints.size(); ++i)
-    if (!std::isfinite(positions[i])) return refuse("joint '" + joints[i] + "': the position must be finite");
+    if (!std::isfinite(positions[i]) || std::abs(positions[i]) >= kMaxStateValue) {
+      return refuse("joint '" + joints[i] + "': the position must be finite and below 1e10 in magnitude");
+    }
   return impl_->in_loop([joints, positions](sim::Simulation& s) -> BridgeResult {
     std::vector<std::size_t> index;
     for (const std::string& j : joints) {

@@ -1,7 +1,9 @@
 // SimBridge over sim::Simulation (C++20; see sim_bridge.hpp for why it exists).
 #include "ros/bridge/sim_bridge.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
@@ -179,9 +181,24 @@ BridgeResult SimBridge::switch_controllers(const std::vector<std::string>& start
   if (!r.ok) return {false, r.error};
   BridgeResult result;
   for (const std::string& s : r.skipped) result.error += (result.error.empty() ? "" : "; ") + s;
-  // ros_control waits for the update loop to apply the switch; a paused world never does.
-  if (!paused() && cm.switch_pending() && !cm.wait_for_switch(timeout > 0.0 ? timeout : 5.0)) {
-    return {false, "the switch was accepted but not applied within the timeout"};
+  // ros_control waits for the update loop to apply the switch; a paused world never does, and
+  // one paused while we wait will not either: the switch stays pending (listed "waiting") and
+  // the answer is ok, as for a switch made while paused. A switch not applied in time is taken
+  // back, so that the refusal is true (it used to apply at the next tick after "not applied"),
+  // and no timeout (NaN, infinite, 1e300) holds the caller, and the manager's lock, unbounded.
+  constexpr double kMaxWait = 30.0;  // s (wall)
+  const double wait = timeout > 0.0 && std::isfinite(timeout) ? std::min(timeout, kMaxWait) : 5.0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait);
+  while (cm.switch_pending() && !paused()) {
+    if (std::chrono::steady_clock::now() >= deadline) {
+      if (cm.cancel_pending_switch()) {
+        return {false, "the switch was not applied within the timeout (" + std::to_string(wait) +
+                           " s of wall time); it was taken back: no controller changed"};
+      }
+      cm.wait_for_switch(1.0);  // a tick took it just now and applies it
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
   }
   return result;
 }

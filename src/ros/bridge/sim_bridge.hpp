@@ -321,8 +321,10 @@ class SimBridge {
 
   BridgeResult load_controller(const std::string& name);
   BridgeResult unload_controller(const std::string& name);
-  // strict: ros_control STRICT, else BEST_EFFORT. Waits for the tick to apply the switch (at
-  // most `timeout` seconds of wall time; not while paused).
+  // strict: ros_control STRICT, else BEST_EFFORT. Waits for the tick to apply the switch: at
+  // most `timeout` seconds of wall time (5 s when not positive and finite, 30 s at most), after
+  // which the switch is taken back and refused; not while paused (then it stays pending and
+  // applies at the first tick after the unpause).
   BridgeResult switch_controllers(const std::vector<std::string>& start, const std::vector<std::string>& stop,
                                   bool strict, double timeout);
   std::vector<ControllerSummary> list_controllers() const;

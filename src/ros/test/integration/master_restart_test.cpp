@@ -14,31 +14,10 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// The master's answer to lookupNode(name) on 127.0.0.1:port: 1 known, -1 unknown, 0 no answer.
-int lookup_node(int port, const std::string& name) {
-  XmlRpc::XmlRpcClient client("127.0.0.1", port, "/");
-  XmlRpc::XmlRpcValue args, result;
-  args[0] = "/master_restart_test";
-  args[1] = name;
-  if (!client.execute("lookupNode", args, result) || client.isFault()) return 0;
-  if (result.getType() != XmlRpc::XmlRpcValue::TypeArray || result.size() < 1) return 0;
-  return static_cast<int>(result[0]) == 1 ? 1 : -1;
-}
-
-std::unique_ptr<ChildProcess> start_master(int port, const std::string& log) {
-  auto master = std::make_unique<ChildProcess>(
-      std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p", std::to_string(port)}, log);
-  // Up when it answers at all (a lookup of a node it cannot know yet).
-  EXPECT_TRUE(wait_until([&] { return lookup_node(port, "/nobody") != 0 || !master->running(); }, 15.0))
-      << master->log();
-  EXPECT_TRUE(master->running()) << master->log();
-  return master;
-}
-
 TEST(MasterRestart, NodeExitsWithAClearMessageWhenTheMasterRestartedAndWaitsWhileItIsAway) {
   const int port = free_loopback_port();
   const std::string uri = "http://127.0.0.1:" + std::to_string(port);
-  auto master = start_master(port, log_dir() + "/restart_master_1.log");
+  auto master = start_master_on(port, log_dir() + "/restart_master_1.log");
   ChildProcess node({MECHSIM_NODE_EXE, "__name:=restart_sim", "__master:=" + uri,
                      "_model:=" + std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/urdf/cc8.urdf.xacro",
                      "_real_time_factor:=1.0"},
@@ -72,7 +51,7 @@ TEST(MasterRestart, NodeExitsWithAClearMessageWhenTheMasterRestartedAndWaitsWhil
   EXPECT_TRUE(node.running()) << "a master away for a while is waited for:\n" << node.log();
   EXPECT_THAT(node.log(), HasSubstr("does not answer; waiting for it"));
 
-  master = start_master(port, log_dir() + "/restart_master_2.log");
+  master = start_master_on(port, log_dir() + "/restart_master_2.log");
   EXPECT_EQ(node.wait(15.0), 2) << node.log();
   EXPECT_EQ(spawner.wait(5.0), 2) << spawner.log();
   EXPECT_THAT(spawner.log(), HasSubstr("restarted"));

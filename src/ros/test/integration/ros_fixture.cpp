@@ -110,6 +110,26 @@ const auto* const kEnvironment = ::testing::AddGlobalTestEnvironment(new RosEnvi
 const std::string& log_dir() { return state().log_dir; }
 int master_port() { return state().port; }
 
+int lookup_node(int port, const std::string& name) {
+  XmlRpc::XmlRpcClient client("127.0.0.1", port, "/");
+  XmlRpc::XmlRpcValue args, result;
+  args[0] = "/mechsim_ros_test";
+  args[1] = name;
+  if (!client.execute("lookupNode", args, result) || client.isFault()) return 0;
+  if (result.getType() != XmlRpc::XmlRpcValue::TypeArray || result.size() < 1) return 0;
+  return static_cast<int>(result[0]) == 1 ? 1 : -1;
+}
+
+std::unique_ptr<ChildProcess> start_master_on(int port, const std::string& log) {
+  auto master = std::make_unique<ChildProcess>(
+      std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p", std::to_string(port)}, log);
+  // Up when it answers at all (a lookup of a node it cannot know yet).
+  EXPECT_TRUE(wait_until([&] { return lookup_node(port, "/nobody") != 0 || !master->running(); }, 15.0))
+      << master->log();
+  EXPECT_TRUE(master->running()) << master->log();
+  return master;
+}
+
 bool wait_until(const std::function<bool()>& done, double timeout) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
   while (!done()) {

@@ -25,6 +25,12 @@ int master_port();
 // Polls `done` every 10 ms until it is true or `timeout` seconds (wall) pass.
 bool wait_until(const std::function<bool()>& done, double timeout);
 
+// A master's answer to lookupNode(name) on 127.0.0.1:port: 1 known, -1 unknown, 0 no answer.
+int lookup_node(int port, const std::string& name);
+// Starts a second `rosmaster --core` on `port` (for tests that stop and restart a master; the
+// fixture's own master stays) and returns once it answers (test failures otherwise).
+std::unique_ptr<ChildProcess> start_master_on(int port, const std::string& log);
+
 // Calls a service after waiting at most `timeout` s for it; false when absent or the call fails.
 template <class S>
 bool call(const std::string& name, S& srv, double timeout = 10.0) {
