@@ -45,7 +45,7 @@ std::string describe(const ControllerCheck& check) {
 }
 
 std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root,
-                                               const ControllerRegistry& registry) {
+                                               const ControllerRegistry& registry, const SensorHardware* sensors) {
   std::vector<Found> found;
   find_controllers(root, root, "", found);
 
@@ -55,7 +55,10 @@ std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& 
   std::map<std::string, std::unique_ptr<ControllerManager>> managers;
   for (const Found& f : found) {
     auto& manager = managers[f.ns.path()];
-    if (!manager) manager = std::make_unique<ControllerManager>(model, state, f.ns, registry);
+    if (!manager) {
+      manager = std::make_unique<ControllerManager>(model, state, f.ns, registry);
+      manager->set_sensor_hardware(sensors);
+    }
     ControllerCheck check;
     check.name = f.name;
     check.ns = f.ns.path();

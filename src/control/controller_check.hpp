@@ -33,8 +33,10 @@ std::string describe(const ControllerCheck& check);
 
 // One entry per controller found, in document order. `registry` holds the types a manager can
 // load (mechsim's: controllers/builtin_controllers.hpp).
+// `sensors`: the robot's IMU and force-torque handles (make_sensor_hardware), null for none.
 std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root,
-                                               const ControllerRegistry& registry);
+                                               const ControllerRegistry& registry,
+                                               const SensorHardware* sensors = nullptr);
 // Reads the file first; a malformed or unreadable file throws ParamsError naming file and line.
 std::vector<ControllerCheck> check_controllers_file(const mechanism::MechanismModel& model,
                                                     const std::string& yaml_path,

@@ -143,6 +143,7 @@ ControlResult ControllerManager::add_model_plugin(const std::string& name, const
   }
   entry->controller = std::move(controller);
   RobotHardware hardware(model_, state_, HardwareAccess::ModelPlugin);
+  hardware.set_sensors(sensors_);
   std::string error;
   bool ok = false;
   try {
@@ -213,6 +214,7 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   join(registry_.types()) + notes);
   }
   RobotHardware hardware(model_, state_);
+  hardware.set_sensors(sensors_);
   hardware.set_direct_joint_owner([this](int joint) {  // under config_mutex_, as load_controller
     std::string owners;
     for (const auto& e : entries_) {

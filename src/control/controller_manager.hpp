@@ -109,6 +109,9 @@ class ControllerManager {
   ControllerManager& operator=(const ControllerManager&) = delete;
 
   ControllerRegistry& registry() { return registry_; }
+  // The robot's IMU and force-torque sensors (control/sensor_hardware.hpp), offered to every
+  // controller loaded from now on; must outlive the manager. Null: the robot has none.
+  void set_sensor_hardware(const SensorHardware* sensors) { sensors_ = sensors; }
   const Params& params() const { return params_; }
 
   // Loads `name` (parameters at <namespace>/<name>, type at <namespace>/<name>/type). Errors
@@ -162,6 +165,7 @@ class ControllerManager {
   mechanism::MechanismState& state_;
   Params params_;
   ControllerRegistry registry_;
+  const SensorHardware* sensors_ = nullptr;
 
   mutable std::mutex config_mutex_;  // non-real-time callers only
   std::vector<std::unique_ptr<Entry>> entries_;

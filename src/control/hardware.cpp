@@ -1,6 +1,7 @@
 #include "control/hardware.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mechsim::control {
 
@@ -141,6 +142,69 @@ BaseHandle RobotHardware::claim_base(std::string_view param_path) {
   }
   claims_base_ = true;
   return BaseHandle(&state_.base, &state_.base_command);
+}
+
+namespace {
+
+template <class Data>
+std::string sensor_names(const std::vector<Data>& sensors) {
+  std::string out;
+  for (const Data& d : sensors) out += (out.empty() ? "" : ", ") + d.name;
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+ImuSensorHandle RobotHardware::imu_sensor(const std::string& name, std::string_view param_path) const {
+  if (sensors_ != nullptr) {
+    const std::vector<ImuSensorData>& imus = sensors_->imus();
+    for (std::size_t i = 0; i < imus.size(); ++i) {
+      if (imus[i].name != name) continue;
+      sensors_->mark_imu_used(i);
+      return ImuSensorHandle(&imus[i]);
+    }
+  }
+  throw ControllerConfigError("unknown IMU '" + name + "'" + where(param_path) + "; the robot's IMUs: " +
+                              (sensors_ ? sensor_names(sensors_->imus()) : std::string("none")));
+}
+
+std::vector<ImuSensorHandle> RobotHardware::imu_sensors() const {
+  std::vector<ImuSensorHandle> out;
+  if (sensors_ == nullptr) return out;
+  for (std::size_t i = 0; i < sensors_->imus().size(); ++i) {
+    sensors_->mark_imu_used(i);
+    out.emplace_back(&sensors_->imus()[i]);
+  }
+  return out;
+}
+
+ForceTorqueSensorHandle RobotHardware::force_torque_sensor(const std::string& name, std::string_view param_path) const {
+  if (sensors_ != nullptr) {
+    const std::vector<ForceTorqueSensorData>& fts = sensors_->force_torque();
+    for (std::size_t i = 0; i < fts.size(); ++i) {
+      if (fts[i].name != name) continue;
+      sensors_->mark_force_torque_used(i);
+      return ForceTorqueSensorHandle(&fts[i]);
+    }
+  }
+  throw ControllerConfigError("unknown force-torque sensor '" + name + "'" + where(param_path) +
+                              "; the robot's force-torque sensors: " +
+                              (sensors_ ? sensor_names(sensors_->force_torque()) : std::string("none")));
+}
+
+std::vector<ForceTorqueSensorHandle> RobotHardware::force_torque_sensors() const {
+  std::vector<ForceTorqueSensorHandle> out;
+  if (sensors_ == nullptr) return out;
+  for (std::size_t i = 0; i < sensors_->force_torque().size(); ++i) {
+    sensors_->mark_force_torque_used(i);
+    out.emplace_back(&sensors_->force_torque()[i]);
+  }
+  return out;
+}
+
+double yaw_of(const std::array<double, 4>& q) noexcept {
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  return std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
 }
 
 }  // namespace mechsim::control

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "control/sensor_hardware.hpp"
 #include "mechanism/mechanism_model.hpp"
 
 namespace mechsim::control {
@@ -135,6 +136,17 @@ class RobotHardware {
   // it gets: given the joint's index, a description ("Gazebo model plugin 'x' (...)") or "".
   void set_direct_joint_owner(std::function<std::string(int)> owner) { direct_owner_ = std::move(owner); }
 
+  // The robot's IMU and force-torque sensors (control/sensor_hardware.hpp); null or empty when the
+  // simulation has none (or runs without sensors).
+  void set_sensors(const SensorHardware* sensors) { sensors_ = sensors; }
+  // ImuSensorInterface::getHandle: the handle of the IMU named `name`; throws ControllerConfigError
+  // naming `param_path` and the robot's IMUs when there is none of that name.
+  ImuSensorHandle imu_sensor(const std::string& name, std::string_view param_path = {}) const;
+  // Every IMU's handle, in the description's order (ImuSensorInterface::getNames).
+  std::vector<ImuSensorHandle> imu_sensors() const;
+  ForceTorqueSensorHandle force_torque_sensor(const std::string& name, std::string_view param_path = {}) const;
+  std::vector<ForceTorqueSensorHandle> force_torque_sensors() const;
+
  private:
   const mechanism::MechanismModel& model_;
   mechanism::MechanismState& state_;
@@ -142,6 +154,7 @@ class RobotHardware {
   std::vector<ResourceClaim> claims_;
   bool claims_base_ = false;
   std::function<std::string(int)> direct_owner_;
+  const SensorHardware* sensors_ = nullptr;
 };
 
 }  // namespace mechsim::control

@@ -7,6 +7,7 @@
 
 #include "controllers/drive/rover_drive_params.hpp"
 #include "controllers/plugins/model_plugins.hpp"
+#include "controllers/sensor/sensor_state_controllers.hpp"
 #include "ros/bridge/bridge_impl.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
 #include "sensors/sensor_types.hpp"
@@ -51,6 +52,8 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::TrajectoryQuery: return PortType::TrajectoryQuery;
     case control::PortKind::PeriodicCommand: return PortType::ScanCommand;
     case control::PortKind::TwistState: return PortType::TwistState;
+    case control::PortKind::ImuState: return PortType::ImuState;
+    case control::PortKind::WrenchState: return PortType::WrenchState;
     default: return PortType::Other;
   }
 }
@@ -196,6 +199,11 @@ std::vector<ControllerSummary> SimBridge::list_controllers() const {
     if (info.start_pending && info.state != control::ControllerLifecycle::Running) s.state = "waiting";
     for (const control::ResourceClaim& claim : info.claims) {
       s.claims.push_back({ros_control_interface(claim.interface), claim.joints});
+    }
+    // ros_control lists a sensor controller's interface with no resource (sensors claim none).
+    if (info.type == control::kImuSensorControllerType) s.claims.push_back({"hardware_interface::ImuSensorInterface", {}});
+    if (info.type == control::kForceTorqueSensorControllerType) {
+      s.claims.push_back({"hardware_interface::ForceTorqueSensorInterface", {}});
     }
     out.push_back(std::move(s));
   }
