@@ -47,6 +47,9 @@
 //   Measured on mechsim's CC8 crabbing 5 m at 45 deg (robots/cc8/scenarios/crab_45.yaml):
 //   odometry error 7.7 % of the distance and 9 deg of heading drift without either; 1.5 %
 //   and 1 deg with the trailing side sensing and the heading hold.
+//   With crab_heading_source: imu (the ZED2 IMU's yaw) the heading stays within 0.31 deg instead
+//   of 1.70 deg, but the direction of travel ends 1.8 deg short of the command instead of 0.7
+//   (robots/cc8/README.md has both sets of figures); the default stays the odometry's yaw.
 //
 // Parameters (under the controller's namespace; units in brackets):
 //   type                       mechsim/RoverDriveController
