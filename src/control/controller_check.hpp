@@ -23,11 +23,13 @@ struct ControllerCheck {
   std::string path;       // its parameter path, e.g. /cc8/steering_FL_position_controller
   std::string type;       // as written; "" when missing
   std::vector<ResourceClaim> claims;  // what it would claim, when it loaded
+  std::vector<SensorUse> sensors;     // the sensor interfaces it would read
   std::string error;      // "" when it loaded
   bool ok() const { return error.empty(); }
 };
 
 // One line for a report: "/cc8/x (effort_controllers/JointPositionController): effort [steering_FL]"
+// (then "; reads ImuSensorInterface [zed2_imu_sensor]" for sensors read)
 // or "/cc8/x (type): ERROR <message>".
 std::string describe(const ControllerCheck& check);
 

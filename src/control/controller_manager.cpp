@@ -24,6 +24,7 @@ struct ControllerManager::Entry {
   std::string type;
   std::unique_ptr<Controller> controller;
   std::vector<ResourceClaim> claims;
+  std::vector<SensorUse> sensors;
   std::vector<JointHandle> handles;  // every claimed joint, made safe after a failure
   std::vector<int> joint_indices;    // for conflict checks
   bool model_plugin = false;         // add_model_plugin
@@ -153,6 +154,7 @@ ControlResult ControllerManager::add_model_plugin(const std::string& name, const
   }
   if (!ok) return ControlResult::failure("could not load " + what + ": " + (error.empty() ? "init() returned false" : error));
   entry->claims = hardware.claims();
+  entry->sensors = hardware.sensor_uses();
   entry->claims_base = hardware.claims_base();
   for (const ResourceClaim& claim : entry->claims) {
     for (const std::string& joint : claim.joints) {
@@ -238,6 +240,7 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   "': " + (error.empty() ? "init() returned false" : error));
   }
   entry->claims = hardware.claims();
+  entry->sensors = hardware.sensor_uses();
   for (const ResourceClaim& claim : entry->claims) {
     for (const std::string& joint : claim.joints) {
       const int index = hardware.find_joint(joint);
@@ -408,6 +411,7 @@ std::vector<ControllerInfo> ControllerManager::list_controllers() const {
     info.type = e->type;
     info.state = e->state.load();
     info.claims = e->claims;
+    info.sensors = e->sensors;
     info.model_plugin = e->model_plugin;
     info.origin = e->origin;
     info.claims_base = e->claims_base;

@@ -60,6 +60,7 @@ struct ControllerInfo {
   std::string type;
   ControllerLifecycle state = ControllerLifecycle::Initialized;
   std::vector<ResourceClaim> claims;  // per hardware interface
+  std::vector<SensorUse> sensors;     // sensor interfaces read (no claim), per interface
   ControllerStatistics statistics;
   std::string failure;  // why the manager last stopped it; "" if it never failed
   // Part of a switch that was accepted and not applied yet (the next tick applies it; a paused

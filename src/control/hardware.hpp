@@ -103,6 +103,13 @@ struct ResourceClaim {
   std::vector<std::string> joints;  // in claim order, no duplicates
 };
 
+// A sensor interface a controller reads: ros_control's sensor interfaces claim nothing, but
+// list_controllers names them with the handles (here: the sensors) the controller took.
+struct SensorUse {
+  std::string interface;             // "hardware_interface::ImuSensorInterface", "...ForceTorqueSensorInterface"
+  std::vector<std::string> sensors;  // handle names, in the order taken, no duplicates
+};
+
 // One controller's view of the robot during init(). Not thread-safe; configuration time only.
 class RobotHardware {
  public:
@@ -141,11 +148,15 @@ class RobotHardware {
   void set_sensors(const SensorHardware* sensors) { sensors_ = sensors; }
   // ImuSensorInterface::getHandle: the handle of the IMU named `name`; throws ControllerConfigError
   // naming `param_path` and the robot's IMUs when there is none of that name.
-  ImuSensorHandle imu_sensor(const std::string& name, std::string_view param_path = {}) const;
+  ImuSensorHandle imu_sensor(const std::string& name, std::string_view param_path = {});
   // Every IMU's handle, in the description's order (ImuSensorInterface::getNames).
-  std::vector<ImuSensorHandle> imu_sensors() const;
-  ForceTorqueSensorHandle force_torque_sensor(const std::string& name, std::string_view param_path = {}) const;
-  std::vector<ForceTorqueSensorHandle> force_torque_sensors() const;
+  std::vector<ImuSensorHandle> imu_sensors();
+  ForceTorqueSensorHandle force_torque_sensor(const std::string& name, std::string_view param_path = {});
+  std::vector<ForceTorqueSensorHandle> force_torque_sensors();
+  // The IMUs' names, without taking a handle.
+  std::vector<std::string> imu_sensor_names() const;
+  // What the handles taken so far read (sensor_uses: one entry per interface).
+  const std::vector<SensorUse>& sensor_uses() const { return sensor_uses_; }
 
  private:
   const mechanism::MechanismModel& model_;
@@ -155,6 +166,8 @@ class RobotHardware {
   bool claims_base_ = false;
   std::function<std::string(int)> direct_owner_;
   const SensorHardware* sensors_ = nullptr;
+  std::vector<SensorUse> sensor_uses_;
+  void use_sensor(const char* interface, const std::string& name);
 };
 
 }  // namespace mechsim::control

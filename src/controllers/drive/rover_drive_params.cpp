@@ -262,15 +262,15 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
     if (params.has("crab_heading_imu")) {
       c.crab_heading_imu = params.get<std::string>("crab_heading_imu");
     } else {
-      const std::vector<ImuSensorHandle> imus = hardware.imu_sensors();
+      const std::vector<std::string> imus = hardware.imu_sensor_names();
       if (imus.size() != 1) {
         std::string names;
-        for (const ImuSensorHandle& h : imus) names += (names.empty() ? "" : ", ") + h.name();
+        for (const std::string& n : imus) names += (names.empty() ? "" : ", ") + n;
         throw ControllerConfigError("parameter " + path_of(params, "crab_heading_source") + " is 'imu': name the IMU in " +
                                     path_of(params, "crab_heading_imu") + " (the robot's IMUs: " +
                                     (names.empty() ? std::string("none") : names) + ")");
       }
-      c.crab_heading_imu = imus[0].name();
+      c.crab_heading_imu = imus[0];
     }
   }
   c.odometry_robust.scale = non_negative_param(params, "odometry_robust_scale", 0.05);

@@ -7,7 +7,6 @@
 
 #include "controllers/drive/rover_drive_params.hpp"
 #include "controllers/plugins/model_plugins.hpp"
-#include "controllers/sensor/sensor_state_controllers.hpp"
 #include "ros/bridge/bridge_impl.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
 #include "sensors/sensor_types.hpp"
@@ -200,11 +199,8 @@ std::vector<ControllerSummary> SimBridge::list_controllers() const {
     for (const control::ResourceClaim& claim : info.claims) {
       s.claims.push_back({ros_control_interface(claim.interface), claim.joints});
     }
-    // ros_control lists a sensor controller's interface with no resource (sensors claim none).
-    if (info.type == control::kImuSensorControllerType) s.claims.push_back({"hardware_interface::ImuSensorInterface", {}});
-    if (info.type == control::kForceTorqueSensorControllerType) {
-      s.claims.push_back({"hardware_interface::ForceTorqueSensorInterface", {}});
-    }
+    // Sensor interfaces: ros_control lists them with no resource (sensor handles claim nothing).
+    for (const control::SensorUse& use : info.sensors) s.claims.push_back({use.interface, {}});
     out.push_back(std::move(s));
   }
   return out;

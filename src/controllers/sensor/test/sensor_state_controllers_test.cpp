@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "control/controller_check.hpp"
 #include "control/controller_manager.hpp"
 #include "controllers/builtin_controllers.hpp"
 #include "controllers/sensor/sensor_state_controllers.hpp"
@@ -52,6 +53,8 @@ TEST(SensorHardware, HandlesByNameAndUnknownNamesAreErrorsListingTheSensors) {
   ASSERT_EQ(hw.imu_sensors().size(), 2u);
   ASSERT_EQ(hw.force_torque_sensors().size(), 1u);
   EXPECT_EQ(hw.force_torque_sensor("wrist_ft").name(), "wrist_ft");
+  ASSERT_EQ(hw.sensor_uses().size(), 2u);
+  EXPECT_EQ(hw.sensor_uses()[1].interface, "hardware_interface::ForceTorqueSensorInterface");
   try {
     hw.imu_sensor("zed2_imu", "/cc8/drive/crab_heading_imu");
     FAIL() << "no error";
@@ -84,7 +87,11 @@ TEST(ImuSensorController, PublishesEveryHandleAtItsRateHoldingTheLastSample) {
   ASSERT_EQ(c->sensor_count(), 2u);
   EXPECT_EQ(c->ports()[0]->name(), "torso_imu");
   EXPECT_EQ(c->ports()[1]->name(), "head_imu");
-  EXPECT_TRUE(manager.controller_info("imu")->claims.empty());  // sensors claim nothing
+  const ControllerInfo info = *manager.controller_info("imu");
+  EXPECT_TRUE(info.claims.empty());  // sensors claim nothing, but the interface and handles are listed
+  ASSERT_EQ(info.sensors.size(), 1u);
+  EXPECT_EQ(info.sensors[0].interface, "hardware_interface::ImuSensorInterface");
+  EXPECT_THAT(info.sensors[0].sensors, ::testing::ElementsAre("torso_imu", "head_imu"));
 
   // A 100 Hz IMU: the owner writes a new sample every 10 ticks; the controller publishes at 50 Hz.
   double time = 0.0;
@@ -162,6 +169,17 @@ TEST(SensorStateControllers, BadRateAndMissingSensorsAreErrorsNamingControllerAn
   EXPECT_THAT(without.list_controller_types(), ::testing::Contains("imu_sensor_controller/ImuSensorController"));
   EXPECT_THAT(without.list_controller_types(),
               ::testing::Contains("force_torque_sensor_controller/ForceTorqueSensorController"));
+}
+
+TEST(SensorStateControllers, CheckListsTheSensorsEachReads) {
+  auto robot = testing::make_robot(1);
+  auto sensors = two_imus_one_ft();
+  const std::vector<ControllerCheck> checks =
+      check_controllers(robot->model, Params::from_yaml_string(kYaml), builtin_controller_registry(), sensors.get());
+  ASSERT_EQ(checks.size(), 4u);
+  EXPECT_THAT(describe(checks[0]), HasSubstr("claims nothing; reads ImuSensorInterface [torso_imu, head_imu]"));
+  EXPECT_THAT(describe(checks[1]), HasSubstr("claims nothing; reads ForceTorqueSensorInterface [wrist_ft]"));
+  EXPECT_THAT(describe(checks[3]), HasSubstr("ERROR"));
 }
 
 TEST(SensorStateControllers, UpdateAllocatesNothing) {
