@@ -65,7 +65,9 @@ void controllers_step(const CheckOptions& options, CheckContext& context, std::o
     }
   }
   for (const std::string& note : registry.notes()) context.warnings.push_back(note);
-  const std::vector<control::ControllerCheck> checks = control::check_controllers(mechanism, root, registry);
+  const std::unique_ptr<control::SensorHardware> sensors = control::make_sensor_hardware(context.robot.model.sensors);
+  const std::vector<control::ControllerCheck> checks =
+      control::check_controllers(mechanism, root, registry, sensors.get());
   std::size_t loaded = 0;
   std::vector<std::string> unsupported;  // each unknown type once, in document order
   out << "controllers (" << options.controllers << "):\n";

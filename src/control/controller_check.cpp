@@ -30,7 +30,16 @@ void find_controllers(const Params& ns, const Params& node, const std::string& p
 std::string describe(const ControllerCheck& check) {
   std::string out = check.path + " (" + (check.type.empty() ? std::string("no type") : check.type) + "): ";
   if (!check.ok()) return out + "ERROR " + check.error;
-  if (check.claims.empty()) return out + "claims nothing (reads every joint)";
+  std::string sensors;
+  for (const SensorUse& use : check.sensors) {
+    const std::string_view iface = use.interface;
+    sensors += "; reads " + std::string(iface.substr(iface.find("::") == std::string_view::npos ? 0 : iface.find("::") + 2)) + " [";
+    for (std::size_t j = 0; j < use.sensors.size(); ++j) sensors += (j > 0 ? ", " : "") + use.sensors[j];
+    sensors += "]";
+  }
+  if (check.claims.empty()) {
+    return out + (check.sensors.empty() ? "claims nothing (reads every joint)" : "claims nothing" + sensors);
+  }
   for (std::size_t c = 0; c < check.claims.size(); ++c) {
     if (c > 0) out += "; ";
     out += interface_short_name(check.claims[c].interface);
@@ -41,11 +50,11 @@ std::string describe(const ControllerCheck& check) {
     }
     out += "]";
   }
-  return out;
+  return out + sensors;
 }
 
 std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& model, const Params& root,
-                                               const ControllerRegistry& registry) {
+                                               const ControllerRegistry& registry, const SensorHardware* sensors) {
   std::vector<Found> found;
   find_controllers(root, root, "", found);
 
@@ -55,7 +64,10 @@ std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& 
   std::map<std::string, std::unique_ptr<ControllerManager>> managers;
   for (const Found& f : found) {
     auto& manager = managers[f.ns.path()];
-    if (!manager) manager = std::make_unique<ControllerManager>(model, state, f.ns, registry);
+    if (!manager) {
+      manager = std::make_unique<ControllerManager>(model, state, f.ns, registry);
+      manager->set_sensor_hardware(sensors);
+    }
     ControllerCheck check;
     check.name = f.name;
     check.ns = f.ns.path();
@@ -67,7 +79,9 @@ std::vector<ControllerCheck> check_controllers(const mechanism::MechanismModel& 
     }
     ControlResult result = manager->load_controller(f.name);
     if (result.ok) {
-      check.claims = manager->controller_info(f.name)->claims;
+      const std::optional<ControllerInfo> info = manager->controller_info(f.name);
+      check.claims = info->claims;
+      check.sensors = info->sensors;
     } else {
       check.error = result.error;
     }

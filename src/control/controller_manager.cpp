@@ -24,6 +24,7 @@ struct ControllerManager::Entry {
   std::string type;
   std::unique_ptr<Controller> controller;
   std::vector<ResourceClaim> claims;
+  std::vector<SensorUse> sensors;
   std::vector<JointHandle> handles;  // every claimed joint, made safe after a failure
   std::vector<int> joint_indices;    // for conflict checks
   bool model_plugin = false;         // add_model_plugin
@@ -143,6 +144,7 @@ ControlResult ControllerManager::add_model_plugin(const std::string& name, const
   }
   entry->controller = std::move(controller);
   RobotHardware hardware(model_, state_, HardwareAccess::ModelPlugin);
+  hardware.set_sensors(sensors_);
   std::string error;
   bool ok = false;
   try {
@@ -152,6 +154,7 @@ ControlResult ControllerManager::add_model_plugin(const std::string& name, const
   }
   if (!ok) return ControlResult::failure("could not load " + what + ": " + (error.empty() ? "init() returned false" : error));
   entry->claims = hardware.claims();
+  entry->sensors = hardware.sensor_uses();
   entry->claims_base = hardware.claims_base();
   for (const ResourceClaim& claim : entry->claims) {
     for (const std::string& joint : claim.joints) {
@@ -213,6 +216,7 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   join(registry_.types()) + notes);
   }
   RobotHardware hardware(model_, state_);
+  hardware.set_sensors(sensors_);
   hardware.set_direct_joint_owner([this](int joint) {  // under config_mutex_, as load_controller
     std::string owners;
     for (const auto& e : entries_) {
@@ -236,6 +240,7 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
                                   "': " + (error.empty() ? "init() returned false" : error));
   }
   entry->claims = hardware.claims();
+  entry->sensors = hardware.sensor_uses();
   for (const ResourceClaim& claim : entry->claims) {
     for (const std::string& joint : claim.joints) {
       const int index = hardware.find_joint(joint);
@@ -415,6 +420,7 @@ std::vector<ControllerInfo> ControllerManager::list_controllers() const {
     info.type = e->type;
     info.state = e->state.load();
     info.claims = e->claims;
+    info.sensors = e->sensors;
     info.model_plugin = e->model_plugin;
     info.origin = e->origin;
     info.claims_base = e->claims_base;

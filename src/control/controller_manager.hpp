@@ -60,6 +60,7 @@ struct ControllerInfo {
   std::string type;
   ControllerLifecycle state = ControllerLifecycle::Initialized;
   std::vector<ResourceClaim> claims;  // per hardware interface
+  std::vector<SensorUse> sensors;     // sensor interfaces read (no claim), per interface
   ControllerStatistics statistics;
   std::string failure;  // why the manager last stopped it; "" if it never failed
   // Part of a switch that was accepted and not applied yet (the next tick applies it; a paused
@@ -109,6 +110,9 @@ class ControllerManager {
   ControllerManager& operator=(const ControllerManager&) = delete;
 
   ControllerRegistry& registry() { return registry_; }
+  // The robot's IMU and force-torque sensors (control/sensor_hardware.hpp), offered to every
+  // controller loaded from now on; must outlive the manager. Null: the robot has none.
+  void set_sensor_hardware(const SensorHardware* sensors) { sensors_ = sensors; }
   const Params& params() const { return params_; }
 
   // Loads `name` (parameters at <namespace>/<name>, type at <namespace>/<name>/type). Errors
@@ -172,6 +176,7 @@ class ControllerManager {
   mechanism::MechanismState& state_;
   Params params_;
   ControllerRegistry registry_;
+  const SensorHardware* sensors_ = nullptr;
 
   mutable std::mutex config_mutex_;  // non-real-time callers only
   std::vector<std::unique_ptr<Entry>> entries_;

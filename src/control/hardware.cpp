@@ -1,6 +1,7 @@
 #include "control/hardware.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mechsim::control {
 
@@ -141,6 +142,93 @@ BaseHandle RobotHardware::claim_base(std::string_view param_path) {
   }
   claims_base_ = true;
   return BaseHandle(&state_.base, &state_.base_command);
+}
+
+namespace {
+
+template <class Data>
+std::string sensor_names(const std::vector<Data>& sensors) {
+  std::string out;
+  for (const Data& d : sensors) out += (out.empty() ? "" : ", ") + d.name;
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+void RobotHardware::use_sensor(const char* interface, const std::string& name) {
+  auto use = std::find_if(sensor_uses_.begin(), sensor_uses_.end(), [&](const SensorUse& u) { return u.interface == interface; });
+  if (use == sensor_uses_.end()) {
+    sensor_uses_.push_back(SensorUse{interface, {}});
+    use = sensor_uses_.end() - 1;
+  }
+  if (std::find(use->sensors.begin(), use->sensors.end(), name) == use->sensors.end()) use->sensors.push_back(name);
+}
+
+constexpr const char* kImuInterface = "hardware_interface::ImuSensorInterface";
+constexpr const char* kForceTorqueInterface = "hardware_interface::ForceTorqueSensorInterface";
+
+ImuSensorHandle RobotHardware::imu_sensor(const std::string& name, std::string_view param_path) {
+  if (sensors_ != nullptr) {
+    const std::vector<ImuSensorData>& imus = sensors_->imus();
+    for (std::size_t i = 0; i < imus.size(); ++i) {
+      if (imus[i].name != name) continue;
+      sensors_->mark_imu_used(i);
+      use_sensor(kImuInterface, name);
+      return ImuSensorHandle(&imus[i]);
+    }
+  }
+  throw ControllerConfigError("unknown IMU '" + name + "'" + where(param_path) + "; the robot's IMUs: " +
+                              (sensors_ ? sensor_names(sensors_->imus()) : std::string("none")));
+}
+
+std::vector<std::string> RobotHardware::imu_sensor_names() const {
+  std::vector<std::string> out;
+  if (sensors_ != nullptr) {
+    for (const ImuSensorData& d : sensors_->imus()) out.push_back(d.name);
+  }
+  return out;
+}
+
+std::vector<ImuSensorHandle> RobotHardware::imu_sensors() {
+  std::vector<ImuSensorHandle> out;
+  if (sensors_ == nullptr) return out;
+  for (std::size_t i = 0; i < sensors_->imus().size(); ++i) {
+    sensors_->mark_imu_used(i);
+    use_sensor(kImuInterface, sensors_->imus()[i].name);
+    out.emplace_back(&sensors_->imus()[i]);
+  }
+  return out;
+}
+
+ForceTorqueSensorHandle RobotHardware::force_torque_sensor(const std::string& name, std::string_view param_path) {
+  if (sensors_ != nullptr) {
+    const std::vector<ForceTorqueSensorData>& fts = sensors_->force_torque();
+    for (std::size_t i = 0; i < fts.size(); ++i) {
+      if (fts[i].name != name) continue;
+      sensors_->mark_force_torque_used(i);
+      use_sensor(kForceTorqueInterface, name);
+      return ForceTorqueSensorHandle(&fts[i]);
+    }
+  }
+  throw ControllerConfigError("unknown force-torque sensor '" + name + "'" + where(param_path) +
+                              "; the robot's force-torque sensors: " +
+                              (sensors_ ? sensor_names(sensors_->force_torque()) : std::string("none")));
+}
+
+std::vector<ForceTorqueSensorHandle> RobotHardware::force_torque_sensors() {
+  std::vector<ForceTorqueSensorHandle> out;
+  if (sensors_ == nullptr) return out;
+  for (std::size_t i = 0; i < sensors_->force_torque().size(); ++i) {
+    sensors_->mark_force_torque_used(i);
+    use_sensor(kForceTorqueInterface, sensors_->force_torque()[i].name);
+    out.emplace_back(&sensors_->force_torque()[i]);
+  }
+  return out;
+}
+
+double yaw_of(const std::array<double, 4>& q) noexcept {
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  return std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
 }
 
 }  // namespace mechsim::control

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "control/sensor_hardware.hpp"
 #include "mechanism/mechanism_model.hpp"
 
 namespace mechsim::control {
@@ -102,6 +103,13 @@ struct ResourceClaim {
   std::vector<std::string> joints;  // in claim order, no duplicates
 };
 
+// A sensor interface a controller reads: ros_control's sensor interfaces claim nothing, but
+// list_controllers names them with the handles (here: the sensors) the controller took.
+struct SensorUse {
+  std::string interface;             // "hardware_interface::ImuSensorInterface", "...ForceTorqueSensorInterface"
+  std::vector<std::string> sensors;  // handle names, in the order taken, no duplicates
+};
+
 // One controller's view of the robot during init(). Not thread-safe; configuration time only.
 class RobotHardware {
  public:
@@ -135,6 +143,21 @@ class RobotHardware {
   // it gets: given the joint's index, a description ("Gazebo model plugin 'x' (...)") or "".
   void set_direct_joint_owner(std::function<std::string(int)> owner) { direct_owner_ = std::move(owner); }
 
+  // The robot's IMU and force-torque sensors (control/sensor_hardware.hpp); null or empty when the
+  // simulation has none (or runs without sensors).
+  void set_sensors(const SensorHardware* sensors) { sensors_ = sensors; }
+  // ImuSensorInterface::getHandle: the handle of the IMU named `name`; throws ControllerConfigError
+  // naming `param_path` and the robot's IMUs when there is none of that name.
+  ImuSensorHandle imu_sensor(const std::string& name, std::string_view param_path = {});
+  // Every IMU's handle, in the description's order (ImuSensorInterface::getNames).
+  std::vector<ImuSensorHandle> imu_sensors();
+  ForceTorqueSensorHandle force_torque_sensor(const std::string& name, std::string_view param_path = {});
+  std::vector<ForceTorqueSensorHandle> force_torque_sensors();
+  // The IMUs' names, without taking a handle.
+  std::vector<std::string> imu_sensor_names() const;
+  // What the handles taken so far read (sensor_uses: one entry per interface).
+  const std::vector<SensorUse>& sensor_uses() const { return sensor_uses_; }
+
  private:
   const mechanism::MechanismModel& model_;
   mechanism::MechanismState& state_;
@@ -142,6 +165,9 @@ class RobotHardware {
   std::vector<ResourceClaim> claims_;
   bool claims_base_ = false;
   std::function<std::string(int)> direct_owner_;
+  const SensorHardware* sensors_ = nullptr;
+  std::vector<SensorUse> sensor_uses_;
+  void use_sensor(const char* interface, const std::string& name);
 };
 
 }  // namespace mechsim::control

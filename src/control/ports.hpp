@@ -40,6 +40,8 @@ enum class PortKind : std::uint8_t {
   PeriodicCommand,      // PeriodicCommandPort (pr2_msgs/PeriodicCmd), laser_scanner_traj_controller.hpp
   TrajectoryQuery,      // TrajectoryQueryPort (query_state), controllers/trajectory/trajectory_query.hpp
   TwistState,           // StatePort<TwistSnapshot> (geometry_msgs/TwistStamped: diff_drive_controller's cmd_vel_out)
+  ImuState,             // StatePort<ImuSnapshot> (sensor_msgs/Imu), controllers/sensor/sensor_state_controllers.hpp
+  WrenchState,          // StatePort<WrenchSnapshot> (geometry_msgs/WrenchStamped), the same
 };
 
 class Port {

@@ -11,6 +11,7 @@
 #include "controllers/gripper/gripper_action_controller.hpp"
 #include "controllers/gripper/pr2_gripper_controller.hpp"
 #include "controllers/pr2/laser_scanner_traj_controller.hpp"
+#include "controllers/sensor/sensor_state_controllers.hpp"
 
 namespace mechsim::control {
 
@@ -46,6 +47,8 @@ void register_builtin_controllers(ControllerRegistry& r) {
   r.add("robot_mechanism_controllers/JointVelocityController", velocity_pid(ControllerFlavour::Pr2));
 
   r.add("joint_state_controller/JointStateController", [] { return std::make_unique<JointStateController>(); });
+  r.add(kImuSensorControllerType, [] { return std::make_unique<ImuSensorController>(); });
+  r.add(kForceTorqueSensorControllerType, [] { return std::make_unique<ForceTorqueSensorController>(); });
 
   const auto trajectory = [](HI iface, ControllerFlavour f) {
     return [iface, f] { return std::make_unique<JointTrajectoryController>(iface, f); };

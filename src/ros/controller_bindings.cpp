@@ -9,6 +9,10 @@
 //   "odom"            <robot ns>/<controller>/odom (nav_msgs/Odometry) at the controller's
 //                     publish_rate (default 50 Hz), and odom -> base on /tf unless enable_odom_tf
 //                     is false (diff_drive_controller's behaviour)
+//   sensor ports      imu_sensor_controller / force_torque_sensor_controller: each handle's port
+//                     on <robot ns>/<handle name> (sensor_msgs/Imu, geometry_msgs/WrenchStamped)
+//                     whenever the controller fills it (its publish_rate): ros_controllers
+//                     advertises them on the controller manager's namespace, not its own
 //   "cmd_vel_out"     <robot ns>/<controller>/cmd_vel_out (geometry_msgs/TwistStamped):
 //                     diff_drive_controller's limited command with publish_cmd, every update
 //   cmd_vel           with allow_multiple_cmd_vel_publishers: false, diff_drive_controller
@@ -59,6 +63,7 @@
 
 #include "ros/gripper_command_action.hpp"
 #include "ros/pr2_actions.hpp"
+#include "ros/sensor_messages.hpp"
 #include "ros/publish_helpers.hpp"
 #include "ros/sim_node.hpp"
 #include "ros/trajectory_action.hpp"
@@ -311,6 +316,12 @@ void SimNode::bind(const std::string& controller) {
         // joint_state_controller publishes in the robot namespace, not its own.
         b->publisher = robot_nh_.advertise<sensor_msgs::JointState>(topic, 1);
         break;
+      case PortType::ImuState:  // the same namespace as joint_states (ros_controllers' root_nh)
+        b->publisher = robot_nh_.advertise<sensor_msgs::Imu>(topic, 4);
+        break;
+      case PortType::WrenchState:
+        b->publisher = robot_nh_.advertise<geometry_msgs::WrenchStamped>(topic, 4);
+        break;
       case PortType::Odometry: {
         b->publisher = controller_nh.advertise<nav_msgs::Odometry>(topic, 1);
         // pr2_mechanism_controllers/Pr2Odometry names its rate and TF switch differently from
@@ -493,6 +504,26 @@ void SimNode::publish_controller_states(double time) {
           tf.transforms.push_back(t);
           b.tf_publisher.publish(tf);
         }
+        break;
+      }
+      case PortType::ImuState: {
+        double stamp = 0.0;
+        sensors::ImuReading reading;
+        sensor_msgs::Imu msg;
+        if (!read_imu_state(b.port, stamp, msg.header.frame_id, reading, &b.sequence)) break;
+        fill_imu(reading, msg);
+        msg.header.stamp = ::ros::Time(stamp);
+        b.publisher.publish(msg);
+        break;
+      }
+      case PortType::WrenchState: {
+        double stamp = 0.0;
+        sensors::WrenchReading reading;
+        geometry_msgs::WrenchStamped msg;
+        if (!read_wrench_state(b.port, stamp, msg.header.frame_id, reading, &b.sequence)) break;
+        fill_wrench(reading, msg);
+        msg.header.stamp = ::ros::Time(stamp);
+        b.publisher.publish(msg);
         break;
       }
       case PortType::TwistState: {

@@ -51,6 +51,7 @@ SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
   next_due_.assign(sensors_.size(), 0.0);
   enabled_.assign(sensors_.size(), 1);
   requested_.assign(sensors_.size(), 0);
+  held_.assign(sensors_.size(), 0);
   physics::RenderSettings settings;
   settings.max_width = settings.max_height = 0;
   for (std::size_t i = 0; i < sensors_.size(); ++i) {
@@ -87,7 +88,7 @@ std::size_t SensorSet::sample_due(const physics::Physics& physics, double time) 
   if (hub_) hub_->next_instant();
   std::size_t sampled = 0;
   for (std::size_t i = 0; i < sensors_.size(); ++i) {
-    const bool due = enabled_[i] && time + kTimeSlack >= next_due_[i];
+    const bool due = (enabled_[i] || held_[i]) && time + kTimeSlack >= next_due_[i];
     if (!due && !requested_[i]) continue;
     requested_[i] = 0;
     take(i, physics, time);
@@ -99,7 +100,7 @@ std::size_t SensorSet::sample_due(const physics::Physics& physics, double time) 
 void SensorSet::sample_all(const physics::Physics& physics, double time) {
   if (hub_) hub_->next_instant();
   for (std::size_t i = 0; i < sensors_.size(); ++i)
-    if (enabled_[i]) take(i, physics, time);
+    if (enabled_[i] || held_[i]) take(i, physics, time);
 }
 
 }  // namespace mechsim::sensors

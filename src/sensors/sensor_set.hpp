@@ -64,6 +64,10 @@ class SensorSet {
   // Cameras start disabled (they render only for a consumer); the others enabled.
   void set_enabled(std::size_t i, bool enabled) { enabled_[i] = enabled; }
   bool enabled(std::size_t i) const { return enabled_[i]; }
+  // A held sensor is sampled at its rate whether enabled or not: a controller reads it (the IMU
+  // and force-torque handles of control/sensor_hardware.hpp), whoever else consumes it.
+  void set_held(std::size_t i, bool held) { held_[i] = held; }
+  bool held(std::size_t i) const { return held_[i] != 0; }
   // Samples sensor i at the next sample_due(), enabled or not, due or not (a report's picture).
   void request(std::size_t i) { requested_[i] = 1; }
 
@@ -77,6 +81,7 @@ class SensorSet {
   std::vector<double> next_due_;  // s
   std::vector<char> enabled_;
   std::vector<char> requested_;
+  std::vector<char> held_;
   std::vector<SkippedSensor> skipped_;
   std::unique_ptr<RenderHub> hub_;
 };

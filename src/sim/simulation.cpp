@@ -233,7 +233,10 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     }
     sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, std::move(render_model));
     sensors_.sample_all(*physics_, time());
+    sensor_handles_ = SensorHandles(sensors_);
+    sensor_handles_.fill(sensors_);
   }
+  manager_->set_sensor_hardware(&sensor_handles_.hardware());
   startup_times_.sensors = timer.lap();
 }
 
@@ -444,6 +447,7 @@ bool Simulation::wait_for_commands(double timeout) {
 void Simulation::state_changed() {
   read_physics();
   sensors_.sample_all(*physics_, time());
+  sensor_handles_.fill(sensors_);
 }
 
 TickResult Simulation::step() {
@@ -483,6 +487,7 @@ TickResult Simulation::step() {
   // read at the start of the next tick repeats it, for writes to the physics in between).
   read_physics();
   sensors_.sample_due(*physics_, time());
+  sensor_handles_.fill(sensors_);
   for (const Observer& observer : observers_) observer(*this);
   return {};
 }
@@ -565,6 +570,7 @@ void Simulation::reset() {
   // the next tick applies it.
   if (!running.empty()) manager_->switch_controllers(running, running, control::SwitchStrictness::BestEffort);
   sensors_.sample_all(*physics_, time());
+  sensor_handles_.fill(sensors_);
   ++resets_;
 }
 

@@ -49,6 +49,7 @@
 #include "sensors/sensor_set.hpp"
 #include "sim/external_forces.hpp"
 #include "sim/pid_gains_drive.hpp"
+#include "sim/sensor_handles.hpp"
 #include "sim/world.hpp"
 
 namespace mechsim::control {
@@ -273,6 +274,7 @@ class Simulation {
   std::unique_ptr<mechanism::MechanismState> mechanism_state_;
   std::unique_ptr<control::ControllerManager> manager_;
   sensors::SensorSet sensors_;
+  SensorHandles sensor_handles_;  // the controllers' IMU and force-torque handles over sensors_
 
   // Per mechanism joint: the physics joint (-1 when the physics has none) and the mode the
   // physics servo is in, so modes switch only on change.

@@ -14,6 +14,9 @@ bool RoverDriveController::init(RobotHardware& hardware, const Params& params, s
   config_ = read_rover_drive_config(params, hardware);
 
   drive_.init_pids(params, "steering_pid", "wheel_pid", SteeredDrive::Gains::Shared);
+  if (config_.crab_heading_source == RoverDriveConfig::HeadingSource::Imu) {
+    heading_imu_ = hardware.imu_sensor(config_.crab_heading_imu, join_param_path(params.path(), "crab_heading_imu"));
+  }
 
   const std::size_t ns = drive_.steering_count(), nw = drive_.wheel_count();
   measured_headings_.assign(ns, 0.0);
@@ -154,7 +157,11 @@ void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool m
   // Off unless crabbing (moving) without a commanded rotation; each crab motion holds the
   // heading it starts with.
   const bool wz_commanded = std::abs(target.wz) > 1e-9;
-  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !odometry_.valid || !moving) {
+  // The yaw the hold acts on: the odometry's, or the IMU's last sample (its orientation's yaw).
+  const bool from_imu = heading_imu_.valid();
+  const bool yaw_valid = from_imu ? heading_imu_.data().count > 0 : odometry_.valid;
+  const double yaw = from_imu ? yaw_of(heading_imu_.data().orientation) : odometry_.pose.yaw;
+  if (!enabled || choice_.mode != DriveMode::Crab || wz_commanded || !yaw_valid || !moving) {
     heading_hold_ = false;
     heading_integral_ = 0.0;
     yaw_correction_ = 0.0;
@@ -162,10 +169,10 @@ void RoverDriveController::update_heading_hold(const PlanarTwist& target, bool m
   }
   if (!heading_hold_) {
     heading_hold_ = true;
-    held_yaw_ = odometry_.pose.yaw;
+    held_yaw_ = yaw;
     heading_integral_ = 0.0;
   }
-  const double error = shortest_angular_distance(odometry_.pose.yaw, held_yaw_);
+  const double error = shortest_angular_distance(yaw, held_yaw_);
   if (!std::isfinite(error)) {
     yaw_correction_ = 0.0;
     return;

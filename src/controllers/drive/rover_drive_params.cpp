@@ -249,6 +249,30 @@ RoverDriveConfig read_rover_drive_config(const Params& params, const RobotHardwa
   if (!std::isfinite(c.crab_heading_max_rate)) {
     throw ControllerConfigError("parameter " + path_of(params, "crab_heading_max_rate") + " is not finite");
   }
+  if (params.has("crab_heading_source")) {
+    const std::string path = path_of(params, "crab_heading_source");
+    const auto source = params.get<std::string>("crab_heading_source");
+    if (source == "imu") {
+      c.crab_heading_source = RoverDriveConfig::HeadingSource::Imu;
+    } else if (source != "wheels") {
+      throw ControllerConfigError("parameter " + path + " must be 'wheels' or 'imu' (got '" + source + "')");
+    }
+  }
+  if (c.crab_heading_source == RoverDriveConfig::HeadingSource::Imu) {
+    if (params.has("crab_heading_imu")) {
+      c.crab_heading_imu = params.get<std::string>("crab_heading_imu");
+    } else {
+      const std::vector<std::string> imus = hardware.imu_sensor_names();
+      if (imus.size() != 1) {
+        std::string names;
+        for (const std::string& n : imus) names += (names.empty() ? "" : ", ") + n;
+        throw ControllerConfigError("parameter " + path_of(params, "crab_heading_source") + " is 'imu': name the IMU in " +
+                                    path_of(params, "crab_heading_imu") + " (the robot's IMUs: " +
+                                    (names.empty() ? std::string("none") : names) + ")");
+      }
+      c.crab_heading_imu = imus[0];
+    }
+  }
   c.odometry_robust.scale = non_negative_param(params, "odometry_robust_scale", 0.05);
   c.odometry_robust.iterations = params.get<int>("odometry_robust_iterations", 3);
   if (c.odometry_robust.iterations < 0 || c.odometry_robust.iterations > 20) {

@@ -50,6 +50,12 @@ struct RoverDriveConfig {
   double crab_heading_p = 0.0;         // 1/s; 0 with i = 0: off
   double crab_heading_i = 0.0;         // 1/s^2
   double crab_heading_max_rate = 0.2;  // rad/s
+  // Where the heading hold reads the yaw: the drive's own odometry (the wheels, the default) or an
+  // IMU's orientation (crab_heading_imu: its handle name, control/sensor_hardware.hpp; absent, the
+  // robot's only IMU).
+  enum class HeadingSource : std::uint8_t { Wheels, Imu };
+  HeadingSource crab_heading_source = HeadingSource::Wheels;
+  std::string crab_heading_imu;  // the IMU's handle name (Imu only)
   RobustOdometryOptions odometry_robust;  // odometry_robust_scale (m/s), odometry_robust_iterations
   std::string odom_frame_id = "odom";
   std::string base_frame_id = "base_link";

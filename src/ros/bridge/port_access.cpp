@@ -3,6 +3,7 @@
 
 #include "control/ports.hpp"
 #include "controllers/drive/rover_drive_ports.hpp"
+#include "controllers/sensor/sensor_state_controllers.hpp"
 #include "ros/bridge/port_cast.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 
@@ -97,6 +98,40 @@ bool read_twist_state(const PortRef& port, TwistStampedData& out, std::uint64_t*
   out.wx = s.twist.angular.x;
   out.wy = s.twist.angular.y;
   out.wz = s.twist.angular.z;
+  return true;
+}
+
+namespace {
+
+void copy_vec(const std::array<double, 3>& in, description::Vec3& out) { out = {in[0], in[1], in[2]}; }
+
+}  // namespace
+
+bool read_imu_state(const PortRef& port, double& stamp, std::string& frame_id, sensors::ImuReading& out,
+                    std::uint64_t* sequence) {
+  const auto* p = fresh_state<control::ImuSnapshot>(port, sequence);
+  if (!p) return false;
+  const control::ImuSnapshot s = p->read();
+  stamp = s.stamp;
+  frame_id = s.imu.frame_id;
+  out.orientation = {s.imu.orientation[3], s.imu.orientation[0], s.imu.orientation[1], s.imu.orientation[2]};
+  copy_vec(s.imu.angular_velocity, out.angular_velocity);
+  copy_vec(s.imu.linear_acceleration, out.linear_acceleration);
+  out.orientation_covariance = s.imu.orientation_covariance;
+  out.angular_velocity_covariance = s.imu.angular_velocity_covariance;
+  out.linear_acceleration_covariance = s.imu.linear_acceleration_covariance;
+  return true;
+}
+
+bool read_wrench_state(const PortRef& port, double& stamp, std::string& frame_id, sensors::WrenchReading& out,
+                       std::uint64_t* sequence) {
+  const auto* p = fresh_state<control::WrenchSnapshot>(port, sequence);
+  if (!p) return false;
+  const control::WrenchSnapshot s = p->read();
+  stamp = s.stamp;
+  frame_id = s.wrench.frame_id;
+  copy_vec(s.wrench.force, out.force);
+  copy_vec(s.wrench.torque, out.torque);
   return true;
 }
 

@@ -53,6 +53,8 @@ PortType port_type(const control::Port& port) {
     case control::PortKind::TrajectoryQuery: return PortType::TrajectoryQuery;
     case control::PortKind::PeriodicCommand: return PortType::ScanCommand;
     case control::PortKind::TwistState: return PortType::TwistState;
+    case control::PortKind::ImuState: return PortType::ImuState;
+    case control::PortKind::WrenchState: return PortType::WrenchState;
     default: return PortType::Other;
   }
 }
@@ -217,6 +219,8 @@ std::vector<ControllerSummary> SimBridge::list_controllers() const {
     for (const control::ResourceClaim& claim : info.claims) {
       s.claims.push_back({ros_control_interface(claim.interface), claim.joints});
     }
+    // Sensor interfaces: ros_control lists them with no resource (sensor handles claim nothing).
+    for (const control::SensorUse& use : info.sensors) s.claims.push_back({use.interface, {}});
     out.push_back(std::move(s));
   }
   return out;

@@ -94,6 +94,8 @@ enum class PortType : std::uint8_t {
   TrajectoryQuery,    // control_msgs/QueryTrajectoryState service ("query_state")
   ScanCommand,        // pr2_msgs/PeriodicCmd and LaserTrajCmd (the PR2 laser tilt controller's "command")
   TwistState,         // geometry_msgs/TwistStamped (diff_drive_controller's "cmd_vel_out")
+  ImuState,           // sensor_msgs/Imu (imu_sensor_controller: one port per IMU, named after it)
+  WrenchState,        // geometry_msgs/WrenchStamped (force_torque_sensor_controller: one per sensor)
   Other,           // not bound to ROS (gains, mode, status, group state, trajectories)
 };
 
@@ -360,6 +362,12 @@ struct TwistStampedData {
   double vx = 0.0, vy = 0.0, vz = 0.0, wx = 0.0, wy = 0.0, wz = 0.0;  // m/s, rad/s
 };
 bool read_twist_state(const PortRef& port, TwistStampedData& out, std::uint64_t* sequence);
+// The sensor controllers' snapshots: header stamp (s, the controller's update) and frame_id, and
+// the values (the sensor's last sample) in the sensor layer's plain form.
+bool read_imu_state(const PortRef& port, double& stamp, std::string& frame_id, sensors::ImuReading& out,
+                    std::uint64_t* sequence);
+bool read_wrench_state(const PortRef& port, double& stamp, std::string& frame_id, sensors::WrenchReading& out,
+                       std::uint64_t* sequence);
 
 // Trajectory controllers (controllers/trajectory/trajectory_goal.hpp explains the goal life).
 bool write_trajectory(const PortRef& port, const control::JointTrajectory& trajectory, std::string* error);

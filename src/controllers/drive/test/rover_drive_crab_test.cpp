@@ -39,9 +39,19 @@ struct SlipRover {
   bool count_allocations = false;
   long allocations = 0;
 
-  explicit SlipRover(const std::string& extra) {
+  // An IMU on the body ("body_imu", 100 Hz: a new sample every 10 ticks) reading the true yaw.
+  std::unique_ptr<SensorHardware> sensors;
+
+  explicit SlipRover(const std::string& extra, bool with_imu = false) {
+    if (with_imu) {
+      ImuSensorData imu;
+      imu.name = "body_imu";
+      imu.frame_id = "imu_link";
+      sensors = std::make_unique<SensorHardware>(std::vector<ImuSensorData>{imu}, std::vector<ForceTorqueSensorData>{});
+    }
     const Params params = Params::from_yaml_string(testing::test_rover_yaml(extra)).child("rover");
     RobotHardware hardware(robot->model, robot->state);
+    hardware.set_sensors(sensors.get());
     std::string error;
     EXPECT_TRUE(controller.init(hardware, params, error)) << error;
     controller.starting(time);
@@ -53,6 +63,12 @@ struct SlipRover {
   JointGroupControllerState state() { return controller.state_port().read(); }
 
   void tick() {
+    if (sensors && std::lround(time / kDt) % 10 == 0) {
+      ImuSensorData& imu = sensors->imus()[0];
+      imu.orientation = {0.0, 0.0, std::sin(truth.yaw / 2), std::cos(truth.yaw / 2)};
+      imu.stamp = time;
+      ++imu.count;
+    }
     if (count_allocations) testing::start_counting_allocations();
     const bool ok = controller.update(time, kDt).ok;
     if (count_allocations) allocations += testing::stop_counting_allocations();
@@ -182,6 +198,60 @@ TEST(RoverDriveCrab, HeadingHoldCancelsAYawTheSensingWheelsSee) {
     }
     // Either way the odometry sees the yaw through the sensing wheels.
     EXPECT_NEAR(rover.odom().yaw, rover.truth.yaw, 1.5 * kDeg);
+  }
+}
+
+// With no sensing wheels the odometry cannot see the yaw that slip causes, and the heading hold
+// on it holds nothing; on the IMU's yaw (crab_heading_source: imu) it holds the true heading.
+TEST(RoverDriveCrab, HeadingHoldOnTheImuCancelsAYawTheWheelsCannotSee) {
+  const std::string hold = "crab_sensing_wheels: none\ncrab_heading_p: 1.0\ncrab_heading_i: 0.5\ncrab_heading_max_rate: 0.1\n";
+  for (const bool imu : {false, true}) {
+    SlipRover rover(hold + (imu ? "crab_heading_source: imu\ncrab_heading_imu: body_imu\n" : ""), true);
+    rover.yaw_disturbance = 0.03;
+    rover.run(10.0, 0.3, 0.3, 0.0);
+    const RoverDriveStatus st = rover.status();
+    std::cout << "[ figures  ] crab, no sensing wheels, 0.03 rad/s yaw disturbance, heading from "
+              << (imu ? "the IMU" : "the wheels") << ": true yaw " << rover.truth.yaw / kDeg << " deg, correction "
+              << st.yaw_correction << " rad/s\n";
+    EXPECT_TRUE(st.heading_hold);
+    if (imu) {
+      EXPECT_NEAR(st.yaw_correction, -0.03, 0.005);
+      EXPECT_LT(std::abs(rover.truth.yaw), 1.5 * kDeg);
+    } else {
+      EXPECT_GT(rover.truth.yaw, 12.0 * kDeg);
+    }
+  }
+  // The IMU source without an IMU, with an unknown one, or a source that does not exist.
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"crab_heading_source: compass", "/rover/crab_heading_source must be 'wheels' or 'imu' (got 'compass')"},
+      {"crab_heading_source: imu", "/rover/crab_heading_imu (the robot's IMUs: none)"},
+  };
+  for (const auto& [yaml, message] : cases) {
+    auto robot = testing::make_rover_robot();
+    RoverDriveController c;
+    RobotHardware hardware(robot->model, robot->state);
+    std::string error;
+    try {
+      c.init(hardware, Params::from_yaml_string(testing::test_rover_yaml(yaml)).child("rover"), error);
+      ADD_FAILURE() << yaml << ": no error";
+    } catch (const ControllerConfigError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(message)) << yaml;
+    }
+  }
+  auto robot = testing::make_rover_robot();
+  ImuSensorData body;
+  body.name = "body_imu";
+  SensorHardware one({body}, {});
+  RoverDriveController c;
+  RobotHardware hardware(robot->model, robot->state);
+  hardware.set_sensors(&one);
+  std::string error;
+  try {
+    c.init(hardware, Params::from_yaml_string(testing::test_rover_yaml("crab_heading_source: imu\ncrab_heading_imu: zed2")).child("rover"),
+           error);
+    ADD_FAILURE() << "no error";
+  } catch (const ControllerConfigError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("unknown IMU 'zed2' (parameter /rover/crab_heading_imu); the robot's IMUs: body_imu"));
   }
 }
 
