@@ -1,4 +1,5 @@
 #include "control/controller_manager.hpp"
+#include "control/controller_manager_entry.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +11,8 @@
 
 namespace mechsim::control {
 
+using namespace manager_detail;
+
 const char* lifecycle_name(ControllerLifecycle state) {
   switch (state) {
     case ControllerLifecycle::Initialized: return "initialized";
@@ -19,57 +22,8 @@ const char* lifecycle_name(ControllerLifecycle state) {
   return "?";
 }
 
-struct ControllerManager::Entry {
-  std::string name;
-  std::string type;
-  std::unique_ptr<Controller> controller;
-  std::vector<ResourceClaim> claims;
-  std::vector<SensorUse> sensors;
-  std::vector<JointHandle> handles;  // every claimed joint, made safe after a failure
-  std::vector<int> joint_indices;    // for conflict checks
-  bool model_plugin = false;         // add_model_plugin
-  std::string origin;                // model plugins: "file:line" of the <plugin> element
-  bool claims_base = false;
-
-  std::atomic<ControllerLifecycle> state{ControllerLifecycle::Initialized};
-  std::atomic<std::uint64_t> updates{0};
-  std::atomic<std::uint64_t> time_sum_ns{0};
-  std::atomic<std::uint64_t> time_max_ns{0};
-  std::atomic<std::uint64_t> overruns{0};
-  std::atomic<std::uint64_t> failures{0};
-
-  // The failure text is written by the tick (try-lock, fixed buffer) and read outside.
-  mutable std::mutex failure_mutex;
-  char failure[256] = {};
-};
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-std::uint64_t elapsed_ns(Clock::time_point from, Clock::time_point to) noexcept {
-  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(to - from).count());
-}
-
-// Statistics have one writer, the tick: plain load + store (no locked read-modify-write),
-// atomic only so that readers on other threads see whole values.
-void rt_add(std::atomic<std::uint64_t>& target, std::uint64_t value) noexcept {
-  target.store(target.load(std::memory_order_relaxed) + value, std::memory_order_relaxed);
-}
-
-void rt_max(std::atomic<std::uint64_t>& target, std::uint64_t value) noexcept {
-  if (value > target.load(std::memory_order_relaxed)) target.store(value, std::memory_order_relaxed);
-}
-
-// Appends `text` to the fixed buffer without allocating.
-std::size_t append(char* buffer, std::size_t capacity, std::size_t used, const char* text) noexcept {
-  if (text == nullptr) return used;
-  const std::size_t room = capacity - 1 - used;
-  const std::size_t n = std::min(room, std::strlen(text));
-  std::memcpy(buffer + used, text, n);
-  buffer[used + n] = '\0';
-  return used + n;
-}
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -465,139 +419,5 @@ ManagerStatistics ControllerManager::statistics() const {
 }
 
 // ---------------------------------------------------------------- the tick
-
-void ControllerManager::fail(Entry& entry, const char* prefix, const char* reason, double time) noexcept {
-  rt_add(entry.failures, 1);
-  if (entry.failure_mutex.try_lock()) {
-    std::size_t used = append(entry.failure, sizeof entry.failure, 0, prefix);
-    append(entry.failure, sizeof entry.failure, used, reason);
-    entry.failure_mutex.unlock();
-  }
-  try {
-    entry.controller->stopping(time);
-  } catch (...) {
-    // Already failing: stopping() gets one chance, the controller is stopped regardless.
-  }
-  entry.state.store(ControllerLifecycle::Stopped);
-  // Leave its joints safe: no effort, hold position, zero velocity; the base to the physics.
-  if (entry.claims_base) state_.base_command.active = false;
-  for (JointHandle& h : entry.handles) {
-    switch (h.interface()) {
-      case HardwareInterface::Effort: h.set_command(0.0); break;
-      case HardwareInterface::Position: h.set_command(h.position()); break;
-      case HardwareInterface::Velocity: h.set_command(0.0); break;
-    }
-  }
-}
-
-void ControllerManager::apply_switch(double time) noexcept {
-  for (Entry* e : pending_stop_) {
-    if (e->state.load() == ControllerLifecycle::Running) stop(*e, time);
-  }
-  for (Entry* e : pending_start_) {
-    if (e->state.load() != ControllerLifecycle::Running) start(*e, time);
-  }
-  switch_state_.store(kNoSwitch, std::memory_order_release);
-}
-
-void ControllerManager::try_apply_switch(double time) noexcept {
-  int expected = kPending;
-  if (switch_state_.compare_exchange_strong(expected, kApplying, std::memory_order_acq_rel)) apply_switch(time);
-}
-
-void ControllerManager::stop(Entry& e, double time) noexcept {
-  try {
-    e.controller->stopping(time);
-  } catch (...) {
-    // A controller being stopped is stopped even if stopping() throws.
-  }
-  e.state.store(ControllerLifecycle::Stopped);
-}
-
-void ControllerManager::start(Entry& e, double time) noexcept {
-  const char* error = nullptr;
-  try {
-    e.controller->starting(time);
-  } catch (const std::exception& ex) {
-    error = ex.what();
-  } catch (...) {
-    error = "starting() threw an unknown exception";
-  }
-  if (error != nullptr) {
-    rt_add(e.failures, 1);
-    if (e.failure_mutex.try_lock()) {
-      std::size_t used = append(e.failure, sizeof e.failure, 0, "starting() failed: ");
-      append(e.failure, sizeof e.failure, used, error);
-      e.failure_mutex.unlock();
-    }
-    e.state.store(ControllerLifecycle::Stopped);
-    return;
-  }
-  e.state.store(ControllerLifecycle::Running);
-}
-
-void ControllerManager::run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept {
-  const double period_ns = period * 1e9;
-  Clock::time_point before = Clock::now();
-  for (Entry* e : list) {
-    if (e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
-    UpdateStatus status;
-    bool failed = false;
-    try {
-      status = e->controller->update(time, period);
-    } catch (const std::exception& ex) {
-      // The message is copied here, while the exception is alive.
-      fail(*e, "update() threw: ", ex.what(), time);
-      failed = true;
-    } catch (...) {
-      fail(*e, "update() threw an unknown exception", "", time);
-      failed = true;
-    }
-    const Clock::time_point after = Clock::now();
-    const std::uint64_t ns = elapsed_ns(before, after);
-    before = after;
-    rt_add(e->updates, 1);
-    rt_add(e->time_sum_ns, ns);
-    rt_max(e->time_max_ns, ns);
-    if (period_ns > 0.0 && static_cast<double>(ns) > period_ns) rt_add(e->overruns, 1);
-    if (!failed && !status.ok) fail(*e, "update() failed: ", status.reason, time);
-  }
-}
-
-void ControllerManager::update(double time, double period, bool reset_controllers) noexcept {
-  const Clock::time_point began = Clock::now();
-  int index = 0;
-  do {
-    index = current_list_.load();
-    list_in_use_.store(index);
-  } while (current_list_.load() != index);
-  const std::vector<Entry*>& list = lists_[index];
-
-  mechanism::propagate_actuator_to_joint_position(model_, state_);
-  if (switch_state_.load(std::memory_order_acquire) == kPending) try_apply_switch(time);
-  if (reset_controllers) {
-    // ros_control's ControllerManager::update(time, period, true): every running controller is
-    // stopped and started again (gazebo_ros_control asks for it when its e-stop is released).
-    // Model plugins are not ros_control controllers: they run on.
-    for (Entry* e : list) {
-      if (e->model_plugin || e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
-      stop(*e, time);
-      start(*e, time);
-    }
-  }
-  for (mechanism::JointState& joint : state_.joints) {
-    if (joint.command_mode == HardwareInterface::Effort) joint.commanded_effort = 0.0;
-  }
-  run_controllers(list, time, period);
-  mechanism::enforce_safety_limits(model_, state_, period > 0.0 ? period : mechanism::kDefaultPeriod);
-  mechanism::propagate_joint_to_actuator_effort(model_, state_);
-
-  list_in_use_.store(-1);
-  const std::uint64_t ns = elapsed_ns(began, Clock::now());
-  rt_add(ticks_, 1);
-  rt_add(tick_time_sum_ns_, ns);
-  rt_max(tick_time_max_ns_, ns);
-  if (period > 0.0 && static_cast<double>(ns) > period * 1e9) rt_add(tick_overruns_, 1);
-}
 
 }  // namespace mechsim::control

@@ -7,26 +7,12 @@
 
 #include "description/urdf/urdf_parser.hpp"
 #include "ros/bridge/sim_bridge.hpp"
+#include "ros/test/pendulum_robot.hpp"
 
 namespace mechsim::ros {
 namespace {
 
-// A pendulum fixed to the world whose bob starts level (it swings under gravity), with a
-// simple transmission (reduction 10, actuator "m") and an effort limit of 50 N m.
-constexpr const char* kPendulum = R"(<robot name="pendulum">
-  <link name="world"/>
-  <joint name="fix" type="fixed"><parent link="world"/><child link="post"/><origin xyz="0 0 1"/></joint>
-  <link name="post"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="hinge" type="revolute">
-    <parent link="post"/><child link="bob"/><axis xyz="0 1 0"/>
-    <limit lower="-3" upper="3" effort="50" velocity="10"/>
-  </joint>
-  <link name="bob"><inertial><origin xyz="0.5 0 0"/><mass value="1"/>
-    <inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
-    <joint name="hinge"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="m"><mechanicalReduction>10</mechanicalReduction></actuator></transmission>
-</robot>)";
+const std::string kPendulum = test::pendulum_urdf(10);
 
 const JointStatisticsData& joint(const MechanismStatisticsData& s, const std::string& name) {
   for (const JointStatisticsData& j : s.joints) {
