@@ -15,12 +15,19 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kNoiseTable = 1u << 16;  // power of two
 
+// One output pixel of a distorted image: bilinear interpolation in the rendered image between the
+// byte `at` (top left), its right neighbour `at + du` and the row below `at + dv`, weights a, b.
+struct Tap {
+  std::uint32_t at = 0;
+  std::uint16_t du = 0, dv = 0;
+  float a = 0.0f, b = 0.0f;
+};
+
 struct CameraState : SensorState {
-  std::vector<physics::Frame> frames;  // scratch: one render per lens
-  std::vector<float> noise;            // seeded normal draws (colour levels), see README
-  // Per lens with distortion: for each output pixel, its source (u, v) in the rendered image.
+  std::vector<std::int16_t> noise;  // seeded normal draws rounded to colour levels, see README
+  // Per lens with distortion: for each output pixel, where it comes from in the rendered image.
   // Made at the lens's first frame: a 1280x720 map takes tens of ms, and most runs never render.
-  std::vector<std::vector<float>> undistort;
+  std::vector<std::vector<Tap>> undistort;
 };
 
 // SDF's camera looks along +x with +z up; the optical frame has z forward, x right, y down.
@@ -39,17 +46,6 @@ void undistort_point(const description::DistortionSpec& d, double xd, double yd,
     x = (xd - dx) / radial;
     y = (yd - dy) / radial;
   }
-}
-
-std::uint8_t bilinear(const std::vector<std::uint8_t>& rgb, int w, int h, float u, float v, int c) {
-  u = std::clamp(u, 0.0f, static_cast<float>(w - 1));
-  v = std::clamp(v, 0.0f, static_cast<float>(h - 1));
-  const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
-  const int u1 = std::min(u0 + 1, w - 1), v1 = std::min(v0 + 1, h - 1);
-  const float a = u - static_cast<float>(u0), b = v - static_cast<float>(v0);
-  auto at = [&](int uu, int vv) { return static_cast<float>(rgb[(static_cast<std::size_t>(vv) * w + uu) * 3 + c]); };
-  const float top = at(u0, v0) * (1 - a) + at(u1, v0) * a, bottom = at(u0, v1) * (1 - a) + at(u1, v1) * a;
-  return static_cast<std::uint8_t>(std::lround(std::clamp(top * (1 - b) + bottom * b, 0.0f, 255.0f)));
 }
 
 }  // namespace
@@ -74,6 +70,9 @@ CameraSensor::CameraSensor(const description::SensorSpec& spec, const physics::P
     if (const std::string bad = physics::check_view(v); !bad.empty())
       throw SensorError(spec.where() + ": camera '" + l.name + "' cannot be rendered: " + bad);
     lens.X_LC = physics::compose(spec.pose, physics::compose(l.pose, {{0, 0, 0}, kOptical}));
+    lens.render = v;
+    lens.render_X_LC = lens.X_LC;
+    lens.render_depth = camera_.depth;
 
     CameraInfo& info = lens.info;
     info.width = l.width;
@@ -93,19 +92,37 @@ CameraSensor::CameraSensor(const description::SensorSpec& spec, const physics::P
 
 namespace {
 
-std::vector<float> undistort_map(const description::DistortionSpec& d, const physics::CameraView& v) {
-  std::vector<float> map(static_cast<std::size_t>(v.width) * v.height * 2);
-  const double f = v.fx;
-  for (int r = 0; r < v.height; ++r) {
-    for (int c = 0; c < v.width; ++c) {
+// For each pixel of the distorted image `out`, its source in the rendered (undistorted) image of
+// `src`: the plumb_bob model inverted through out's intrinsics, projected through src's.
+// Sources outside the rendered image take its border.
+std::vector<Tap> undistort_map(const description::DistortionSpec& d, const physics::CameraView& out,
+                               const physics::CameraView& src) {
+  std::vector<Tap> map(static_cast<std::size_t>(out.width) * out.height);
+  const int w = src.width, h = src.height;
+  for (int r = 0; r < out.height; ++r) {
+    for (int c = 0; c < out.width; ++c) {
       double x = 0, y = 0;
-      undistort_point(d, (c - v.cx) / f, (r - v.cy) / f, x, y);
-      const std::size_t k = (static_cast<std::size_t>(r) * v.width + c) * 2;
-      map[k] = static_cast<float>(f * x + v.cx);
-      map[k + 1] = static_cast<float>(f * y + v.cy);
+      undistort_point(d, (c - out.cx) / out.fx, (r - out.cy) / out.fy, x, y);
+      const float u = std::clamp(static_cast<float>(src.fx * x + src.cx), 0.0f, static_cast<float>(w - 1));
+      const float v = std::clamp(static_cast<float>(src.fy * y + src.cy), 0.0f, static_cast<float>(h - 1));
+      const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
+      Tap& t = map[static_cast<std::size_t>(r) * out.width + c];
+      t.at = static_cast<std::uint32_t>((static_cast<std::size_t>(v0) * w + u0) * 3);
+      t.du = u0 + 1 < w ? 3 : 0;
+      t.dv = static_cast<std::uint16_t>(v0 + 1 < h ? w * 3 : 0);
+      t.a = u - static_cast<float>(u0);
+      t.b = v - static_cast<float>(v0);
     }
   }
   return map;
+}
+
+bool same_pose(const description::Pose& p, const description::Pose& q) {
+  constexpr double kTol = 1e-12;
+  return std::abs(p.position.x - q.position.x) < kTol && std::abs(p.position.y - q.position.y) < kTol &&
+         std::abs(p.position.z - q.position.z) < kTol && std::abs(p.orientation.w - q.orientation.w) < kTol &&
+         std::abs(p.orientation.x - q.orientation.x) < kTol && std::abs(p.orientation.y - q.orientation.y) < kTol &&
+         std::abs(p.orientation.z - q.orientation.z) < kTol;
 }
 
 }  // namespace
@@ -119,15 +136,41 @@ std::pair<int, int> CameraSensor::render_size() const {
   return {w, h};
 }
 
+int CameraSensor::share_renders_with(const CameraSensor& other) {
+  // A depth camera's depth and points come from the render itself, not resampled: never shared.
+  if (&other == this || camera_.depth || other.link_ != link_ || other.spec().update_rate != spec().update_rate) return 0;
+  int shared = 0;
+  for (std::size_t i = 0; i < lenses_.size(); ++i) {
+    Lens& mine = lenses_[i];
+    if (!camera_.lenses[i].distortion.active() || mine.render.cx != mine.view.cx || mine.render.cy != mine.view.cy)
+      continue;  // resampled anyway, and not sharing yet
+    for (std::size_t j = 0; j < other.lenses_.size(); ++j) {
+      const Lens& theirs = other.lenses_[j];
+      const physics::CameraView &a = mine.view, &b = theirs.view;
+      if (other.camera_.lenses[j].distortion.active() || a.width != b.width || a.height != b.height || a.fx != b.fx ||
+          a.fy != b.fy || a.near != b.near || a.far != b.far || !same_pose(mine.X_LC, theirs.X_LC))
+        continue;
+      mine.render = b;
+      mine.render_X_LC = theirs.X_LC;
+      mine.render_depth = theirs.render_depth;
+      ++shared;
+      break;
+    }
+  }
+  return shared;
+}
+
 std::unique_ptr<SensorState> CameraSensor::make_state(Rng rng) const {
   auto state = std::make_unique<CameraState>();
   state->rng = std::move(rng);
-  state->frames.resize(lenses_.size());
   state->undistort.resize(lenses_.size());
   const description::NoiseSpec& n = camera_.lenses.front().noise;
   if (n.stddev > 0.0 || n.mean != 0.0) {
     state->noise.resize(kNoiseTable);
-    for (float& x : state->noise) x = static_cast<float>(255.0 * (n.mean + n.stddev * standard_normal(state->rng)));
+    for (std::int16_t& x : state->noise) {
+      const double levels = std::clamp(255.0 * (n.mean + n.stddev * standard_normal(state->rng)), -255.0, 255.0);
+      x = static_cast<std::int16_t>(std::lround(levels));
+    }
   }
   return state;
 }
@@ -145,9 +188,8 @@ void CameraSensor::sample(const physics::Physics& physics, double, SensorState& 
     out = std::move(r);
   }
   CameraReading& reading = std::get<CameraReading>(out);
-  physics::Renderer* renderer = state.render != nullptr ? state.render->scene(physics) : nullptr;
-  if (renderer == nullptr) {
-    reading.error = state.render != nullptr ? state.render->error() : "no renderer attached to the camera";
+  if (state.render == nullptr) {
+    reading.error = "no renderer attached to the camera";
     return;
   }
   const description::Pose X_WL = physics.link_pose(link_);
@@ -156,29 +198,40 @@ void CameraSensor::sample(const physics::Physics& physics, double, SensorState& 
     const Lens& lens = lenses_[i];
     physics::CameraView view = lens.view;
     view.X_WC = physics::compose(X_WL, lens.X_LC);
-    physics::Frame& frame = state.frames[i];
-    renderer->render(view, frame, true, camera_.depth);
-    state.render->count_render();
+    physics::CameraView render = lens.render;
+    render.X_WC = physics::compose(X_WL, lens.render_X_LC);
+    const physics::Frame* rendered = state.render->frame(physics, render, lens.render_depth || camera_.depth);
+    if (rendered == nullptr) {
+      reading.error = state.render->error();
+      return;
+    }
+    const physics::Frame& frame = *rendered;
     CameraImage& im = reading.images[i];
     const std::size_t n = static_cast<std::size_t>(view.width) * view.height;
     im.rgb.resize(n * 3);
-    std::vector<float>& undistort = state.undistort[i];
+    std::vector<Tap>& undistort = state.undistort[i];
     const description::DistortionSpec& distortion = camera_.lenses[i].distortion;
-    if (undistort.empty() && distortion.active()) undistort = undistort_map(distortion, lens.view);
+    if (undistort.empty() && distortion.active()) undistort = undistort_map(distortion, lens.view, lens.render);
     if (undistort.empty()) {
-      std::copy(frame.rgb.begin(), frame.rgb.end(), im.rgb.begin());
+      std::copy(frame.rgb.begin(), frame.rgb.begin() + static_cast<std::ptrdiff_t>(n * 3), im.rgb.begin());
     } else {
-      for (std::size_t k = 0; k < n; ++k)
-        for (int c = 0; c < 3; ++c)
-          im.rgb[k * 3 + c] = bilinear(frame.rgb, view.width, view.height, undistort[2 * k], undistort[2 * k + 1], c);
+      const std::uint8_t* src = frame.rgb.data();
+      std::uint8_t* dst = im.rgb.data();
+      for (std::size_t k = 0; k < n; ++k) {
+        const Tap& t = undistort[k];
+        const std::uint8_t* p = src + t.at;
+        for (int c = 0; c < 3; ++c) {
+          const float top = p[c] + t.a * static_cast<float>(p[c + t.du] - p[c]);
+          const float bottom = p[c + t.dv] + t.a * static_cast<float>(p[c + t.dv + t.du] - p[c + t.dv]);
+          // A convex combination of levels: in [0, 255], rounded half up.
+          dst[k * 3 + c] = static_cast<std::uint8_t>(top + t.b * (bottom - top) + 0.5f);
+        }
+      }
     }
     if (!state.noise.empty()) {
       // A random start in the table per frame (one draw), so frames differ and stay reproducible.
       std::size_t at = static_cast<std::size_t>(uniform01(state.rng) * kNoiseTable);
-      for (std::uint8_t& px : im.rgb) {
-        const float v = static_cast<float>(px) + state.noise[at++ & (kNoiseTable - 1)];
-        px = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 255.0f)));
-      }
+      for (std::uint8_t& px : im.rgb) px = static_cast<std::uint8_t>(std::clamp(px + state.noise[at++ & (kNoiseTable - 1)], 0, 255));
     }
     if (!camera_.depth) continue;
     im.depth.resize(n);

@@ -27,4 +27,32 @@ physics::Renderer* RenderHub::scene(const physics::Physics& physics) {
   return renderer_.get();
 }
 
+namespace {
+
+bool same_view(const physics::CameraView& a, const physics::CameraView& b) {
+  const description::Pose &p = a.X_WC, &q = b.X_WC;
+  return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy && a.cx == b.cx && a.cy == b.cy &&
+         a.near == b.near && a.far == b.far && p.position.x == q.position.x && p.position.y == q.position.y &&
+         p.position.z == q.position.z && p.orientation.w == q.orientation.w && p.orientation.x == q.orientation.x &&
+         p.orientation.y == q.orientation.y && p.orientation.z == q.orientation.z;
+}
+
+}  // namespace
+
+const physics::Frame* RenderHub::frame(const physics::Physics& physics, const physics::CameraView& view, bool depth) {
+  physics::Renderer* renderer = scene(physics);
+  if (renderer == nullptr) return nullptr;
+  for (std::size_t i = 0; i < used_; ++i) {
+    const Slot& s = *slots_[i];
+    if ((s.depth || !depth) && same_view(s.view, view)) return &s.frame;
+  }
+  if (used_ == slots_.size()) slots_.push_back(std::make_unique<Slot>());
+  Slot& s = *slots_[used_++];
+  s.view = view;
+  s.depth = depth;
+  renderer->render(view, s.frame, true, depth);
+  ++renders_;
+  return &s.frame;
+}
+
 }  // namespace mechsim::sensors

@@ -2,14 +2,17 @@
 // The renderer the camera sensors of one SensorSet share: made on first use (so a simulation
 // whose cameras nobody consumes never opens an OpenGL context), its scene updated once per
 // instant however many cameras sample then (DESIGN.md: cameras at the same instant share the
-// scene update). A machine without a working EGL gets error() and no renderer; the cameras then
-// report the error and everything else runs on.
+// scene update), and each distinct view rendered once per instant: two sensors asking for the
+// same view at one instant (a ZED2's raw and rectified images, share_camera_renders()) get one
+// frame. A machine without a working EGL gets error() and no renderer; the cameras then report
+// the error and everything else runs on.
 //
 // Threads: the simulation's loop thread (the renderer's OpenGL context is bound to it).
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "physics/physics.hpp"
 #include "physics/physics_model.hpp"
@@ -31,24 +34,39 @@ class RenderHub {
   RenderHub(const RenderHub&) = delete;
   RenderHub& operator=(const RenderHub&) = delete;
 
-  // A new instant: the next scene() copies the physics again.
-  void next_instant() { fresh_ = false; }
-  // The renderer with the scene of `physics` now; nullptr when no context can be made (error()).
-  physics::Renderer* scene(const physics::Physics& physics);
+  // A new instant: the next frame() copies the physics again and renders anew.
+  void next_instant() {
+    fresh_ = false;
+    used_ = 0;
+  }
+  // `view` rendered from the scene of `physics` now (RGB, and depth when `depth`): rendered on the
+  // first request for this view at this instant, the same frame for later ones (a frame with
+  // depth serves a request without). Valid until next_instant(). nullptr when no context can be
+  // made (error()). Frames are kept and reused across instants: no allocation once warm.
+  const physics::Frame* frame(const physics::Physics& physics, const physics::CameraView& view, bool depth);
 
   const std::string& error() const { return error_; }
   long scene_updates() const { return updates_; }
   long renders() const { return renders_; }
-  void count_render() { ++renders_; }
 
  private:
   std::shared_ptr<const physics::PhysicsModel> model_;
   physics::RenderSettings settings_;
   RenderModelFactory render_model_;
+  struct Slot {
+    physics::CameraView view;
+    bool depth = false;
+    physics::Frame frame;
+  };
+  // The renderer with the scene of `physics` now; nullptr when no context can be made.
+  physics::Renderer* scene(const physics::Physics& physics);
+
   std::unique_ptr<physics::Renderer> renderer_;
   std::string error_;
   bool fresh_ = false;
   long updates_ = 0, renders_ = 0;
+  std::vector<std::unique_ptr<Slot>> slots_;  // the first used_ hold this instant's frames
+  std::size_t used_ = 0;
 };
 
 }  // namespace mechsim::sensors

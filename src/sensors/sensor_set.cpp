@@ -1,5 +1,7 @@
 #include "sensors/sensor_set.hpp"
 
+#include "sensors/sensor_types.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -62,10 +64,19 @@ SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
     settings.max_height = std::max(settings.max_height, h);
   }
   if (settings.max_width > 0) {
+    share_camera_renders();
     hub_ = std::make_unique<RenderHub>(model_, settings, std::move(render_model));
     for (std::size_t i = 0; i < sensors_.size(); ++i)
       if (sensors_[i]->renders()) states_[i]->render = hub_.get();
   }
+}
+
+void SensorSet::share_camera_renders() {
+  std::vector<CameraSensor*> cameras;
+  for (const std::unique_ptr<Sensor>& s : sensors_)
+    if (auto* c = dynamic_cast<CameraSensor*>(s.get())) cameras.push_back(c);
+  for (CameraSensor* a : cameras)
+    for (const CameraSensor* b : cameras) a->share_renders_with(*b);
 }
 
 std::optional<std::size_t> SensorSet::find(std::string_view name) const {

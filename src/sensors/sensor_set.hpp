@@ -73,6 +73,8 @@ class SensorSet {
 
  private:
   void take(std::size_t i, const physics::Physics& physics, double time);
+  // Raw and rectified cameras at one place share renders (CameraSensor::share_renders_with).
+  void share_camera_renders();
 
   std::shared_ptr<const physics::PhysicsModel> model_;
   std::vector<std::unique_ptr<Sensor>> sensors_;

@@ -93,8 +93,19 @@ class CameraSensor final : public Sensor {
     physics::CameraView view;     // intrinsics and clip; X_WC filled at each sample
     description::Pose X_LC;       // optical frame in the link frame
     CameraInfo info;
+    // What is rendered for this lens: its own view, or, for a lens with distortion (whose image
+    // is resampled anyway), the view of an undistorted lens it shares renders with.
+    physics::CameraView render;
+    description::Pose render_X_LC;
+    bool render_depth = false;
   };
   const std::vector<Lens>& lenses() const { return lenses_; }
+  std::size_t link() const { return link_; }
+  // Each lens with distortion renders through the view of an undistorted lens of `other` at the
+  // same place on the same link with the same size, focal length and clip, when `other` samples at
+  // the same rate: the two then share one render per instant (RenderHub::frame), the distorted
+  // image resampled from it. Returns how many lenses now share.
+  int share_renders_with(const CameraSensor& other);
 
  private:
   const description::CameraSpec& camera_;

@@ -262,6 +262,67 @@ TEST(CameraSensor, BrokenEglStopsOnlyTheCameras) {
       ::testing::ExitedWithCode(3), "error: cameras cannot render: .*EGL.* imu: 1");
 }
 
+// The ZED2's pattern: a raw camera with distortion and a rectified depth camera at one place, with
+// principal points a few pixels apart. They share one render per instant; the raw image, resampled
+// from the rectified render, shows the box's edge where the raw camera alone shows it.
+std::string raw_and_rect(int raw_width, const std::string& raw_rate = "10") {
+  const std::string dist = "<distortion><k1>-0.25</k1><center>0.5 0.5</center></distortion>";
+  const std::string raw = R"(<sensor type="camera" name="raw"><update_rate>)" + raw_rate + "</update_rate>" +
+                          "<camera><horizontal_fov>1.2</horizontal_fov><image><width>" + std::to_string(raw_width) +
+                          "</width><height>240</height></image><clip><near>0.05</near><far>20</far></clip>" + dist +
+                          R"(</camera><plugin name="c" filename="libgazebo_ros_camera.so"><Cx>155.5</Cx><Cy>118.5</Cy></plugin></sensor>)";
+  const std::string rect = R"(<sensor type="depth" name="rect"><update_rate>10</update_rate>)" + lens() + kKinect + "</sensor>";
+  return R"(<gazebo reference="laser_link">)" + raw + rect + "</gazebo>";
+}
+
+int edge_column(const CameraImage& im) {
+  const int v = static_cast<int>(std::lround(im.info.K[5]));
+  const auto* row = &im.rgb[static_cast<std::size_t>(v * im.info.width) * 3];
+  for (int u = 0; u < im.info.width; ++u)
+    if (std::abs(row[3 * u] - row[0]) > 20) return u;
+  return -1;
+}
+
+TEST(CameraSensor, RawAndRectifiedImagesShareOneRender) {
+  Rig both(raw_and_rect(320), 0.6);
+  SensorSet set(both.robot.sensors, both.model, 1);
+  ASSERT_EQ(set.size(), 2u);
+  set.set_enabled(0, true);
+  set.set_enabled(1, true);
+  set.sample_all(*both.physics, 0.0);
+  EXPECT_EQ(set.render_hub()->renders(), 1);
+  const auto& raw = std::get<CameraReading>(set.reading(0).value);
+  const auto& rect = std::get<CameraReading>(set.reading(1).value);
+  ASSERT_EQ(raw.error, "");
+  ASSERT_EQ(rect.error, "");
+  EXPECT_DOUBLE_EQ(raw.images.at(0).info.K[2], 155.5);  // each keeps its own intrinsics
+  EXPECT_DOUBLE_EQ(rect.images.at(0).info.K[2], 166.5);
+  EXPECT_FALSE(rect.images.at(0).depth.empty());
+
+  // The raw camera alone renders through its own intrinsics.
+  const std::string alone = raw_and_rect(320);
+  Rig solo(alone.substr(0, alone.find(R"(<sensor type="depth")")) + "</gazebo>", 0.6);
+  SensorSet one(solo.robot.sensors, solo.model, 1);
+  ASSERT_EQ(one.size(), 1u);
+  const CameraImage& reference = sample(one, *solo.physics).images.at(0);
+  const int shared_edge = edge_column(raw.images.at(0)), own_edge = edge_column(reference);
+  ASSERT_GT(own_edge, 0);
+  EXPECT_NEAR(shared_edge, own_edge, 1);
+  // And sharing is what makes the difference: the rectified camera sees the edge elsewhere.
+  EXPECT_GT(std::abs(edge_column(rect.images.at(0)) - own_edge), 2);
+}
+
+TEST(CameraSensor, CamerasOfOtherSizesOrRatesRenderApart) {
+  for (const auto& [width, rate] : {std::pair{256, "10"}, std::pair{320, "5"}}) {
+    Rig rig(raw_and_rect(width, rate));
+    SensorSet set(rig.robot.sensors, rig.model, 1);
+    set.set_enabled(0, true);
+    set.set_enabled(1, true);
+    set.sample_all(*rig.physics, 0.0);
+    EXPECT_EQ(set.render_hub()->renders(), 2) << width << " px at " << rate << " Hz";
+  }
+}
+
 TEST(CameraSensor, OpticalFrameAndCameraInfoOfThePlugin) {
   Rig rig(camera_block("camera", lens(), R"(<plugin name="c" filename="libgazebo_ros_camera.so"><focalLength>250</focalLength>
     <hackBaseline>0.07</hackBaseline><distortionK1>0.1</distortionK1></plugin>)"));
