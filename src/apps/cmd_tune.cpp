@@ -24,6 +24,8 @@ struct TuneArgs {
   double observe = 1.0;
   int evaluations = 80;
   bool write = false;
+  bool robust = false;
+  std::string conditions;  // a conditions file (implies robust)
 };
 
 // `unit` is the joint's position unit ("rad" or "m").
@@ -58,6 +60,8 @@ void run(const TuneArgs& args, CommandResult& result) {
   setup.targets.overshoot = args.overshoot;
   setup.observe = args.observe;
   setup.max_evaluations = args.evaluations;
+  setup.robust = args.robust || !args.conditions.empty();
+  if (!args.conditions.empty()) setup.conditions = sim::read_tune_conditions(args.conditions);
   bool all_met = true;
   for (const std::string& joint : args.joints) {
     setup.joint = joint;
@@ -81,7 +85,13 @@ void run(const TuneArgs& args, CommandResult& result) {
     } else {
       std::cout << "settling within " << args.settle << " s";
     }
-    std::cout << ", overshoot under " << args.overshoot << " %) " << (r.targets_met ? "met" : "NOT met") << "\n";
+    std::cout << ", overshoot under " << args.overshoot << " %) " << (r.targets_met ? "met" : "NOT met")
+              << (r.conditions.empty() ? "" : " in every condition") << "\n";
+    for (const sim::TuneResult::ConditionOutcome& c : r.conditions) {
+      std::cout << "  condition " << c.name << ":\n    before " << (c.met_before ? "(met)     " : "(NOT met) ")
+                << metrics_line(c.before, r.velocity, unit) << "\n    after  " << (c.met_after ? "(met)     " : "(NOT met) ")
+                << metrics_line(c.after, r.velocity, unit) << "\n";
+    }
     all_met = all_met && r.targets_met;
     if (args.write) {
       if (!sim::write_gains_in_place(args.controllers, r.controller, r.after)) {
@@ -112,6 +122,12 @@ void add_tune_command(CLI::App& app, CommandResult& result) {
   cmd->add_option("--observe", args->observe, "Time observed after the step (s); longer than the target settling time");
   cmd->add_option("--evaluations", args->evaluations, "Maximum experiments per joint");
   cmd->add_flag("--write", args->write, "Write the gains into the controller YAML (its pid line)");
+  cmd->add_flag("--robust", args->robust,
+                "Tune for the worst of several conditions: by default a small and a reversed step and a payload "
+                "(position), or a slow, a fast and a reversed step (velocity)");
+  cmd->add_option("--conditions", args->conditions,
+                  "Conditions file for --robust (YAML: conditions: [{name, step_scale, world: {...}, payload: {link, mass}}])")
+      ->check(CLI::ExistingFile);
   cmd->callback([args, &result] { run(*args, result); });
 }
 

@@ -433,6 +433,20 @@ void read_controller_params(const Params& overlay, const Params& file_params, co
 
 }  // namespace
 
+WorldConfig read_world_config(const Params& world, const fs::path& base) {
+  WorldConfig w;
+  const std::string name = world.get<std::string>("name", "empty");
+  w.name = (name == "empty" || name == "mars_yard_2024" || name == "slope") ? name : resolve_path(base, name);
+  if (world.has("slope_deg")) w.slope_deg = finite(world, "slope_deg", 10.0);
+  if (auto soil = world.find("soil")) w.soil = read_soil(*soil);
+  w.seed = static_cast<std::uint64_t>(world.get<int>("seed", static_cast<int>(physics::kMarsYardDefaultSeed)));
+  if (world.has("size_x")) w.heightmap.size_x = world.get<double>("size_x");
+  if (world.has("size_y")) w.heightmap.size_y = world.get<double>("size_y");
+  if (world.has("z_min")) w.heightmap.z_min = world.get<double>("z_min");
+  if (world.has("z_max")) w.heightmap.z_max = world.get<double>("z_max");
+  return w;
+}
+
 Scenario load_scenario(const std::string& path) {
   if (!fs::exists(path)) throw ScenarioError(path + ": no such scenario file");
   Params root;
@@ -471,15 +485,7 @@ Scenario load_scenario(const Params& root, const std::string& path) {
 
     s.seed = static_cast<std::uint64_t>(root.get<int>("seed", 1));
     if (auto world = root.find("world")) {
-      const std::string name = world->get<std::string>("name", "empty");
-      s.world.name = (name == "empty" || name == "mars_yard_2024" || name == "slope") ? name : resolve_path(base, name);
-      if (world->has("slope_deg")) s.world.slope_deg = finite(*world, "slope_deg", 10.0);
-      if (auto soil = world->find("soil")) s.world.soil = read_soil(*soil);
-      s.world.seed = static_cast<std::uint64_t>(world->get<int>("seed", static_cast<int>(physics::kMarsYardDefaultSeed)));
-      if (world->has("size_x")) s.world.heightmap.size_x = world->get<double>("size_x");
-      if (world->has("size_y")) s.world.heightmap.size_y = world->get<double>("size_y");
-      if (world->has("z_min")) s.world.heightmap.z_min = world->get<double>("z_min");
-      if (world->has("z_max")) s.world.heightmap.z_max = world->get<double>("z_max");
+      s.world = read_world_config(*world, base);
       if (auto boxes = world->find("boxes")) s.boxes = read_boxes(*boxes);
       const std::string leaving = world->get<std::string>("on_leaving", "stop");
       if (leaving == "stop") {

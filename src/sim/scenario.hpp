@@ -134,6 +134,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -262,6 +263,10 @@ struct Scenario {
 
 // Reads and validates a scenario file. Errors name the file and the parameter path.
 Scenario load_scenario(const std::string& path);
+// A `world:` map (name, slope_deg, soil, seed, size_x/size_y/z_min/z_max of a heightmap file),
+// relative file names resolved against `base` (what a scenario's world and `mechsim tune`'s
+// conditions share). Throws ScenarioError naming the file, line and key.
+WorldConfig read_world_config(const control::Params& world, const std::filesystem::path& base);
 // The same from a tree already read (and perhaps changed: mechsim sweep's overrides); `path` is
 // the file it came from (relative paths in it are resolved against its folder).
 Scenario load_scenario(const control::Params& root, const std::string& path);

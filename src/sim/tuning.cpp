@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <regex>
@@ -13,6 +14,7 @@
 
 #include "control/params.hpp"
 #include "control/ports.hpp"
+#include "sim/scenario.hpp"
 #include "sim/simulation.hpp"
 
 namespace mechsim::sim {
@@ -161,6 +163,41 @@ double resting_position(const TuneSetup& setup, const std::string& controller, c
   return std::isfinite(q) ? q : 0.0;
 }
 
+bool meets(const StepMetrics& m, const TuneTargets& tg, bool velocity) {
+  return !m.diverged && m.overshoot <= tg.overshoot &&
+         (velocity ? (m.rise95 >= 0 && m.rise95 <= tg.rise95) : (m.settling_time >= 0 && m.settling_time <= tg.settling_time));
+}
+
+// The setup of one robust condition: the step scaled (position steps planned again in the
+// joint's range), its world, its payload.
+TuneSetup condition_setup(const TuneSetup& nominal, const TuneCondition& c, bool velocity, double start) {
+  TuneSetup v = nominal;
+  v.conditions.clear();
+  v.robust = false;
+  const double step = nominal.step.value_or(velocity ? 2.0 : 0.5) * c.step_scale;
+  if (!velocity) {
+    const description::Joint* joint = nominal.robot.joint(nominal.joint);
+    try {
+      v.step = plan_position_step(*joint, start, step).step;
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("condition '" + c.name + "': " + e.what());
+    }
+  } else {
+    v.step = step;
+  }
+  if (c.world) v.world = *c.world;
+  if (!c.payload_link.empty()) {
+    auto link = std::find_if(v.robot.links.begin(), v.robot.links.end(),
+                             [&](const description::Link& l) { return l.name == c.payload_link; });
+    if (link == v.robot.links.end()) {
+      throw std::runtime_error("condition '" + c.name + "': no link '" + c.payload_link + "' in robot '" + v.robot.name + "'");
+    }
+    if (!link->inertial) link->inertial = description::Inertial{};
+    link->inertial->mass += c.payload_mass;  // a point mass at the centre of mass
+  }
+  return v;
+}
+
 }  // namespace
 
 TuneResult::StepPlanInfo plan_position_step(const description::Joint& joint, double start, double step) {
@@ -263,6 +300,19 @@ TuneResult tune_joint(const TuneSetup& requested) {
     result.plan.step = setup.step.value_or(2.0);
   }
   result.before_metrics = measure_step(setup, result.controller, result.velocity, result.before);
+  // The experiments a set of gains is judged by: the nominal one, and each robust condition.
+  std::vector<TuneSetup> variants{setup};
+  std::vector<std::string> names{"nominal"};
+  if (setup.robust) {
+    const std::vector<TuneCondition> conditions =
+        setup.conditions.empty() ? default_robust_conditions(setup.robot, setup.joint, result.velocity) : setup.conditions;
+    for (const TuneCondition& c : conditions) {
+      variants.push_back(condition_setup(setup, c, result.velocity, result.start));
+      // A scaled position step planned back the other way (it left the range) says so.
+      const bool turned = (*variants.back().step > 0) != (*setup.step * c.step_scale > 0);
+      names.push_back(turned ? c.name + " (taken the other way: it leaves the range)" : c.name);
+    }
+  }
 
   const TuneTargets& tg = setup.targets;
   // Where the search starts: the YAML's gains, raised to at least p 10 (weak gains give a flat
@@ -282,7 +332,8 @@ TuneResult tune_joint(const TuneSetup& requested) {
     if (!result.velocity) decades += std::abs(std::log10(g.d / start.d));
     return decades;
   };
-  auto cost_of = [&](const StepMetrics& m, const control::PidGains& g) {
+  // The cost of a response, without the distance from the start.
+  auto response_cost = [&](const StepMetrics& m) {
     if (m.diverged) return 1e6;
     const double horizon = setup.observe;
     double c = 0.0;
@@ -301,8 +352,11 @@ TuneResult tune_joint(const TuneSetup& requested) {
     // that settles off its set point is useless for driving.
     // Errors under half a percent of the step earn nothing either (same reason).
     c += std::max(0.0, std::abs(m.steady_state_error / m.step) - kErrorMargin) * 100.0;
-    c += kStayWeight * distance_from_start(g);  // among equals, the smallest change
     return c;
+  };
+  auto cost_of = [&](const StepMetrics& m, const control::PidGains& g) {
+    const double c = response_cost(m);
+    return c >= 1e6 ? c : c + kStayWeight * distance_from_start(g);  // among equals, the smallest change
   };
   auto gains_of = [&](const auto& x) {
     control::PidGains g = result.before;
@@ -317,21 +371,24 @@ TuneResult tune_joint(const TuneSetup& requested) {
     return g;
   };
   auto clamp_log = [](double v) { return std::log(std::clamp(v, 1e-3, 1e5)); };
+  // The worst condition's cost (one experiment when not robust).
+  auto worst_cost = [&](const control::PidGains& g) {
+    double worst = 0.0;
+    for (const TuneSetup& v : variants) {
+      worst = std::max(worst, cost_of(measure_step(v, result.controller, result.velocity, g), g));
+      if (worst >= 1e6) break;  // diverged: no need to run the rest
+    }
+    return worst;
+  };
   int evaluations = 1;
   control::PidGains best;
   if (result.velocity) {
-    auto cost = [&](const std::array<double, 2>& x) {
-      const control::PidGains g = gains_of(x);
-      return cost_of(measure_step(setup, result.controller, true, g), g);
-    };
+    auto cost = [&](const std::array<double, 2>& x) { return worst_cost(gains_of(x)); };
     const auto x = nelder_mead<2>(cost, {clamp_log(start.p), clamp_log(start.i)}, 1.0,
                                   setup.max_evaluations, evaluations);
     best = gains_of(x);
   } else {
-    auto cost = [&](const std::array<double, 3>& x) {
-      const control::PidGains g = gains_of(x);
-      return cost_of(measure_step(setup, result.controller, false, g), g);
-    };
+    auto cost = [&](const std::array<double, 3>& x) { return worst_cost(gains_of(x)); };
     const auto x = nelder_mead<3>(cost, {clamp_log(start.p), clamp_log(start.d), clamp_log(start.i)},
                                   1.0, setup.max_evaluations, evaluations);
     best = gains_of(x);
@@ -345,14 +402,85 @@ TuneResult tune_joint(const TuneSetup& requested) {
   best.p = round3(best.p);
   best.i = round3(best.i);
   best.d = round3(best.d);
+  // The YAML's gains stay when the search found no better response in any condition: the search
+  // starts from raised gains, and a tuner should not move gains that already do the job.
+  auto worst_response = [&](const control::PidGains& g) {
+    double worst = 0.0;
+    for (const TuneSetup& v : variants) worst = std::max(worst, response_cost(measure_step(v, result.controller, result.velocity, g)));
+    return worst;
+  };
+  if (worst_response(result.before) <= worst_response(best)) best = result.before;
   result.after = best;
   result.after_metrics = measure_step(setup, result.controller, result.velocity, best);
   result.evaluations = evaluations + 1;
-  const StepMetrics& a = result.after_metrics;
-  result.targets_met = !a.diverged && a.overshoot <= tg.overshoot &&
-                       (result.velocity ? (a.rise95 >= 0 && a.rise95 <= tg.rise95)
-                                        : (a.settling_time >= 0 && a.settling_time <= tg.settling_time));
+  result.targets_met = meets(result.after_metrics, tg, result.velocity);
+  if (setup.robust) {
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+      TuneResult::ConditionOutcome o;
+      o.name = names[i];
+      o.before = i == 0 ? result.before_metrics : measure_step(variants[i], result.controller, result.velocity, result.before);
+      o.after = i == 0 ? result.after_metrics : measure_step(variants[i], result.controller, result.velocity, best);
+      o.met_before = meets(o.before, tg, result.velocity);
+      o.met_after = meets(o.after, tg, result.velocity);
+      result.targets_met = result.targets_met && o.met_after;
+      result.conditions.push_back(std::move(o));
+    }
+  }
   return result;
+}
+
+std::vector<TuneCondition> default_robust_conditions(const description::RobotModel& robot, const std::string& joint,
+                                                     bool velocity) {
+  if (velocity) return {{"slow step (0.25x)", 0.25, {}, "", 0.0}, {"fast step (2x)", 2.0, {}, "", 0.0},
+                        {"reversed step", -1.0, {}, "", 0.0}};
+  std::vector<TuneCondition> c{{"small step (0.2x)", 0.2, {}, "", 0.0}, {"reversed step", -1.0, {}, "", 0.0}};
+  const description::Joint* j = robot.joint(joint);
+  const description::Link* moved = j != nullptr ? robot.link(j->child_link) : nullptr;
+  if (moved != nullptr && moved->inertial && moved->inertial->mass > 0.0) {
+    const double mass = 0.5 * moved->inertial->mass;
+    std::ostringstream name;
+    name << "payload " << mass << " kg on " << moved->name;
+    c.push_back({name.str(), 1.0, {}, moved->name, mass});
+  }
+  return c;
+}
+
+std::vector<TuneCondition> read_tune_conditions(const std::string& file) {
+  const control::Params root = control::Params::from_yaml_file(file);
+  auto fail = [&](const control::Params& at, const std::string& what) -> void {
+    const std::string where = at.location().empty() ? file : at.location();
+    throw std::runtime_error(where + ": " + at.path() + ": " + what);
+  };
+  const std::optional<control::Params> list = root.find("conditions");
+  if (!list || !list->is_list() || list->size() == 0) fail(list ? *list : root, "expected a non-empty list 'conditions'");
+  const std::filesystem::path base = std::filesystem::path(file).parent_path();
+  std::vector<TuneCondition> out;
+  for (const control::Params& item : list->items()) {
+    if (!item.is_map()) fail(item, "expected a map (name, step_scale, world, payload)");
+    for (const std::string& k : item.keys()) {
+      if (k != "name" && k != "step_scale" && k != "world" && k != "payload")
+        fail(item.child(k), "unknown key '" + k + "' (expected one of: name, step_scale, world, payload)");
+    }
+    TuneCondition c;
+    c.step_scale = item.get<double>("step_scale", 1.0);
+    if (!std::isfinite(c.step_scale) || c.step_scale == 0.0) fail(item.child("step_scale"), "expected a finite, non-zero scale");
+    std::ostringstream made;
+    if (c.step_scale != 1.0) made << "step x" << c.step_scale;
+    if (auto world = item.find("world")) {
+      if (!world->is_map()) fail(*world, "expected a map of a scenario's world keys (name, slope_deg, soil, seed, ...)");
+      c.world = read_world_config(*world, base);
+      made << (made.tellp() > 0 ? ", " : "") << "world " << c.world->name;
+    }
+    if (auto payload = item.find("payload")) {
+      c.payload_link = payload->get<std::string>("link");
+      c.payload_mass = payload->get<double>("mass");
+      if (!std::isfinite(c.payload_mass) || c.payload_mass <= 0.0) fail(payload->child("mass"), "expected a mass > 0 (kg)");
+      made << (made.tellp() > 0 ? ", " : "") << "payload " << c.payload_mass << " kg on " << c.payload_link;
+    }
+    c.name = item.get<std::string>("name", made.str().empty() ? "nominal again" : made.str());
+    out.push_back(std::move(c));
+  }
+  return out;
 }
 
 bool write_gains_in_place(const std::string& file, const std::string& controller, const control::PidGains& gains) {

@@ -35,6 +35,18 @@ struct TuneTargets {
   double overshoot = 5.0;      // %
 };
 
+// A condition a robust tune (`mechsim tune --robust`) evaluates the gains in as well as the
+// nominal experiment: the step scaled, another world, a payload. The search then minimises the
+// worst condition's cost (minimax), and the targets count as met only when every condition meets
+// them.
+struct TuneCondition {
+  std::string name;
+  double step_scale = 1.0;           // times the nominal step; negative: the other way
+  std::optional<WorldConfig> world;  // nullopt: the setup's
+  std::string payload_link;          // empty: no payload
+  double payload_mass = 0.0;         // kg added at the link's centre of mass
+};
+
 struct TuneSetup {
   description::RobotModel robot;
   WorldConfig world;
@@ -51,6 +63,10 @@ struct TuneSetup {
   double observe = 1.0;         // s after the step
   TuneTargets targets;
   int max_evaluations = 80;
+  // Robust tuning: the nominal experiment and these conditions (robust with no conditions: the
+  // default set of default_robust_conditions()).
+  bool robust = false;
+  std::vector<TuneCondition> conditions;
 };
 
 struct TuneResult {
@@ -71,8 +87,31 @@ struct TuneResult {
   control::PidGains before, after;
   StepMetrics before_metrics, after_metrics;
   int evaluations = 0;
-  bool targets_met = false;
+  bool targets_met = false;  // robust: in every condition
+  // Robust tuning: each condition (the nominal first) with its metrics under both sets of gains.
+  struct ConditionOutcome {
+    std::string name;
+    StepMetrics before, after;
+    bool met_before = false, met_after = false;
+  };
+  std::vector<ConditionOutcome> conditions;
 };
+
+// The conditions `mechsim tune --robust` uses when given none: position controllers a small step
+// (0.2x), the step reversed and half the moved link's mass again as a payload on it; velocity
+// controllers a slow (0.25x), a fast (2x) and a reversed step.
+std::vector<TuneCondition> default_robust_conditions(const description::RobotModel& robot, const std::string& joint,
+                                                     bool velocity);
+
+// A conditions file:
+//   conditions:
+//     - name: small step          # optional; made from the rest when absent
+//       step_scale: 0.2
+//     - world: {name: slope, slope_deg: 10}   # a scenario's world keys (sim/scenario.hpp)
+//     - payload: {link: r_gripper_palm_link, mass: 2.0}
+// Throws std::runtime_error naming the file, line and key (unknown keys, empty list, a payload
+// on a link the robot lacks is found later, by tune_joint).
+std::vector<TuneCondition> read_tune_conditions(const std::string& file);
 
 // The step a position experiment can take from `start` (rad or m) on `joint`: `step` when
 // start + step lies within the joint's range (the safety controller's soft limits when the joint

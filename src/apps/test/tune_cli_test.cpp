@@ -18,6 +18,7 @@ namespace mechsim::apps::test {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
@@ -35,10 +36,11 @@ class TuneCli : public testing::Test {
     std::ofstream(dir_ / "controllers.yaml") << kControllers;
   }
   void TearDown() override { fs::remove_all(dir_); }
-  ProcessResult tune(const std::string& step) {
-    return run_process({MECHSIM_EXE, "tune", (dir_ / "pendulum.urdf").string(), "--controllers", (dir_ / "controllers.yaml").string(),
-                        "--joint", "hinge", "--step", step, "--evaluations", "4"},
-                       60.0);
+  ProcessResult tune(const std::string& step, const std::vector<std::string>& more = {}) {
+    std::vector<std::string> args{MECHSIM_EXE, "tune", (dir_ / "pendulum.urdf").string(), "--controllers",
+                                  (dir_ / "controllers.yaml").string(), "--joint", "hinge", "--step", step, "--evaluations", "4"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_process(args, 60.0);
   }
   fs::path dir_;
 };
@@ -65,6 +67,21 @@ TEST_F(TuneCli, AStepThatFitsNeitherWayIsAnErrorNamingJointLimitsAndStep) {
   EXPECT_THAT(r.err, HasSubstr("joint 'hinge'")) << r.out << r.err;
   EXPECT_THAT(r.err, HasSubstr("limits [-1, 0]"));
   EXPECT_THAT(r.err, HasSubstr("step of 1.5"));
+}
+
+// --conditions: every condition's metrics before and after; the verdict covers all of them.
+TEST_F(TuneCli, RobustTuningReportsEveryCondition) {
+  std::ofstream(dir_ / "conditions.yaml") << "conditions:\n  - payload: {link: arm, mass: 3}\n  - step_scale: 0.2\n";
+  const ProcessResult r = tune("-0.3", {"--conditions", (dir_ / "conditions.yaml").string()});
+  ASSERT_TRUE(r.started);
+  EXPECT_THAT(r.out, HasSubstr("in every condition")) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("condition nominal:"));
+  EXPECT_THAT(r.out, HasSubstr("condition payload 3 kg on arm:"));
+  EXPECT_THAT(r.out, HasSubstr("condition step x0.2:\n    before (NOT met) step -0.06 rad"));
+  std::ofstream(dir_ / "bad.yaml") << "conditions:\n  - payload: {link: arm, mass: 3}\n    stepscale: 2\n";
+  const ProcessResult bad = tune("-0.3", {"--conditions", (dir_ / "bad.yaml").string()});
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_THAT(bad.err, AllOf(HasSubstr("bad.yaml:3"), HasSubstr("unknown key 'stepscale'"))) << bad.out << bad.err;
 }
 
 }  // namespace

@@ -131,5 +131,122 @@ TEST_F(TunePendulum, AStepOutOfRangeBothWaysFailsNamingTheJoint) {
   }
 }
 
+
+// Robust tuning (`mechsim tune --robust`): gains tuned on the nominal step alone overshoot and
+// settle late with 3 kg more on the pendulum; tuned for the worst of the conditions they meet the
+// targets in all of them.
+TEST_F(TunePendulum, RobustGainsMeetTheTargetsUnderAPayloadWhereNominalOnesMissThem) {
+  setup_.step = 0.3;
+  setup_.max_evaluations = 80;
+  const TuneResult nominal = tune_joint(setup_);
+  ASSERT_TRUE(nominal.targets_met);
+  EXPECT_TRUE(nominal.conditions.empty());
+
+  TuneSetup loaded = setup_;
+  loaded.step = -0.3;  // the planned step
+  for (description::Link& l : loaded.robot.links)
+    if (l.name == "arm") l.inertial->mass += 3.0;
+  const StepMetrics with_payload = measure_step(loaded, nominal.controller, false, nominal.after);
+  const bool nominal_meets = with_payload.overshoot <= 5.0 && with_payload.settling_time >= 0 && with_payload.settling_time <= 0.3;
+  EXPECT_FALSE(nominal_meets) << "overshoot " << with_payload.overshoot << " %, settles at " << with_payload.settling_time;
+
+  setup_.robust = true;
+  setup_.conditions = {{"3 kg on the arm", 1.0, {}, "arm", 3.0}, {"small step", 0.2, {}, "", 0.0}};
+  const TuneResult robust = tune_joint(setup_);
+  ASSERT_EQ(robust.conditions.size(), 3u);
+  EXPECT_EQ(robust.conditions[0].name, "nominal");
+  EXPECT_EQ(robust.conditions[1].name, "3 kg on the arm");
+  EXPECT_DOUBLE_EQ(robust.conditions[2].after.step, -0.06);
+  for (const TuneResult::ConditionOutcome& c : robust.conditions) {
+    EXPECT_TRUE(c.met_after) << c.name << ": overshoot " << c.after.overshoot << " %, settles at " << c.after.settling_time;
+  }
+  EXPECT_TRUE(robust.targets_met);
+  // The payload condition is really loaded: the YAML's gains fare worse there than nominally.
+  EXPECT_GT(std::abs(robust.conditions[1].before.steady_state_error), std::abs(robust.conditions[0].before.steady_state_error));
+}
+
+// Gains that already meet the targets stay as they are (the search starts from raised gains and
+// would otherwise move them for nothing).
+TEST_F(TunePendulum, GainsThatAlreadyMeetTheTargetsAreKept) {
+  std::ofstream(file_) << "hinge_position_controller:\n"
+                          "  type: effort_controllers/JointPositionController\n"
+                          "  joint: hinge\n"
+                          "  pid: {p: 1450.0, i: 0.373, d: 70.9}\n";
+  setup_.step = 0.3;
+  setup_.max_evaluations = 20;
+  const TuneResult r = tune_joint(setup_);
+  ASSERT_TRUE(r.targets_met);
+  EXPECT_DOUBLE_EQ(r.after.p, 1450.0);
+  EXPECT_DOUBLE_EQ(r.after.i, 0.373);
+  EXPECT_DOUBLE_EQ(r.after.d, 70.9);
+}
+
+TEST_F(TunePendulum, DefaultRobustConditionsNameAStepTurnedBackIntoTheRange) {
+  setup_.step = 0.3;
+  setup_.robust = true;
+  const TuneResult r = tune_joint(setup_);
+  ASSERT_EQ(r.conditions.size(), 4u);  // nominal, small step, reversed, payload
+  EXPECT_THAT(r.conditions[2].name, AllOf(HasSubstr("reversed step"), HasSubstr("the other way")));
+  EXPECT_THAT(r.conditions[3].name, HasSubstr("payload 0.5 kg on arm"));
+}
+
+TEST_F(TunePendulum, APayloadOnAMissingLinkIsAnErrorNamingTheCondition) {
+  setup_.step = 0.3;
+  setup_.robust = true;
+  setup_.conditions = {{"in the gripper", 1.0, {}, "gripper", 1.0}};
+  try {
+    tune_joint(setup_);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), AllOf(HasSubstr("'in the gripper'"), HasSubstr("no link 'gripper'")));
+  }
+}
+
+TEST(TuneConditions, TheCc8sShippedFileReads) {
+  const std::vector<TuneCondition> c =
+      read_tune_conditions(std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/config/tune_conditions.yaml");
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_TRUE(c[1].world && c[1].world->soil.has_value());
+  EXPECT_EQ(c[2].world->name, "slope");
+}
+
+TEST(TuneConditions, AreReadWithTheirWorldsAndBadOnesNameFileLineAndKey) {
+  const fs::path file = fs::temp_directory_path() / ("mechsim_tune_conditions_" + std::to_string(::getpid()) + ".yaml");
+  struct Removed {
+    fs::path path;
+    ~Removed() { fs::remove(path); }
+  } removed{file};
+  std::ofstream(file) << "conditions:\n"
+                         "  - step_scale: 0.5\n"
+                         "  - name: on the slope\n"
+                         "    world: {name: slope, slope_deg: 12}\n"
+                         "  - payload: {link: arm, mass: 2}\n";
+  const std::vector<TuneCondition> c = read_tune_conditions(file.string());
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].name, "step x0.5");
+  EXPECT_DOUBLE_EQ(c[0].step_scale, 0.5);
+  EXPECT_EQ(c[1].name, "on the slope");
+  ASSERT_TRUE(c[1].world.has_value());
+  EXPECT_EQ(c[1].world->name, "slope");
+  EXPECT_DOUBLE_EQ(c[1].world->slope_deg.value_or(0.0), 12.0);
+  EXPECT_EQ(c[2].payload_link, "arm");
+  EXPECT_DOUBLE_EQ(c[2].payload_mass, 2.0);
+
+  auto error_of = [&](const std::string& text) {
+    std::ofstream(file) << text;
+    try {
+      read_tune_conditions(file.string());
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(error_of("conditions:\n  - step_scale: 0.5\n    payloads: {}\n"),
+              AllOf(HasSubstr(file.string() + ":3"), HasSubstr("unknown key 'payloads'")));
+  EXPECT_THAT(error_of("conditions: []\n"), HasSubstr("non-empty list 'conditions'"));
+  EXPECT_THAT(error_of("conditions:\n  - payload: {link: arm, mass: -1}\n"), AllOf(HasSubstr(":2"), HasSubstr("mass > 0")));
+  EXPECT_THAT(error_of("conditions:\n  - step_scale: 0\n"), HasSubstr("non-zero scale"));
+}
+
 }  // namespace
 }  // namespace mechsim::sim
