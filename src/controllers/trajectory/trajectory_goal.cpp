@@ -62,7 +62,9 @@ TrajectoryResultCode TrajectoryChannel::validate(const JointTrajectory& t, const
     error = "header.stamp (start_time) " + num(t.start_time) + " is not a finite time >= 0";
     return Code::InvalidGoal;
   }
-  if (t.points.empty()) return Code::Successful;  // a stop request; the joint names do not matter
+  // An empty trajectory is a stop request. On the command topic its joint names do not matter; an
+  // action goal's are checked first, as joint_trajectory_controller's goal callback does.
+  if (t.points.empty() && goal == nullptr) return Code::Successful;
   if (t.joint_names.empty()) {
     error = "the trajectory names no joints";
     return Code::InvalidJoints;
@@ -83,6 +85,7 @@ TrajectoryResultCode TrajectoryChannel::validate(const JointTrajectory& t, const
             std::to_string(joints.size()) + " joints and partial goals are not allowed (allow_partial_joints_goal)";
     return Code::InvalidJoints;
   }
+  if (t.points.empty()) return Code::Successful;  // an action goal's stop request
   if (t.points.size() > config_.max_points) {
     error = "the trajectory has " + std::to_string(t.points.size()) + " points; this controller holds at most " +
             std::to_string(config_.max_points) + " (parameter max_trajectory_points)";

@@ -87,6 +87,22 @@ TEST_F(GoalPortTest, InvalidJoints) {
   expect_rejected(g, Code::InvalidJoints, "names no joints");
 }
 
+// A goal without points asks the controller to stop and hold; its joint names must still be the
+// controller's (joint_trajectory_controller checks them before anything else).
+TEST_F(GoalPortTest, AGoalWithoutPointsIsAStopRequestOnlyForTheControllersJoints) {
+  FollowJointTrajectoryGoal g;
+  g.trajectory.joint_names = {"zz"};
+  expect_rejected(g, Code::InvalidJoints, "'zz' is not a joint of this controller");
+  g.trajectory.joint_names.clear();
+  expect_rejected(g, Code::InvalidJoints, "names no joints");
+  g.trajectory.joint_names = {"b", "a"};
+  const GoalSubmission s = port.submit(g);
+  EXPECT_TRUE(s.accepted) << s.result.error_string;
+  const TrajectoryRequest* r = channel.take_from_rt();
+  ASSERT_NE(r, nullptr);
+  EXPECT_TRUE(r->stop);
+}
+
 TEST_F(GoalPortTest, InvalidGoalSizes) {
   auto g = valid_goal();
   g.trajectory.points[1].positions = {1.0};
