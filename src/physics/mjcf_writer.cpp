@@ -200,7 +200,7 @@ class Writer {
     }
   }
 
-  // Fixed boxes as world geoms, free boxes as bodies with a free joint (after the robot's bodies,
+  // Fixed objects (boxes, cylinders, spheres) as world geoms, free ones as bodies with a free joint (after the robot's bodies,
   // so that the robot's root joint stays the model's first free joint).
   void write_boxes() {
     const ContactDefaults& c = options_.contact;
@@ -212,18 +212,33 @@ class Writer {
       if (!names.insert(b.name).second) throw PhysicsError(where + ": the name is used twice");
       if (!(b.size.x > 0.0 && b.size.y > 0.0 && b.size.z > 0.0) || !std::isfinite(b.size.x + b.size.y + b.size.z))
         throw PhysicsError(where + ": size must be finite and > 0 along x, y and z (m)");
+      if (b.shape != WorldBox::Shape::Box && b.size.x != b.size.y)
+        throw PhysicsError(where + ": a cylinder's or sphere's size must be equal along x and y (its diameter)");
       if (!b.fixed && !(b.mass > 0.0 && std::isfinite(b.mass))) throw PhysicsError(where + ": mass must be finite and > 0 (kg)");
-      const std::string geom = "<geom name=\"box:" + escape(b.name) + "\" type=\"box\" size=\"" +
-                               vec({b.size.x / 2, b.size.y / 2, b.size.z / 2}) +
+      const double r = b.size.x / 2;
+      std::string type = "box", size = vec({b.size.x / 2, b.size.y / 2, b.size.z / 2});
+      // Solid bodies' inertia about their centre (the compiler takes no inertia from geoms).
+      const double m = b.mass, xx = b.size.x * b.size.x, yy = b.size.y * b.size.y, zz = b.size.z * b.size.z;
+      description::Vec3 inertia{m * (yy + zz) / 12.0, m * (xx + zz) / 12.0, m * (xx + yy) / 12.0};
+      if (b.shape == WorldBox::Shape::Cylinder) {
+        type = "cylinder";
+        size = num(r) + " " + num(b.size.z / 2);
+        const double side = m * (3.0 * r * r + zz) / 12.0;
+        inertia = {side, side, m * r * r / 2.0};
+      } else if (b.shape == WorldBox::Shape::Sphere) {
+        type = "sphere";
+        size = num(r);
+        const double i = 0.4 * m * r * r;
+        inertia = {i, i, i};
+      }
+      const std::string geom = "<geom name=\"box:" + escape(b.name) + "\" type=\"" + type + "\" size=\"" + size +
                                "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" + friction + "\"";
       if (b.fixed) {
         x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
       } else {
-        // Solid cuboid: I_xx = m (y^2 + z^2) / 12 and so on (the compiler takes no inertia from geoms).
-        const double k = b.mass / 12.0, xx = b.size.x * b.size.x, yy = b.size.y * b.size.y, zz = b.size.z * b.size.z;
         x_ << "    <body name=\"box:" << escape(b.name) << "\"" << pose_attrs(b.pose) << ">\n      <freejoint name=\"box:"
            << escape(b.name) << "\"/>\n      <inertial pos=\"0 0 0\" mass=\"" << num(b.mass) << "\" diaginertia=\""
-           << vec({k * (yy + zz), k * (xx + zz), k * (xx + yy)}) << "\"/>\n      " << geom << "/>\n    </body>\n";
+           << vec(inertia) << "\"/>\n      " << geom << "/>\n    </body>\n";
       }
     }
   }

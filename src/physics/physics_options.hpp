@@ -41,15 +41,20 @@ enum class DifferentialMode {
   PluginLaw,
 };
 
-// A box in the world (an object to grasp, push or bump into). A fixed box is a world geom; a free
-// one is a body with a free joint, after the robot's (the robot's root stays the first free
-// joint). Both collide with the robot and the ground, with the ground's friction; contacts name
-// them "box:<name>".
+// An object in the world (to grasp, push or bump into): a box, a cylinder or a sphere (the
+// shapes of Gazebo's SDF worlds). A fixed one is a world geom; a free one is a body with a free
+// joint, after the robot's (the robot's root stays the first free joint). Both collide with the
+// robot and the ground, with the ground's friction; contacts name them "box:<name>" whatever the
+// shape (the name scenarios and contact sensors already use).
 struct WorldBox {
-  std::string name;                      // unique among the world's boxes
-  description::Pose pose;                // X_W<box centre>
-  description::Vec3 size{0.1, 0.1, 0.1};  // full edge lengths along the box's x, y, z (m), > 0
-  double mass = 1.0;                     // kg, > 0; free boxes only (uniform density)
+  enum class Shape { Box, Cylinder, Sphere };
+  std::string name;                      // unique among the world's objects
+  description::Pose pose;                // X_W<centre>; a cylinder's axis is its z
+  // The extents along the object's x, y, z (m), > 0: a box's edges; a cylinder's diameter,
+  // diameter (equal) and length; a sphere's diameter three times.
+  description::Vec3 size{0.1, 0.1, 0.1};
+  Shape shape = Shape::Box;
+  double mass = 1.0;                     // kg, > 0; free objects only (uniform density)
   bool fixed = true;
 };
 

@@ -329,6 +329,11 @@ void SensorReport::laser_picture(ScenarioResult& result) {
   }
   int object = 1;
   for (const physics::WorldBox& b : sim_.world().spec.boxes) {
+    if (b.shape != physics::WorldBox::Shape::Box) {  // an upright cylinder's or a sphere's footprint
+      gp << "set object " << object++ << " circle at " << b.pose.position.x << "," << b.pose.position.y << " size "
+         << b.size.x / 2 << " fillstyle solid 0.35 fillcolor rgb '#808080' front\n";
+      continue;
+    }
     // The box's footprint, turned by its yaw.
     const double yaw = yaw_of(b.pose.orientation), c = std::cos(yaw), s = std::sin(yaw);
     gp << "set object " << object++ << " polygon from ";

@@ -13,15 +13,32 @@ namespace mechsim::sim {
 
 namespace {
 
-bool only_boxes(const description::RobotModel& robot) {
+// Boxes, cylinders and spheres: what the world's objects can be (physics::WorldBox).
+bool only_primitives(const description::RobotModel& robot) {
   for (const description::Link& link : robot.links) {
     for (const description::Collision& c : link.collisions)
-      if (c.geometry.type != description::GeometryType::Box) return false;
+      if (c.geometry.type == description::GeometryType::Mesh) return false;
   }
   return true;
 }
 
-// Gazebo's world file: the ground and boxes the physics can hold (sdf_model.hpp says how models
+void set_shape(const description::Geometry& g, physics::WorldBox& object) {
+  switch (g.type) {
+    case description::GeometryType::Cylinder:
+      object.shape = physics::WorldBox::Shape::Cylinder;
+      object.size = {2.0 * g.radius, 2.0 * g.radius, g.length};
+      break;
+    case description::GeometryType::Sphere:
+      object.shape = physics::WorldBox::Shape::Sphere;
+      object.size = {2.0 * g.radius, 2.0 * g.radius, 2.0 * g.radius};
+      break;
+    default:
+      object.shape = physics::WorldBox::Shape::Box;
+      object.size = g.size;
+  }
+}
+
+// Gazebo's world file: the ground and the boxes, cylinders and spheres the physics can hold (sdf_model.hpp says how models
 // map to robots; a model's root link frame is its pose times root_offset).
 World make_sdf_world(const std::string& path) {
   description::SdfWorld sdf;
@@ -55,7 +72,7 @@ World make_sdf_world(const std::string& path) {
     const bool has_links = !model.robot.links.empty() &&
                            std::any_of(model.robot.links.begin(), model.robot.links.end(),
                                        [](const description::Link& l) { return !l.collisions.empty(); });
-    if (has_links && only_boxes(model.robot) && (model.is_static || model.robot.links.size() == 1)) {
+    if (has_links && only_primitives(model.robot) && (model.is_static || model.robot.links.size() == 1)) {
       const description::Pose X_WR = physics::compose(model.pose, model.root_offset);
       const description::Link& root = model.robot.links.front();
       for (const description::Link& link : model.robot.links) {
@@ -71,7 +88,7 @@ World make_sdf_world(const std::string& path) {
               if (j.child_link == link.name) X_WL = physics::compose(X_WR, j.origin);
           }
           box.pose = physics::compose(X_WL, c.origin);
-          box.size = c.geometry.size;
+          set_shape(c.geometry, box);
           box.fixed = model.is_static;
           if (!model.is_static) box.mass = link.inertial && link.inertial->mass > 0.0 ? link.inertial->mass : 1.0;
           world.spec.boxes.push_back(box);
@@ -80,8 +97,8 @@ World make_sdf_world(const std::string& path) {
       used = true;
     } else if (has_links) {
       world.not_simulated.push_back("model '" + model.name +
-                                    "' (mechsim's world holds the ground and boxes; other shapes and articulated "
-                                    "models need a robot of their own)");
+                                    "' (mechsim's world holds the ground, boxes, cylinders and spheres; meshes and "
+                                    "articulated models need a robot of their own)");
     }
     if (used) world.sdf_models.push_back(model.name);
   }
