@@ -376,17 +376,43 @@ std::vector<physics::WorldBox> read_boxes(const Params& list) {
   if (!list.is_list()) fail(list, "expected a list of boxes");
   std::vector<physics::WorldBox> boxes;
   for (const Params& b : list.items()) {
-    only_keys(b, {"name", "size", "x", "y", "z", "roll", "pitch", "yaw", "quat", "fixed", "mass"});
+    only_keys(b, {"name", "shape", "size", "radius", "length", "x", "y", "z", "roll", "pitch", "yaw", "quat", "fixed", "mass"});
     physics::WorldBox box;
     box.name = b.get<std::string>("name");
     for (const physics::WorldBox& other : boxes) {
       if (other.name == box.name) fail(b.child("name"), "box '" + box.name + "' is named twice");
     }
-    const auto size = values_of(b, "size", 3);
-    for (double v : size) {
-      if (!(v > 0.0)) fail(b.child("size"), "edge lengths must be > 0 m");
+    const std::string shape = b.get<std::string>("shape", "box");
+    auto positive = [&](const char* key, const char* what) {
+      const double v = finite(b, key, 0.0);
+      if (!b.has(key)) fail(b, std::string("a ") + shape + " needs '" + key + "' (" + what + ")");
+      if (!(v > 0.0)) fail(b.child(key), "must be > 0 m");
+      return v;
+    };
+    auto none_of = [&](std::initializer_list<const char*> keys) {
+      for (const char* k : keys)
+        if (b.has(k)) fail(b.child(k), "a " + shape + " takes no '" + k + "'");
+    };
+    if (shape == "box") {
+      none_of({"radius", "length"});
+      const auto size = values_of(b, "size", 3);
+      for (double v : size) {
+        if (!(v > 0.0)) fail(b.child("size"), "edge lengths must be > 0 m");
+      }
+      box.size = {size[0], size[1], size[2]};
+    } else if (shape == "cylinder") {
+      none_of({"size"});
+      const double d = 2.0 * positive("radius", "m"), l = positive("length", "m, along its z axis");
+      box.shape = physics::WorldBox::Shape::Cylinder;
+      box.size = {d, d, l};
+    } else if (shape == "sphere") {
+      none_of({"size", "length"});
+      const double d = 2.0 * positive("radius", "m");
+      box.shape = physics::WorldBox::Shape::Sphere;
+      box.size = {d, d, d};
+    } else {
+      fail(b.child("shape"), "expected box, cylinder or sphere, got '" + shape + "'");
     }
-    box.size = {size[0], size[1], size[2]};
     box.pose.position = {finite(b, "x", 0.0), finite(b, "y", 0.0), finite(b, "z", 0.0)};
     if (b.has("quat")) {
       if (b.has("roll") || b.has("pitch") || b.has("yaw")) fail(b.child("quat"), "give quat or roll/pitch/yaw, not both");

@@ -22,6 +22,8 @@
 //       - {name: block, size: [0.03, 0.04, 0.03], x: 0.8, y: -0.2, z: 0.7,   # m (full edges; centre)
 //          roll: 0, pitch: 0, yaw: 0, fixed: true, mass: 1.0}                 # rad; kg (free boxes)
 //          # or an orientation quaternion instead of roll/pitch/yaw: quat: [w, x, y, z]
+//       - {name: drum, shape: cylinder, radius: 0.2, length: 0.6, x: 2, z: 0.3}  # axis along z
+//       - {name: ball, shape: sphere, radius: 0.1, x: 1, z: 0.5, fixed: false}
 //   spawn:
 //     x: 0, y: 0, z: 0.02, yaw: 0     # m, rad (roll, pitch, yaw) of the root link. On a height
 //                                     # field (mars_yard_2024, a heightmap file) z is measured

@@ -126,6 +126,14 @@ checks:
   EXPECT_DOUBLE_EQ(s.boxes[0].mass, 2.0);
   EXPECT_TRUE(s.boxes[1].fixed);
   EXPECT_DOUBLE_EQ(s.boxes[1].pose.orientation.w, 1.0);  // normalised
+  const Scenario round = load_scenario(write("duration: 1\nworld: {boxes: [{name: drum, shape: cylinder, radius: 0.2, length: 0.6},"
+                                             " {name: ball, shape: sphere, radius: 0.1}]}\n"));
+  ASSERT_EQ(round.boxes.size(), 2u);
+  EXPECT_EQ(round.boxes[0].shape, physics::WorldBox::Shape::Cylinder);
+  EXPECT_DOUBLE_EQ(round.boxes[0].size.x, 0.4);
+  EXPECT_DOUBLE_EQ(round.boxes[0].size.z, 0.6);
+  EXPECT_EQ(round.boxes[1].shape, physics::WorldBox::Shape::Sphere);
+  EXPECT_DOUBLE_EQ(round.boxes[1].size.y, 0.2);
   EXPECT_DOUBLE_EQ(s.initial_joints.at("j2"), -0.5);
   ASSERT_EQ(s.timeline.size(), 3u);
   EXPECT_EQ(s.timeline[0].kind, TimelineEvent::Kind::Gripper);  // sorted by time
@@ -234,6 +242,14 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCase{"box_quat_and_yaw", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], yaw: 1, quat: [1, 0, 0, 0]}]}\n",
                             "give quat or roll/pitch/yaw, not both"},
                     BadCase{"box_typo", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], heigth: 2}]}\n", "unknown key 'heigth'"},
+                    BadCase{"box_shape", "duration: 1\nworld: {boxes: [{name: a, shape: cone, radius: 1}]}\n",
+                            "/world/boxes[0]/shape: expected box, cylinder or sphere, got 'cone'"},
+                    BadCase{"cylinder_no_length", "duration: 1\nworld: {boxes: [{name: a, shape: cylinder, radius: 1}]}\n",
+                            "a cylinder needs 'length'"},
+                    BadCase{"sphere_size", "duration: 1\nworld: {boxes: [{name: a, shape: sphere, radius: 1, size: [1, 1, 1]}]}\n",
+                            "/world/boxes[0]/size: a sphere takes no 'size'"},
+                    BadCase{"sphere_radius", "duration: 1\nworld: {boxes: [{name: a, shape: sphere, radius: -1}]}\n",
+                            "/world/boxes[0]/radius: must be > 0 m"},
                     BadCase{"event_typo", "duration: 1\ntimeline:\n  - {at: 0, controller: c, comand: 1}\n", "unknown key 'comand'"},
                     BadCase{"twist_typo", "duration: 1\ntimeline:\n  - {at: 0, controller: c, twist: {vz: 1}}\n", "twist/vz: unknown key 'vz'"},
                     BadCase{"reach_typo", "duration: 1\nchecks:\n  - {reach: {x: 1, y: 2, within: 0.5, by: 10, withn: 1}}\n",
