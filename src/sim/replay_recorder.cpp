@@ -79,7 +79,7 @@ void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string
   j["waypoints"] = waypoints_;
   nlohmann::ordered_json plots = nlohmann::ordered_json::array();
   for (const std::string& f : report_files) {
-    if (f.size() < 4 || f.compare(f.size() - 4, 4, ".png") != 0 || f.find('/') != std::string::npos) continue;
+    if (f.size() < 4 || f.compare(f.size() - 4, 4, ".png") != 0 || f.find("..") != std::string::npos) continue;
     nlohmann::ordered_json p = {{"file", "../" + f}};
     const std::string axes = f.substr(0, f.size() - 4) + ".axes.jsonl";
     if (fs::exists(dir_.parent_path() / axes)) p["axes"] = "../" + axes;

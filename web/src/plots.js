@@ -22,7 +22,10 @@ export async function buildPlots(container, plots) {
     overlay.className = 'overlay';
     const caption = document.createElement('figcaption');
     caption.textContent = file;
-    figure.append(img, overlay, caption);
+    const frame = document.createElement('div');
+    frame.className = 'frame';
+    frame.append(img, overlay);
+    figure.append(frame, caption);
     container.append(figure);
     const panels = plot.axes ? await readAxes(reportPath(plot.axes)) : [];
     const isMap = file === 'path.png';

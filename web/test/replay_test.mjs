@@ -111,7 +111,7 @@ function changed(a, b) {
 }
 
 async function openPage(url, errors) {
-  const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+  const page = await browser.newPage();
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.goto(url);
@@ -136,11 +136,13 @@ try {
   if (!existsSync(join(report, 'replay', 'manifest.json'))) throw new Error(`mechsim run failed: ${r.stderr}`);
 
   const view = await startView(report);
-  browser = await chromium.launch({
+  // A fresh profile (--user-data-dir) in the test's folder.
+  browser = await chromium.launchPersistentContext(join(work, 'chromium-profile'), {
     executablePath: chromiumPath,
     headless: true,
+    viewport: { width: 1280, height: 720 },
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-      '--disable-component-update', '--disable-sync', `--user-data-dir=${join(work, 'chromium-profile')}`],
+      '--disable-component-update', '--disable-sync'],
   });
   const errors = [];
   const page = await openPage(`${view.url}?follow=0`, errors);
