@@ -68,9 +68,9 @@ async function main() {
   view.append(renderer.domElement);
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xdfe7ee);
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5a48, 1.6));
-  const sun = new THREE.DirectionalLight(0xffffff, 1.8);
-  sun.position.set(-5, -8, 12);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5a48, 1.1));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+  sun.position.set(4, -8, 10);
   scene.add(sun);
 
   const world = await buildWorld(data.worldJson);
@@ -85,14 +85,15 @@ async function main() {
     const o = k * stride + 1 + 7 * rootIndex;
     return new THREE.Vector3(poses[o], poses[o + 1], poses[o + 2]);
   };
-  // Start looking at the robot from behind-left and above, at a distance from its size.
+  // Start looking at the robot's right side from a little ahead and above, at a distance from
+  // its size (a rover driving +x crosses the view; an arm reaching forward shows its reach).
   const box = new THREE.Box3();
   poseRobot(robot.groups, poses, stride, 0);
   box.setFromObject(robot.root);
   const size = Math.max(0.5, box.getSize(new THREE.Vector3()).length());
   const start = box.getCenter(new THREE.Vector3());
   controls.target.copy(start);
-  camera.position.copy(start).add(new THREE.Vector3(-1.3 * size, -1.6 * size, 0.9 * size));
+  camera.position.copy(start).add(new THREE.Vector3(0.55 * size, -1.25 * size, 0.6 * size));
   controls.update();
 
   const params = new URLSearchParams(window.location.search);

@@ -81,9 +81,9 @@ export async function buildWorld(worldJson) {
   let heightAt = () => 0;
   if (worldJson.ground_plane) {
     const plane = new THREE.Mesh(new THREE.PlaneGeometry(200, 200),
-      new THREE.MeshStandardMaterial({ color: 0x8a8f94, roughness: 1 }));
+      new THREE.MeshStandardMaterial({ color: 0x9aa0a6, roughness: 1 }));
     group.add(plane);
-    const grid = new THREE.GridHelper(200, 200, 0x5b6066, 0x70757a);
+    const grid = new THREE.GridHelper(200, 200, 0x3d4247, 0x5d6268);
     grid.rotateX(Math.PI / 2);
     grid.position.z = 0.001;
     group.add(grid);
@@ -121,7 +121,7 @@ export function buildTraces(poses, stride, frames, rootIndex, waypoints, heightA
   path.setAttribute('position', new THREE.BufferAttribute(points, 3));
   group.add(new THREE.Line(path, new THREE.LineBasicMaterial({ color: 0x0050ff })));
   if (waypoints.length > 0) {
-    const marker = new THREE.SphereGeometry(0.12, 16, 10);
+    const marker = new THREE.SphereGeometry(0.15, 16, 10);
     const green = new THREE.MeshStandardMaterial({ color: 0x00c000 });
     const route = [];
     for (const [x, y] of waypoints) {

@@ -55,6 +55,15 @@ constexpr const char* kControllers = R"(c:
     pid: {p: 200.0, d: 5.0, i: 0.0}
 )";
 
+struct Q {
+  double w, x, y, z;
+};
+Q mul(const Q& a, const Q& b) {
+  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+Q conj(const Q& q) { return {q.w, -q.x, -q.y, -q.z}; }
+
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);
   std::stringstream text;
@@ -76,7 +85,7 @@ class ReplayRecorderTest : public testing::Test {
     std::ofstream(dir_ / "s.yaml") << "name: arm_replay\nrobot: {description: arm.urdf}\n"
                                    << "controllers: {file: controllers.yaml, namespace: c, start: [hinge_controller]}\n"
                                    << "spawn: {z: 0.05}\nduration: 1.0\nrecord_rate: 20\n" << extra
-                                   << "timeline:\n  - {at: 0.0, controller: hinge_controller, command: 0.8}\n";
+                                   << "timeline:\n  - {at: 0.1, controller: hinge_controller, command: 0.8}\n";
     RunOptions options;
     options.output_dir = (dir_ / "out").string();
     options.plots = false;
@@ -103,8 +112,7 @@ TEST_F(ReplayRecorderTest, FramesHoldEachLinksWorldPoseAtTheirTime) {
   for (std::size_t k = 0; k < 20; ++k) EXPECT_NEAR(poses[k * stride], 0.05 * static_cast<double>(k), 1e-6);
   EXPECT_NEAR(poses[20 * stride], 0.999, 1e-6);
 
-  // joints.csv at the same instants (record_rate 20): the arm's pitch relative to the base is
-  // the hinge angle, and its origin sits 0.3 m above the base's.
+  // joints.csv at the same instants (record_rate 20).
   std::ifstream joints(dir_ / "out" / "joints.csv");
   std::string line;
   std::getline(joints, line);
@@ -119,10 +127,18 @@ TEST_F(ReplayRecorderTest, FramesHoldEachLinksWorldPoseAtTheirTime) {
     ASSERT_NEAR(f[0], std::stod(t), 1e-6) << "row " << row;
     const float* base = f + 1;
     const float* arm = f + 8;
-    // Base level (it rests on the ground): the arm's quaternion is a rotation about y by q.
-    const double pitch = 2.0 * std::atan2(static_cast<double>(arm[5]), static_cast<double>(arm[3]));
+    // The arm's pose in the base's frame (the base rocks on the ground as the arm swings): a
+    // rotation about y by the hinge angle, its origin 0.3 m up the base's z.
+    const Q qb{base[3], base[4], base[5], base[6]}, qa{arm[3], arm[4], arm[5], arm[6]};
+    const Q rel = mul(conj(qb), qa);
+    const double pitch = 2.0 * std::atan2(rel.y, rel.w);
     EXPECT_NEAR(pitch, std::stod(q), 2e-3) << "t = " << t;
-    EXPECT_NEAR(arm[2] - base[2], 0.3, 2e-3) << "t = " << t;
+    EXPECT_NEAR(std::hypot(rel.x, rel.z), 0.0, 1e-3) << "t = " << t;
+    const Q d{0.0, arm[0] - base[0], arm[1] - base[1], arm[2] - base[2]};
+    const Q local = mul(mul(conj(qb), d), qb);
+    EXPECT_NEAR(local.x, 0.0, 1e-3) << "t = " << t;
+    EXPECT_NEAR(local.y, 0.0, 1e-3) << "t = " << t;
+    EXPECT_NEAR(local.z, 0.3, 1e-3) << "t = " << t;
     moved = std::max(moved, std::abs(pitch));
     ++row;
   }
