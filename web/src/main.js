@@ -1,7 +1,8 @@
 // mechsim's replay page: plays a scenario report's replay/ folder in 3D (three.js), with
 // play/pause/scrub/speed, a follow-the-robot camera and the report's plots linked to the time.
 // Test hooks: window.mechsimReplay ({ready, error, duration, frames, setTime(t), time()}).
-// URL parameters: follow=0 starts with a fixed camera, t=SECONDS starts at that time.
+// URL parameters: follow=0 starts with a fixed camera, t=SECONDS starts at that time, zoom=F
+// brings the first camera F times closer (0.3: three times farther).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { readBytes, readJson, readStatus } from './data.js';
@@ -93,10 +94,11 @@ async function main() {
   const size = Math.max(0.5, box.getSize(new THREE.Vector3()).length());
   const start = box.getCenter(new THREE.Vector3());
   controls.target.copy(start);
-  camera.position.copy(start).add(new THREE.Vector3(0.55 * size, -1.25 * size, 0.6 * size));
+  const params = new URLSearchParams(window.location.search);
+  const zoom = Math.min(20, Math.max(0.05, Number(params.get('zoom') ?? 1) || 1));
+  camera.position.copy(start).add(new THREE.Vector3(0.55 * size, -1.25 * size, 0.6 * size).multiplyScalar(1 / zoom));
   controls.update();
 
-  const params = new URLSearchParams(window.location.search);
   const slider = document.getElementById('time');
   const clock = document.getElementById('clock');
   const playButton = document.getElementById('play');
