@@ -54,7 +54,7 @@ void ReplayRecorder::observe(const Simulation& sim, std::uint64_t last_tick) {
   ++frames_;
 }
 
-void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string>& report_files) {
+void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string>& report_files, bool has_odometry) {
   if (!active_) return;
   poses_.close();
   if (!poses_) throw ScenarioError("replay: cannot write " + (dir_ / "poses.bin").string());
@@ -86,6 +86,10 @@ void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string
     plots.push_back(p);
   }
   j["plots"] = plots;
+  // base.csv's odom_x, odom_y (world frame, m) at record_rate: the page's odometry trace.
+  if (has_odometry && fs::exists(dir_.parent_path() / "base.csv")) {
+    j["odometry"] = {{"file", "../base.csv"}, {"x", "odom_x"}, {"y", "odom_y"}};
+  }
   std::ofstream out(dir_ / "manifest.json");
   out << j.dump(1) << '\n';
   out.close();

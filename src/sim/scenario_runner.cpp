@@ -510,7 +510,7 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     }
     if (replay.active()) result.files.push_back("replay/manifest.json");
     write_report(s, *sim, recorder, result, options);
-    replay.finish(*sim, result.files);
+    replay.finish(*sim, result.files, result.has_odometry);
   }
   return result;
 }

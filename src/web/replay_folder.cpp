@@ -119,6 +119,9 @@ void check(const fs::path& report, ReplayFolder& out) {
                     std::to_string(cells * sizeof(float))};
     }
   }
+  if (auto odometry = manifest.find("odometry"); odometry != manifest.end() && odometry->is_object()) {
+    need_file(report, "replay/" + odometry->value("file", ""), files);
+  }
   for (const json& plot : manifest.value("plots", json::array())) {
     for (const char* key : {"file", "axes"}) {
       if (plot.contains(key) && plot[key].is_string()) need_file(report, "replay/" + plot[key].get<std::string>(), files);

@@ -5,9 +5,9 @@
 // brings the first camera F times closer (0.3: three times farther).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { readBytes, readJson, readStatus } from './data.js';
+import { readBytes, readJson, readStatus, readText, reportPath } from './data.js';
 import { buildRobot, poseRobot } from './robot.js';
-import { buildWorld, buildTraces } from './world.js';
+import { buildWorld, buildTraces, csvColumns } from './world.js';
 import { buildPlots, updatePlots } from './plots.js';
 
 const FORMAT = 'mechsim-replay';
@@ -78,7 +78,9 @@ async function main() {
   scene.add(world.group);
   const robot = await buildRobot(data.robotJson, manifest.links);
   scene.add(robot.root);
-  scene.add(buildTraces(poses, stride, frames, rootIndex, manifest.waypoints ?? [], world.heightAt));
+  const odometry = manifest.odometry
+    ? csvColumns(await readText(reportPath(manifest.odometry.file)), manifest.odometry.x, manifest.odometry.y) : [];
+  scene.add(buildTraces(poses, stride, frames, rootIndex, manifest.waypoints ?? [], world.heightAt, odometry));
 
   const camera = new THREE.PerspectiveCamera(50, 1, 0.02, 2000);
   const controls = new OrbitControls(camera, renderer.domElement);

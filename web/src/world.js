@@ -109,8 +109,22 @@ export async function buildWorld(worldJson) {
   return { group, heightAt };
 }
 
-// The root link's path over the whole run (blue) and the route's waypoints (green).
-export function buildTraces(poses, stride, frames, rootIndex, waypoints, heightAt) {
+// (x, y) columns of a CSV file's text (header row first), as numbers.
+export function csvColumns(text, xName, yName) {
+  const lines = text.split('\n').filter((l) => l.trim());
+  const header = lines[0].split(',');
+  const ix = header.indexOf(xName);
+  const iy = header.indexOf(yName);
+  if (ix < 0 || iy < 0) throw new Error(`no columns ${xName}, ${yName} in the odometry file`);
+  return lines.slice(1).map((l) => {
+    const cells = l.split(',');
+    return [Number(cells[ix]), Number(cells[iy])];
+  }).filter(([x, y]) => Number.isFinite(x) && Number.isFinite(y));
+}
+
+// The root link's path over the whole run (blue), the odometry's (magenta, dashed, on the
+// ground) and the route's waypoints (green).
+export function buildTraces(poses, stride, frames, rootIndex, waypoints, heightAt, odometry = []) {
   const group = new THREE.Group();
   const points = new Float32Array(frames * 3);
   for (let k = 0; k < frames; k++) {
@@ -120,6 +134,11 @@ export function buildTraces(poses, stride, frames, rootIndex, waypoints, heightA
   const path = new THREE.BufferGeometry();
   path.setAttribute('position', new THREE.BufferAttribute(points, 3));
   group.add(new THREE.Line(path, new THREE.LineBasicMaterial({ color: 0x0050ff })));
+  if (odometry.length > 1) {
+    const points = odometry.map(([x, y]) => new THREE.Vector3(x, y, heightAt(x, y) + 0.04));
+    group.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(points),
+      new THREE.LineDashedMaterial({ color: 0xff00ff, dashSize: 0.15, gapSize: 0.1 })).computeLineDistances());
+  }
   if (waypoints.length > 0) {
     const marker = new THREE.SphereGeometry(0.15, 16, 10);
     const green = new THREE.MeshStandardMaterial({ color: 0x00c000 });

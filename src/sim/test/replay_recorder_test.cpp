@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -159,6 +160,50 @@ TEST_F(ReplayRecorderTest, FramesHoldEachLinksWorldPoseAtTheirTime) {
   std::stringstream urdf_text;
   urdf_text << urdf.rdbuf();
   EXPECT_NE(urdf_text.str().find("<joint name=\"hinge\""), std::string::npos);
+}
+
+// A binary STL tetrahedron (4 facets) as a mesh file.
+std::string tetrahedron_stl() {
+  std::string bytes(80, '\0');
+  const std::uint32_t n = 4;
+  bytes.append(reinterpret_cast<const char*>(&n), 4);
+  const float v[4][3] = {{0, 0, 0}, {0.1f, 0, 0}, {0, 0.1f, 0}, {0, 0, 0.1f}};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const auto& f : faces) {
+    const float normal[3] = {0, 0, 0};
+    bytes.append(reinterpret_cast<const char*>(normal), 12);
+    for (int k : f) bytes.append(reinterpret_cast<const char*>(v[k]), 12);
+    bytes.append(2, '\0');
+  }
+  return bytes;
+}
+
+TEST_F(ReplayRecorderTest, MeshesAreCopiedBesideTheRobot) {
+  fs::create_directories(dir_ / "pkg" / "meshes");
+  const std::string stl = tetrahedron_stl();
+  std::ofstream(dir_ / "pkg" / "meshes" / "tet.stl", std::ios::binary) << stl;
+  std::ofstream(dir_ / "mesh.urdf") << R"(<robot name="m"><link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><geometry><mesh filename="package://pkg/meshes/tet.stl" scale="2 2 2"/></geometry></visual>
+    <visual><geometry><mesh filename="package://pkg/meshes/missing.stl"/></geometry></visual>
+    <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision></link></robot>)";
+  std::ofstream(dir_ / "m.yaml") << "robot: {description: mesh.urdf, packages: {pkg: pkg}, lenient: true}\nspawn: {z: 0.1}\nduration: 0.1\n";
+  RunOptions options;
+  options.output_dir = (dir_ / "out").string();
+  options.plots = false;
+  const ScenarioResult r = run_scenario(load_scenario((dir_ / "m.yaml").string()), options);
+  ASSERT_TRUE(r.completed) << r.error;
+  const nlohmann::json robot = read_json(dir_ / "out" / "replay" / "robot.json");
+  ASSERT_EQ(robot["links"][0]["visuals"].size(), 1u) << robot.dump();
+  const nlohmann::json& mesh = robot["links"][0]["visuals"][0];
+  EXPECT_EQ(mesh["type"], "mesh");
+  EXPECT_EQ(mesh["scale"], (nlohmann::json{2.0, 2.0, 2.0}));
+  std::ifstream copied(dir_ / "out" / "replay" / mesh["file"].get<std::string>(), std::ios::binary);
+  std::stringstream bytes;
+  bytes << copied.rdbuf();
+  EXPECT_EQ(bytes.str(), stl) << "a binary STL is kept as it is";
+  ASSERT_EQ(robot["warnings"].size(), 1u);
+  EXPECT_NE(robot["warnings"][0].get<std::string>().find("missing.stl"), std::string::npos) << robot["warnings"][0];
 }
 
 TEST_F(ReplayRecorderTest, RateZeroRecordsNoReplay) {
