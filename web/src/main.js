@@ -158,6 +158,15 @@ async function main() {
   });
   follow.addEventListener('change', show);
 
+  // Render on demand (time moved, camera moved, resized): software WebGL (a browser without a
+  // GPU) then spends nothing while the picture stands still.
+  let needsRender = true;
+  controls.addEventListener('change', () => { needsRender = true; });
+  window.addEventListener('resize', () => { needsRender = true; });
+  const render = () => {
+    renderer.render(scene, camera);
+    needsRender = false;
+  };
   let lastWall = performance.now();
   const frame = (now) => {
     const dt = (now - lastWall) / 1000;
@@ -166,13 +175,16 @@ async function main() {
       t = Math.min(t1, t + dt * Number(speed.value));
       if (t >= t1) setPlaying(false);
       show();
+      needsRender = true;
     }
     controls.update();
-    renderer.render(scene, camera);
+    if (needsRender) render();
     requestAnimationFrame(frame);
   };
+  slider.addEventListener('input', () => { needsRender = true; });
+  follow.addEventListener('change', () => { needsRender = true; });
   show();
-  renderer.render(scene, camera);
+  render();
   requestAnimationFrame(frame);
 
   Object.assign(hooks, {
@@ -182,12 +194,12 @@ async function main() {
     setTime(value) {
       t = Math.min(t1, Math.max(t0, value));
       show();
-      renderer.render(scene, camera);
+      render();
     },
     time: () => t,
     setRobotVisible(on) {
       robot.root.visible = on;
-      renderer.render(scene, camera);
+      render();
     },
     ready: true,
   });

@@ -50,8 +50,9 @@ const started = [];
 let browser = null;
 let failures = 0;
 
+const t0 = Date.now();
 function check(ok, what) {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+  console.log(`${ok ? 'ok  ' : 'FAIL'} [${((Date.now() - t0) / 1000).toFixed(1)} s] ${what}`);
   if (!ok) failures++;
 }
 
