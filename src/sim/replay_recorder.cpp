@@ -16,8 +16,8 @@ ReplayRecorder::ReplayRecorder(const Simulation& sim, const Scenario& scenario, 
   if (dir.empty() || !(scenario.replay_rate > 0.0)) return;
   active_ = true;
   dir_ = fs::path(dir) / "replay";
-  rate_ = scenario.replay_rate;
-  every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(1.0 / (rate_ * scenario.period))));
+  every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(1.0 / (scenario.replay_rate * scenario.period))));
+  rate_ = 1.0 / (static_cast<double>(every_) * scenario.period);  // what the frames' spacing is (30 Hz at 1 kHz: 30.3)
   for (const TimelineEvent& e : scenario.timeline) {
     if (e.kind == TimelineEvent::Kind::Route) waypoints_.insert(waypoints_.end(), e.route.waypoints.begin(), e.route.waypoints.end());
   }
