@@ -1,10 +1,12 @@
 #include "sim/replay_recorder.hpp"
 
 #include <algorithm>
+#include <variant>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
 
+#include "description/sensor_spec.hpp"
 #include "sim/replay_assets.hpp"
 
 namespace mechsim::sim {
@@ -54,7 +56,8 @@ void ReplayRecorder::observe(const Simulation& sim, std::uint64_t last_tick) {
   ++frames_;
 }
 
-void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string>& report_files, bool has_odometry) {
+void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string>& report_files, bool has_odometry,
+                            const std::vector<std::string>& sensor_files) {
   if (!active_) return;
   poses_.close();
   if (!poses_) throw ScenarioError("replay: cannot write " + (dir_ / "poses.bin").string());
@@ -90,6 +93,26 @@ void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string
   if (has_odometry && fs::exists(dir_.parent_path() / "base.csv")) {
     j["odometry"] = {{"file", "../base.csv"}, {"x", "odom_x"}, {"y", "odom_y"}};
   }
+  // Lasers whose scans the report has (sensors/<name>.csv: t, then the ranges, rows of the
+  // vertical axis one after the other): drawn as points from the sensor's pose on its link.
+  nlohmann::ordered_json lasers = nlohmann::ordered_json::array();
+  const sensors::SensorSet& set = sim.sensors();
+  for (std::size_t i = 0; i < set.size() && i < sensor_files.size(); ++i) {
+    const description::SensorSpec& spec = set.spec(i);
+    const auto* ray = std::get_if<description::RaySpec>(&spec.details);
+    const auto link = sim.physics().model().link_index(spec.link);
+    if (ray == nullptr || !link || std::find(report_files.begin(), report_files.end(), sensor_files[i]) == report_files.end()) continue;
+    const auto axis = [](const description::RayAxis& a) {
+      return nlohmann::ordered_json{{"min", a.min_angle}, {"max", a.max_angle}, {"count", a.count()}};
+    };
+    const description::Pose& X_LS = spec.pose;
+    lasers.push_back({{"name", spec.name}, {"link", *link}, {"file", "../" + sensor_files[i]},
+                      {"origin", {{"p", {X_LS.position.x, X_LS.position.y, X_LS.position.z}},
+                                  {"q", {X_LS.orientation.w, X_LS.orientation.x, X_LS.orientation.y, X_LS.orientation.z}}}},
+                      {"horizontal", axis(ray->horizontal)}, {"vertical", axis(ray->vertical)},
+                      {"range_min", ray->range_min}, {"range_max", ray->range_max}});
+  }
+  j["lasers"] = lasers;
   std::ofstream out(dir_ / "manifest.json");
   out << j.dump(1) << '\n';
   out.close();

@@ -35,9 +35,11 @@ class ReplayRecorder {
   // 1/replay_rate s, and at `last_tick`). Allocates nothing: one buffered write of a fixed frame.
   void observe(const Simulation& sim, std::uint64_t last_tick);
   // Closes poses.bin and writes manifest.json (last, so that a folder with a manifest is complete);
-  // `report_files` are the report's files (its PNG plots are listed for the page, and base.csv
-  // for the odometry trace when `has_odometry`).
-  void finish(const Simulation& sim, const std::vector<std::string>& report_files, bool has_odometry);
+  // `report_files` are the report's files (its PNG plots are listed for the page, base.csv for
+  // the odometry trace when `has_odometry`, and the lasers' CSV files: `sensor_files[i]` is
+  // sensor i's of the simulation's SensorSet).
+  void finish(const Simulation& sim, const std::vector<std::string>& report_files, bool has_odometry,
+              const std::vector<std::string>& sensor_files);
   std::uint64_t frames() const { return frames_; }
 
  private:

@@ -510,7 +510,9 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
     }
     if (replay.active()) result.files.push_back("replay/manifest.json");
     write_report(s, *sim, recorder, result, options);
-    replay.finish(*sim, result.files, result.has_odometry);
+    std::vector<std::string> sensor_files;
+    for (std::size_t i = 0; i < sim->sensors().size(); ++i) sensor_files.push_back(sensor_report.csv_file(i));
+    replay.finish(*sim, result.files, result.has_odometry, sensor_files);
   }
   return result;
 }

@@ -122,6 +122,9 @@ void check(const fs::path& report, ReplayFolder& out) {
   if (auto odometry = manifest.find("odometry"); odometry != manifest.end() && odometry->is_object()) {
     need_file(report, "replay/" + odometry->value("file", ""), files);
   }
+  for (const json& laser : manifest.value("lasers", json::array())) {
+    if (laser.contains("file") && laser["file"].is_string()) need_file(report, "replay/" + laser["file"].get<std::string>(), files);
+  }
   for (const json& plot : manifest.value("plots", json::array())) {
     for (const char* key : {"file", "axes"}) {
       if (plot.contains(key) && plot[key].is_string()) need_file(report, "replay/" + plot[key].get<std::string>(), files);

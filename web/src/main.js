@@ -9,6 +9,7 @@ import { readBytes, readJson, readStatus, readText, reportPath } from './data.js
 import { buildRobot, poseRobot } from './robot.js';
 import { buildWorld, buildTraces, csvColumns } from './world.js';
 import { buildPlots, updatePlots } from './plots.js';
+import { buildLasers, updateLasers } from './lasers.js';
 
 const FORMAT = 'mechsim-replay';
 const VERSION = 1;
@@ -81,6 +82,8 @@ async function main() {
   const odometry = manifest.odometry
     ? csvColumns(await readText(reportPath(manifest.odometry.file)), manifest.odometry.x, manifest.odometry.y) : [];
   scene.add(buildTraces(poses, stride, frames, rootIndex, manifest.waypoints ?? [], world.heightAt, odometry));
+  const lasers = await buildLasers(manifest.lasers ?? []);
+  for (const l of lasers) scene.add(l.points);
 
   const camera = new THREE.PerspectiveCamera(50, 1, 0.02, 2000);
   const controls = new OrbitControls(camera, renderer.domElement);
@@ -119,6 +122,7 @@ async function main() {
   const show = () => {
     const k = frameAt(poses, stride, frames, t);
     poseRobot(robot.groups, poses, stride, k);
+    updateLasers(lasers, t, poses, stride, k);
     const at = rootAt(k);
     if (follow.checked) {
       if (lastFollow) {
