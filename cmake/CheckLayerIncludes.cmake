@@ -22,9 +22,11 @@ set(deps_sensors physics description)
 set(deps_sim physics sensors controllers)
 set(deps_batch sim)
 set(deps_live sim sensors)
+# web/: `mechsim view`, the replay page's server and export (the replay half of live/'s row).
+set(deps_web sim)
 set(deps_ros sim sensors controllers)
-set(deps_apps description mechanism control controllers physics sensors sim batch live ros)
-set(layers description mechanism control controllers physics sensors sim batch live ros apps)
+set(deps_apps description mechanism control controllers physics sensors sim batch live web ros)
+set(layers description mechanism control controllers physics sensors sim batch live web ros apps)
 
 # What each layer may include: itself and everything its dependencies reach.
 foreach(layer IN LISTS layers)

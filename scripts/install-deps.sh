@@ -11,6 +11,9 @@ packages=(
   libsdformat-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
+  # mechsim view: the replay page's HTTP server (Boost.Beast, header-only) and the page's browser
+  # test (Debian's Chromium, headless, software WebGL).
+  libboost-dev chromium
   # mechsim sweep --slurm and its test (a single-node Slurm started by the test itself).
   slurm-wlm munge
 )
@@ -62,7 +65,26 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+install_web() {
+# The replay page (web/): node and npm from Debian when the machine has none (a node from
+# elsewhere, e.g. NodeSource's, which bundles npm, is kept), then the page's pinned packages
+# (web/package-lock.json) into web/node_modules.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  SUDO=""
+  if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+  echo "install-deps: installing nodejs npm" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
+fi
+web="$(cd "$(dirname "$0")/.." && pwd)/web"
+if [[ ! -f "$web/node_modules/.package-lock.json" || "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]]; then
+  echo "install-deps: npm ci in $web" >&2
+  (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+fi
+}
 if ((${#missing[@]} == 0)); then
+  install_web
   exit 0
 fi
 SUDO=""
@@ -71,3 +93,4 @@ echo "install-deps: installing ${missing[*]}" >&2
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+install_web

@@ -28,5 +28,6 @@ void add_tune_command(CLI::App& app, CommandResult& result);
 void add_spawner_command(CLI::App& app, CommandResult& result);  // ROS builds: mechsim_spawner
 void add_bench_command(CLI::App& app, CommandResult& result);
 void add_sweep_command(CLI::App& app, CommandResult& result);
+void add_view_command(CLI::App& app, CommandResult& result);
 
 }  // namespace mechsim::apps

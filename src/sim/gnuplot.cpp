@@ -58,4 +58,10 @@ void write_terrain(const physics::Heightmap& map, const fs::path& file, double& 
   }
 }
 
+std::string axes_record(const std::filesystem::path& file, bool first) {
+  return "set print " + quoted(file.string()) + (first ? "" : " append") +
+         "\nprint sprintf('{\"px\":[%g,%g,%g,%g],\"x\":[%g,%g],\"y\":[%g,%g]}', GPVAL_TERM_XMIN, GPVAL_TERM_XMAX, "
+         "GPVAL_TERM_YMIN, GPVAL_TERM_YMAX, GPVAL_X_MIN, GPVAL_X_MAX, GPVAL_Y_MIN, GPVAL_Y_MAX)\nunset print\n";
+}
+
 }  // namespace mechsim::sim

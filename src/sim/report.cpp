@@ -289,7 +289,7 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
                quoted(result.events.front().kind == "left_terrain" ? "left the usable ground" : result.events.front().kind) + ", ";
     }
     plots += base + " every ::1::1 using 2:3 with points pt 5 ps 2 lc rgb '#000000' title 'start'\n";
-    const std::string script = gp.str() + "plot " + plots;
+    const std::string script = gp.str() + "plot " + plots + axes_record(dir / "path.axes.jsonl", true);
     if (const std::string err = run_gnuplot(dir, "path", script); !err.empty()) {
       result.warnings.push_back(err);
     } else {
@@ -313,11 +313,12 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
       for (std::size_t k = 0; k < n; ++k) {
         const std::size_t col = 2 + 4 * k;
         tr << "set title " << quoted(result.tracking[k].controller) << " noenhanced\nplot " << csv << " using 1:" << col
-           << " with lines lw 2 title 'set point', " << csv << " using 1:" << col + 1 << " with lines lw 1.5 title 'measured'\n";
+           << " with lines lw 2 title 'set point', " << csv << " using 1:" << col + 1 << " with lines lw 1.5 title 'measured'\n"
+           << axes_record(dir / "tracking.axes.jsonl", k == 0);
         er << (k ? ", " : "") << csv << " using 1:" << col + 2 << " with lines title " << quoted(result.tracking[k].controller) << " noenhanced";
       }
       tr << "unset multiplot\n";
-      er << "\n";
+      er << "\n" << axes_record(dir / "errors.axes.jsonl", true);
       for (const auto& [name, script_text] : {std::pair{std::string("tracking"), tr.str()}, std::pair{std::string("errors"), er.str()}}) {
         if (const std::string err = run_gnuplot(dir, name, script_text); !err.empty()) {
           result.warnings.push_back(err);
@@ -347,7 +348,8 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
         const std::size_t col = 2 + 2 * k;
         tj << "set title " << quoted(columns[k]) << " noenhanced\nplot " << csv << " using 1:" << col
            << " with lines lw 2 lc rgb '#0050ff' title 'desired', " << csv << " using 1:" << col + 1
-           << " with lines lw 1.5 dt 2 lc rgb '#d00000' title 'actual'\n";
+           << " with lines lw 1.5 dt 2 lc rgb '#d00000' title 'actual'\n"
+           << axes_record(dir / "trajectory.axes.jsonl", k == 0);
       }
       tj << "unset multiplot\n";
       if (const std::string err = run_gnuplot(dir, "trajectory", tj.str()); !err.empty()) {

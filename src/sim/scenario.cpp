@@ -565,6 +565,8 @@ Scenario load_scenario(const Params& root, const std::string& path) {
     }
     s.record_rate = root.get<double>("record_rate", 50.0);
     if (!(s.record_rate > 0.0)) fail(root.child("record_rate"), "must be > 0 Hz");
+    s.replay_rate = root.get<double>("replay_rate", 30.0);
+    if (!(s.replay_rate >= 0.0) || s.replay_rate > 1e4) fail(root.child("replay_rate"), "must be in [0, 1e4] Hz (0: no replay)");
 
     if (auto timeline = root.find("timeline")) {
       for (const Params& e : timeline->items()) s.timeline.push_back(read_event(e));

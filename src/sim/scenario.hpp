@@ -50,6 +50,7 @@
 //   integrator: euler   # euler | implicit | rk4: MuJoCo's integrator; default physics::BuildOptions' (see there)
 //   seed: 1             # for everything random (world generation when world.seed is absent)
 //   record_rate: 50     # Hz of the CSV files
+//   replay_rate: 30     # Hz of the link poses `mechsim view` replays (report's replay/); 0: none
 //   timeline:
 //     - {at: 0.0, controller: rover_drive_controller, twist: {vx: 0.5, vy: 0, wz: 0}}
 //     - {at: 2.0, controller: steering_FL_position_controller, command: 0.5}
@@ -254,6 +255,7 @@ struct Scenario {
   physics::Integrator integrator = physics::BuildOptions{}.integrator;  // the project default
   std::uint64_t seed = 1;
   double record_rate = 50.0;
+  double replay_rate = 30.0;  // Hz of the replay's link poses (sim/replay_recorder.hpp); 0: no replay
   std::vector<TimelineEvent> timeline;  // sorted by time
   std::vector<Check> checks;
   std::vector<SensorBlock> sensor_blocks;    // sensors: added to the robot

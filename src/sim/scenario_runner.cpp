@@ -16,6 +16,7 @@
 #include "description/robot_loader.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/urdf/sensor_reader.hpp"
+#include "sim/replay_recorder.hpp"
 #include "sim/report.hpp"
 #include "sim/pose_math.hpp"
 #include "sim/route_follower.hpp"
@@ -112,7 +113,7 @@ control::PortKind port_kind_for(TimelineEvent::Kind kind) {
   return control::PortKind::ScalarCommand;
 }
 
-std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
+std::unique_ptr<Simulation> build_simulation(const Scenario& s, std::string& urdf) {
   description::LoadOptions load;
   load.xacro_args = s.xacro_args;
   load.packages = s.packages;
@@ -123,6 +124,7 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": robot: " + e.what());
   }
+  urdf = robot.urdf;
   // Sensors the scenario adds (its `sensors:` blocks), read as the URDF's own.
   for (const SensorBlock& block : s.sensor_blocks) {
     try {
@@ -186,7 +188,8 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s) {
 
 ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   prepare_report_folder(s, options.output_dir);
-  std::unique_ptr<Simulation> sim = build_simulation(s);
+  std::string urdf;
+  std::unique_ptr<Simulation> sim = build_simulation(s, urdf);
   ScenarioResult result;
 
   ScenarioGoals goals(s, sim->controllers());  // binds (and checks) the trajectory and gripper events
@@ -233,6 +236,8 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   sim->add_control_observer([&](const Simulation& at) {
     if (at.ticks() % record_every == 0 || at.ticks() + 1 == total_ticks) recorder.sample(odometry);
   });
+  ReplayRecorder replay(*sim, s, options.output_dir, urdf);
+  if (replay.active()) sim->add_control_observer([&](const Simulation& at) { replay.observe(at, total_ticks - 1); });
 
   std::vector<double> reach_best(s.checks.size(), 1e300);
   // Joint checks: the mechanism joint, and its position once sampled.
@@ -503,7 +508,11 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       timing->write_csv((std::filesystem::path(options.output_dir) / "timing.csv").string());
       result.files.push_back("timing.csv");
     }
+    if (replay.active()) result.files.push_back("replay/manifest.json");
     write_report(s, *sim, recorder, result, options);
+    std::vector<std::string> sensor_files;
+    for (std::size_t i = 0; i < sim->sensors().size(); ++i) sensor_files.push_back(sensor_report.csv_file(i));
+    replay.finish(*sim, result.files, result.has_odometry, sensor_files);
   }
   return result;
 }

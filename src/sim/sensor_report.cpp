@@ -142,6 +142,8 @@ SensorReport::SensorReport(const Simulation& sim, const Scenario& scenario, cons
 
 SensorReport::~SensorReport() = default;
 
+std::string SensorReport::csv_file(std::size_t i) const { return "sensors/" + channels_[i]->file + ".csv"; }
+
 void SensorReport::observe(const Simulation& sim) {
   const sensors::SensorSet& set = sim.sensors();
   const double t = sim.time();

@@ -34,6 +34,9 @@ class SensorReport {
   // Closes the CSV files; with `plots`, draws the IMU plots and laser_scans.png. Adds what it
   // wrote to result.files, plotting failures to result.warnings.
   void write(ScenarioResult& result, bool plots);
+  // The CSV file of sensor `i` of the simulation's SensorSet, relative to the report folder
+  // ("sensors/<name>.csv"; written when the sensor gave a reading).
+  std::string csv_file(std::size_t i) const;
 
  private:
   struct Capture {
