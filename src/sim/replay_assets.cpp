@@ -111,7 +111,11 @@ ordered_json world_json(const World& world, const fs::path& dir) {
   j["ground_plane"] = spec.kind == physics::WorldSpec::Kind::Empty && spec.ground_plane;
   ordered_json boxes = ordered_json::array();
   for (const physics::WorldBox& b : spec.boxes) {
-    boxes.push_back({{"name", b.name}, {"pose", pose_json(b.pose)}, {"size", {b.size.x, b.size.y, b.size.z}}, {"fixed", b.fixed}});
+    const char* shape = b.shape == physics::WorldBox::Shape::Cylinder ? "cylinder"
+                        : b.shape == physics::WorldBox::Shape::Sphere ? "sphere"
+                                                                       : "box";
+    boxes.push_back({{"name", b.name}, {"shape", shape}, {"pose", pose_json(b.pose)}, {"size", {b.size.x, b.size.y, b.size.z}},
+                     {"fixed", b.fixed}});
   }
   j["boxes"] = boxes;
   if (spec.kind == physics::WorldSpec::Kind::Heightmap && spec.terrain) {

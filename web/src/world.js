@@ -99,7 +99,17 @@ export async function buildWorld(worldJson) {
     heightAt = makeHeightAt(field, heights);
   }
   for (const box of worldJson.boxes ?? []) {
-    const mesh = new THREE.Mesh(new THREE.BoxGeometry(...box.size),
+    // Extents: a box's edges; a cylinder's diameter, diameter and length (axis z); a sphere's diameter.
+    let geometry;
+    if (box.shape === 'cylinder') {
+      geometry = new THREE.CylinderGeometry(box.size[0] / 2, box.size[0] / 2, box.size[2], 32);
+      geometry.rotateX(Math.PI / 2);  // three.js cylinders run along y, the world's along z
+    } else if (box.shape === 'sphere') {
+      geometry = new THREE.SphereGeometry(box.size[0] / 2, 32, 16);
+    } else {
+      geometry = new THREE.BoxGeometry(...box.size);
+    }
+    const mesh = new THREE.Mesh(geometry,
       new THREE.MeshStandardMaterial({ color: box.fixed ? 0x9c7a54 : 0xc9a36b, roughness: 0.8 }));
     const [w, x, y, z] = box.pose.q;
     mesh.position.set(...box.pose.p);
