@@ -502,6 +502,9 @@ void Simulation::load_and_start(const std::vector<std::string>& controllers) {
   }
   control::SwitchResult s = manager_->switch_controllers(controllers, {}, control::SwitchStrictness::Strict);
   if (!s) throw std::runtime_error("could not start controllers: " + s.error);
+  // Started now, from the state at time(), as the next tick would start them: a command written
+  // before that tick (a scenario's timeline at t = 0) is then not reset by their starting().
+  manager_->apply_pending_switch(time());
 }
 
 }  // namespace mechsim::sim

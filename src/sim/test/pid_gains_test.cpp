@@ -145,6 +145,18 @@ TEST(PidGains, PositionStepFollowsThePidAndOvershootsAsItsGainsSay) {
   EXPECT_LT(max_difference(run.q, ref.q), 1e-4);  // measured: below 1e-5 rad
 }
 
+// load_and_start starts the controllers at once: a command written before the first tick (a
+// scenario's timeline event at t = 0) is not reset by their starting().
+TEST(PidGains, ACommandWrittenRightAfterLoadAndStartIsKept) {
+  auto sim = make("", std::string(kGains) + kControllers);
+  sim->load_and_start({"pos"});
+  auto* port = dynamic_cast<control::ScalarCommandPort*>(sim->controllers().controller("pos")->port("command"));
+  ASSERT_NE(port, nullptr);
+  ASSERT_TRUE(port->write(0.5));
+  ASSERT_TRUE(sim->run_for(3.0));
+  EXPECT_NEAR(sim->physics().position(*sim->physics().model().joint_index("hinge")), 0.5, 0.01);
+}
+
 TEST(PidGains, WithoutGainsThePositionServoStaysAndDoesNotOvershoot) {
   auto sim = make("", kControllers);
   ASSERT_EQ(sim->joint_drive_notes().size(), 1u);
