@@ -17,6 +17,8 @@ int run_point(const std::filesystem::path& dir, const Plan& plan, std::size_t in
   sim::Scenario scenario;
   try {
     scenario = load_with_overrides(plan.scenario, point_overrides(plan, index));
+    // A lean point (no plots) records no 3D replay either: on the Mars Yard that is ~2 MB a point.
+    if (!plan.plots_per_point) scenario.replay_rate = 0.0;
     sim::RunOptions options;
     options.output_dir = out.string();
     options.plots = plan.plots_per_point;

@@ -7,7 +7,7 @@
 //   samples: 10                         # draws of the random and Latin hypercube axes
 //   seed: 1                             # of those draws (the same seed, the same points)
 //   time_limit: 600                     # s of wall-clock time per point (default 3600)
-//   plots_per_point: false              # each point's report PNGs (default: CSVs and summary only)
+//   plots_per_point: false              # each point's report PNGs and 3D replay (default: CSVs and summary only)
 //   metrics: [final_error, max_tilt_deg, odometry_error, wall_time]   # table columns
 //   maps: [spawn.yaw, world.seed]       # the two axes of the heat map and pass/fail map
 //   axes:

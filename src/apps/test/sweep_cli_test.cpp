@@ -82,6 +82,8 @@ TEST_F(SweepCli, RunsPointsInParallelAndWritesTheTablePlotsAndStatus) {
     if (slow) EXPECT_NEAR(distance, 0.12, 0.05) << i;
     else EXPECT_NEAR(distance, 0.45, 0.1) << i;
     EXPECT_TRUE(fs::exists(out / "points" / ("0000" + std::to_string(i - 1)) / "summary.json"));
+    // Lean points (no plots_per_point): no 3D replay either.
+    EXPECT_FALSE(fs::exists(out / "points" / ("0000" + std::to_string(i - 1)) / "replay")) << i;
   }
   for (const char* png : {"plots/distance.png", "plots/heatmap_distance.png", "plots/pass_fail.png"}) {
     EXPECT_GT(fs::file_size(out / png), 5000u) << png;
