@@ -22,7 +22,7 @@ set(deps_sensors physics description)
 set(deps_sim physics sensors controllers)
 set(deps_batch sim)
 set(deps_live sim sensors)
-set(deps_ros sim sensors controllers)
+set(deps_ros sim sensors controllers live)
 set(deps_apps description mechanism control controllers physics sensors sim batch live ros)
 set(layers description mechanism control controllers physics sensors sim batch live ros apps)
 
