@@ -10,7 +10,7 @@ build=${1:-build/release}
 duration=${2:-20}
 reps=${3:-2}
 mechsim="$build/bin/mechsim"
-client="$build/bin/live_bench"
+client=${LIVE_BENCH:-$build/bin/live_bench}  # the client program (src/live/bench/live_client_bench.cpp)
 scenario=robots/cc8/scenarios/mars_yard_route.yaml
 work=$(mktemp -d /tmp/mechsim_live_bench_XXXXXX)
 trap 'rm -rf "$work"' EXIT
@@ -22,7 +22,10 @@ run_case() {  # name, extra mechsim args..., then client mode after --client
   local name=$1 mode=$2
   shift 2
   local log="$work/$name.log"
-  "$mechsim" run "$scenario" --duration "$duration" --no-plots -o "$work/out" --real-time-factor 0 "$@" >"$log" 2>/dev/null &
+  # perf stat's task-clock: the CPU time of every thread of the run (the tick and the server),
+  # which other load on the machine changes far less than the wall-clock real-time factor.
+  perf stat -x, -e task-clock -o "$work/$name.cpu" \
+    "$mechsim" run "$scenario" --duration "$duration" --no-plots -o "$work/out" --real-time-factor 0 "$@" >"$log" 2>/dev/null &
   local pid=$!
   local client_pid=""
   if [[ "$mode" != none ]]; then
@@ -35,7 +38,10 @@ run_case() {  # name, extra mechsim args..., then client mode after --client
   if [[ -n "$client_pid" ]]; then wait "$client_pid" || true; fi
   local live
   live=$(grep '^live: [0-9]' "$log" || true)
-  printf '%-14s real-time factor %s  %s\n' "$name" "$(rtf "$log")" "$live"
+  local cpu
+  cpu=$(awk -F, '/task-clock/ {printf "%.2f", $1 / 1000}' "$work/$name.cpu")
+  printf '%-14s real-time factor %-8s CPU %6s s  %s\n' "$name" "$(rtf "$log")" "$cpu" "$live"
+  echo "$name $(rtf "$log") $cpu" >>"$work/table"
   if [[ "$mode" == read ]]; then sed 's/^/               client: /' "$work/$name.client"; fi
 }
 
@@ -47,3 +53,9 @@ for ((r = 1; r <= reps; ++r)); do
   run_case live-stalled stall --live --port "$port"
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "medians over $reps runs (CPU: all threads of the run, world generation included):"
+for name in no-live live-no-client live-reading live-stalled; do
+  awk -v n="$name" '$1 == n {print $2, $3}' "$work/table" | sort -n | awk -v n="$name" '
+    {rtf[NR] = $1; cpu[NR] = $2}
+    END {asort(cpu); m = int((NR + 1) / 2); printf "  %-14s real-time factor %s  CPU %s s\n", n, rtf[m], cpu[m]}'
+done

@@ -4,12 +4,13 @@
 // and reads frames until a deadline. Header-only: the live layer's unit tests and the CLI test of
 // `mechsim run --live` both use it.
 
+#include <poll.h>
+
 #include <chrono>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <boost/asio/connect.hpp>
@@ -113,13 +114,18 @@ class FoxgloveTestClient {
   bool read_frame(std::string& frame, std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt) {
     boost::beast::error_code ec;
     if (deadline) {
-      // Poll with a short socket timeout so that read_for() ends on time.
-      while (true) {
-        const int available = static_cast<int>(ws_.next_layer().available(ec));
-        if (ec) return false;
-        if (available > 0 || buffer_.size() > 0) break;
+      // Wait for data in short polls so that read_for() ends on time; readable with nothing to
+      // read is the server's end of the connection.
+      while (buffer_.size() == 0) {
+        pollfd fd{ws_.next_layer().native_handle(), POLLIN, 0};
+        const int ready = ::poll(&fd, 1, 2);
+        if (ready < 0) return false;
+        if (ready > 0) {
+          if ((fd.revents & (POLLERR | POLLHUP)) != 0) return false;
+          if (ws_.next_layer().available(ec) == 0 || ec) return false;
+          break;
+        }
         if (std::chrono::steady_clock::now() >= *deadline) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
       }
     }
     buffer_.consume(buffer_.size());
