@@ -55,7 +55,8 @@ done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "medians over $reps runs (CPU: all threads of the run, world generation included):"
 for name in no-live live-no-client live-reading live-stalled; do
-  awk -v n="$name" '$1 == n {print $2, $3}' "$work/table" | sort -n | awk -v n="$name" '
-    {rtf[NR] = $1; cpu[NR] = $2}
-    END {asort(cpu); m = int((NR + 1) / 2); printf "  %-14s real-time factor %s  CPU %s s\n", n, rtf[m], cpu[m]}'
+  median() { sort -n | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
+  printf '  %-14s real-time factor %s  CPU %s s\n' "$name" \
+    "$(awk -v n="$name" '$1 == n {print $2}' "$work/table" | median)" \
+    "$(awk -v n="$name" '$1 == n {print $3}' "$work/table" | median)"
 done
