@@ -134,14 +134,16 @@ void add_run_command(CLI::App& app, CommandResult& result) {
                   "Pace the run: simulated time runs this many times as fast as wall time (default: as fast as it "
                   "goes; 1 with --live); 0: unbounded")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("--live", args->live,
+  CLI::Option* live = cmd->add_flag("--live", args->live,
                 "Serve the run live over the Foxglove WebSocket protocol (Foxglove Studio, Lichtblick): /tf, "
                 "/joint_states, /odom, laser scans, /robot_description, /markers");
-  cmd->add_option("--port", args->server.port, "--live: TCP port (default 8765; 0: any free port, printed)");
+  cmd->add_option("--port", args->server.port, "--live: TCP port (default 8765; 0: any free port, printed)")->needs(live);
   cmd->add_option("--live-address", args->server.address,
-                  "--live: address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)");
+                  "--live: address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)")
+      ->needs(live);
   cmd->add_option("--live-rate", args->live_rate, "--live: Hz of /tf, /joint_states and /odom (default 30)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)
+      ->needs(live);
   cmd->callback([args, &result] { run(*args, result); });
 }
 

@@ -229,5 +229,15 @@ TEST_F(LiveRunTest, BusyPortFailsBeforeTheRunStarts) {
   EXPECT_FALSE(fs::exists(dir_ / "report" / "summary.json"));  // nothing ran
 }
 
+TEST_F(LiveRunTest, LiveOptionsWithoutLiveAreAnError) {
+  const ProcessResult r = run_process({MECHSIM_EXE, "run", std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/scenarios/straight_5m.yaml",
+                                       "--port", "9000", "-o", dir_.string() + "/report"},
+                                      30.0);
+  ASSERT_TRUE(r.started);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--port requires --live"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "report" / "summary.json"));
+}
+
 }  // namespace
 }  // namespace mechsim::apps::test
