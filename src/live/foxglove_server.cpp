@@ -4,6 +4,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <boost/asio/ip/tcp.hpp>
@@ -60,8 +61,11 @@ struct FoxgloveServer::Impl : std::enable_shared_from_this<FoxgloveServer::Impl>
     beast::flat_buffer read_buffer;
     http::request<http::string_body> request;
     std::deque<Outgoing> queue;
-    std::size_t queued_bytes = 0;
-    bool writing = false, open = false, closed = false;
+    // The frame being written: out of the queue, so that dropping queued frames (a deque erase
+    // moves elements) or closing never moves or frees what the write's buffers point into.
+    std::optional<Outgoing> in_flight;
+    std::size_t queued_bytes = 0;  // queue and in_flight
+    bool open = false, closed = false;
     std::map<std::uint32_t, std::uint32_t> subscription_of_channel;  // channel -> subscription id
     std::array<asio::const_buffer, 2> buffers;
 
@@ -140,9 +144,9 @@ struct FoxgloveServer::Impl : std::enable_shared_from_this<FoxgloveServer::Impl>
       if (closed) return;
       queued_bytes += out.bytes();
       queue.push_back(std::move(out));
-      // Over the bounds: drop the oldest droppable message that is not being written.
+      // Over the bounds: drop the oldest droppable message waiting (not the one being written).
       while (queue.size() > server.options.max_queued_messages || queued_bytes > server.options.max_queued_bytes) {
-        auto victim = queue.begin() + (writing ? 1 : 0);
+        auto victim = queue.begin();
         while (victim != queue.end() && !victim->droppable) ++victim;
         if (victim == queue.end()) break;
         queued_bytes -= victim->bytes();
@@ -156,9 +160,10 @@ struct FoxgloveServer::Impl : std::enable_shared_from_this<FoxgloveServer::Impl>
     }
 
     void write() {
-      if (writing || queue.empty() || !open) return;
-      writing = true;
-      const Outgoing& out = queue.front();
+      if (in_flight || queue.empty() || !open || closed) return;
+      in_flight = std::move(queue.front());
+      queue.pop_front();
+      const Outgoing& out = *in_flight;
       ws.text(out.text);
       buffers[0] = asio::buffer(out.head);
       buffers[1] = out.payload ? asio::buffer(*out.payload) : asio::const_buffer();
@@ -166,19 +171,18 @@ struct FoxgloveServer::Impl : std::enable_shared_from_this<FoxgloveServer::Impl>
     }
 
     void on_write(beast::error_code ec) {
-      writing = false;
+      queued_bytes -= in_flight->bytes();
+      if (!ec && in_flight->droppable) server.sent.fetch_add(1, std::memory_order_relaxed);
+      in_flight.reset();
       if (ec) return close();
-      if (queue.front().droppable) server.sent.fetch_add(1, std::memory_order_relaxed);
-      queued_bytes -= queue.front().bytes();
-      queue.pop_front();
       write();
     }
 
     void close() {
       if (closed) return;
       closed = true;
-      queue.clear();
-      queued_bytes = 0;
+      for (const Outgoing& out : queue) queued_bytes -= out.bytes();
+      queue.clear();  // in_flight stays until its write completes (aborted by the close below)
       beast::error_code ec;
       ws.next_layer().shutdown(tcp::socket::shutdown_both, ec);
       ws.next_layer().close(ec);
