@@ -24,7 +24,7 @@ set(deps_batch sim)
 set(deps_live sim sensors)
 # web/: `mechsim view`, the replay page's server and export (the replay half of live/'s row).
 set(deps_web sim)
-set(deps_ros sim sensors controllers)
+set(deps_ros sim sensors controllers live)
 set(deps_apps description mechanism control controllers physics sensors sim batch live web ros)
 set(layers description mechanism control controllers physics sensors sim batch live web ros apps)
 

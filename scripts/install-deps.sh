@@ -8,6 +8,8 @@ packages=(
   libmujoco-dev libqhull-dev libgl-dev libopengl-dev libegl-dev
   liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libyaml-cpp-dev libcli11-dev
   libeigen3-dev nlohmann-json3-dev libtiff-dev libpng-dev libassimp-dev
+  # src/live: the Foxglove WebSocket server (Boost.Beast and Boost.Asio, header-only).
+  libboost-dev
   libsdformat-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox

@@ -14,6 +14,8 @@
 
 #include "apps/commands.hpp"
 #include "apps/stop_on_signals.hpp"
+#include "live/live_stream.hpp"
+#include "live/scenario_stream.hpp"
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
 
@@ -27,6 +29,10 @@ struct RunArgs {
   double duration = 0.0;
   std::string integrator;  // empty: the scenario's own
   double timing = 0.0;     // s of simulated time per timing.csv row; 0: no timing
+  double real_time_factor = -1.0;  // < 0: not given (1 with --live, else unbounded)
+  bool live = false;
+  live::ServerOptions server;
+  double live_rate = 30.0;  // Hz of /tf, /joint_states and /odom
 };
 
 // A one-line progress bar on a terminal; a plain line every 10 % of the run otherwise.
@@ -70,8 +76,30 @@ void run(const RunArgs& args, CommandResult& result) {
   std::cout << "scenario " << scenario.name << ": " << scenario.duration << " s of simulated time, "
             << physics::integrator_name(scenario.integrator) << " integrator\n" << std::flush;
   options.interrupt = &g_stop_signal;
+  options.real_time_factor = args.real_time_factor >= 0.0 ? args.real_time_factor : (args.live ? 1.0 : 0.0);
+  // Live view: listen before anything is built, so that a busy port fails at once.
+  std::unique_ptr<live::FoxgloveServer> server;
+  std::unique_ptr<live::LiveStream> stream;  // outlives the run's simulation (its observer)
+  if (args.live) {
+    server = std::make_unique<live::FoxgloveServer>(args.server);
+    std::cout << "live: " << live::live_url(*server)
+              << " (Foxglove WebSocket protocol: open it in Foxglove Studio or Lichtblick)\n" << std::flush;
+    options.on_start = [&](sim::Simulation& sim) {
+      live::StreamRates rates;
+      rates.tf = rates.joint_states = rates.odometry = args.live_rate;
+      stream = std::make_unique<live::LiveStream>(std::move(server), sim, live::scenario_urdf(scenario),
+                                                  live::scenario_waypoints(scenario), rates);
+    };
+  }
   const StopOnSignals stop_on_signals;
   const sim::ScenarioResult r = sim::run_scenario(scenario, options);
+  if (stream) {
+    stream->stop();
+    const live::StreamStats st = stream->stats();
+    std::cout << "live: " << st.server.clients_accepted << " clients, " << st.server.messages_sent << " messages sent, "
+              << st.server.messages_dropped << " dropped, peak client queue " << st.server.peak_queued_bytes
+              << " bytes, snapshots " << st.snapshots_taken << " of " << st.snapshots_published << " taken\n";
+  }
   std::cout << "distance " << r.distance << " m, final pose (" << r.final_x << ", " << r.final_y << ") yaw "
             << r.final_yaw * 180.0 / 3.141592653589793 << " deg, real-time factor " << r.real_time_factor << "\n";
   if (!r.completed) std::cout << "did not complete: " << r.error << "\n";
@@ -102,6 +130,20 @@ void add_run_command(CLI::App& app, CommandResult& result) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--integrator", args->integrator, "Override the scenario's integrator: implicit, euler or rk4")
       ->check(CLI::IsMember({"implicit", "euler", "rk4"}));
+  cmd->add_option("--real-time-factor", args->real_time_factor,
+                  "Pace the run: simulated time runs this many times as fast as wall time (default: as fast as it "
+                  "goes; 1 with --live); 0: unbounded")
+      ->check(CLI::NonNegativeNumber);
+  CLI::Option* live = cmd->add_flag("--live", args->live,
+                "Serve the run live over the Foxglove WebSocket protocol (Foxglove Studio, Lichtblick): /tf, "
+                "/joint_states, /odom, laser scans, /robot_description, /markers");
+  cmd->add_option("--port", args->server.port, "--live: TCP port (default 8765; 0: any free port, printed)")->needs(live);
+  cmd->add_option("--live-address", args->server.address,
+                  "--live: address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)")
+      ->needs(live);
+  cmd->add_option("--live-rate", args->live_rate, "--live: Hz of /tf, /joint_states and /odom (default 30)")
+      ->check(CLI::PositiveNumber)
+      ->needs(live);
   cmd->callback([args, &result] { run(*args, result); });
 }
 

@@ -36,6 +36,11 @@ const std::vector<PrivateParam>& private_params() {
       {"publish_odom_tf", "bool", "false", "odom_frame -> root link from the physics on /tf"},
       {"odom_frame", "string", "odom", "the frame of publish_odom_tf"},
       {"state_publish_rate", "double", "50", "Hz (sim time) of <controller>/state; 0: every tick"},
+      {"foxglove_port", "int", "(unset)",
+       "serve a live view over the Foxglove WebSocket protocol on this port (Foxglove's 8765; 0: any free "
+       "port, logged); unset: off"},
+      {"foxglove_address", "string", "127.0.0.1", "the live view's address (0.0.0.0: every interface)"},
+      {"foxglove_rate", "double", "30", "Hz (sim time) of the live view's /tf, /joint_states and /odom"},
       {"clock_publish_rate", "double", "100", "Hz (sim time) of /clock (Gazebo's pub_clock_frequency); 0: every tick"},
       {"gazebo", "bool", "false",
        "gzserver mode (gazebo_ros' empty_world.launch): an empty world, robots come and go through "

@@ -56,6 +56,11 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
     tf_->publish_static(bridge_->time());
   }
+  if (options_.foxglove_port >= 0) {
+    const std::string url = bridge_->start_live_view(options_.foxglove_address, options_.foxglove_port,
+                                                     options_.robot_description, options_.foxglove_rate);
+    ROS_INFO_STREAM("mechsim: live view on " << url << " (Foxglove WebSocket protocol: Foxglove Studio, Lichtblick)");
+  }
   // The statistics observer runs before on_tick, so that a tick's statistics include it.
   if (options_.pr2) bridge_->enable_mechanism_statistics();
   sensors_ = std::make_unique<SensorPublishers>(root_nh_, *bridge_);
@@ -80,6 +85,7 @@ void SimNode::stop() {
   stop_.store(true);
   if (!loop_thread_.joinable()) return;
   loop_thread_.join();
+  if (const std::string live = bridge_->live_view_summary(); !live.empty()) std::printf("mechsim: live view: %s\n", live.c_str());
   // What publishing the sensors cost (the figures in README.md, "Sensors", come from here).
   // printf: after a SIGINT, roscpp has shut rosconsole down by now.
   const SensorPublishStats s = sensors_->stats();

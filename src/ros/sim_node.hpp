@@ -53,6 +53,11 @@ struct NodeOptions {
   // /gazebo/{pause_physics, unpause_physics, reset_simulation, reset_world}; false when a
   // GazeboWorld (gazebo_world.hpp) holds this node as one of its models and offers them itself.
   bool gazebo_services = true;
+  // Live view over the Foxglove WebSocket protocol (~foxglove_port; < 0: off, 0: any free port).
+  int foxglove_port = -1;
+  std::string foxglove_address = "127.0.0.1";
+  double foxglove_rate = 30.0;   // Hz (sim time) of its /tf, /joint_states, /odom
+  std::string robot_description;  // its /robot_description (the URDF)
 };
 
 class SimNode {

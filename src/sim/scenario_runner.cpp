@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "control/params.hpp"
 #include "control/params_edit.hpp"
@@ -313,6 +314,10 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
 
   std::optional<TickTiming> timing;
   if (options.timing_window > 0.0) timing.emplace(options.timing_window, s.period);
+  if (options.on_start) options.on_start(*sim);
+  // Real-time pace (options.real_time_factor): simulation time pace_sim is due at wall time pace_wall.
+  auto pace_wall = std::chrono::steady_clock::now();
+  double pace_sim = sim->time();
   for (std::uint64_t tick = 0; tick < total_ticks; ++tick) {
     if (options.interrupt != nullptr) {
       if (const int signal = options.interrupt->load(std::memory_order_relaxed); signal != 0) {
@@ -336,6 +341,17 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       }
     }
 
+    if (options.real_time_factor > 0.0) {
+      const auto due = pace_wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>((sim->time() - pace_sim) / options.real_time_factor));
+      const auto now = std::chrono::steady_clock::now();
+      if (now < due) {
+        std::this_thread::sleep_until(due);
+      } else if (now - due > std::chrono::duration<double>(kMaxPaceLag)) {
+        pace_wall = now;
+        pace_sim = sim->time();
+      }
+    }
     const auto tick_start = timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     const TickResult r = sim->step();
     if (timing) timing->tick(std::chrono::duration<double>(std::chrono::steady_clock::now() - tick_start).count(), sim->time());

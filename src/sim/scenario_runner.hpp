@@ -38,6 +38,8 @@
 
 namespace mechsim::sim {
 
+class Simulation;
+
 struct RunProgress {
   double time = 0.0;      // s of simulation time done
   double duration = 0.0;  // s in all
@@ -57,6 +59,13 @@ struct RunOptions {
   // > 0: measure every tick and write timing.csv with one row per this many s of simulated time
   // (tick_timing.hpp: tick time p50/p99/max, CPU time, resident memory); ScenarioResult::timing.
   double timing_window = 0.0;
+  // > 0: the run is paced so that simulation time runs this many times as fast as wall-clock
+  // time (1: real time, for watching it live); 0: as fast as it goes. A run that falls behind
+  // goes on from where it is instead of racing to catch up (Simulation's kMaxPaceLag).
+  double real_time_factor = 0.0;
+  // Called once the simulation is built and its controllers started, before the first tick
+  // (a live view attaches its observer here). It may throw: the run then does not start.
+  std::function<void(Simulation&)> on_start;
 };
 
 // Something that happened to the robot during a run (summary.json "events").

@@ -143,6 +143,10 @@ int run(int argc, char** argv) {
   options.tf_rate = pnh.param("tf_rate", 50.0);
   options.state_publish_rate = pnh.param("state_publish_rate", 50.0);
   options.clock_publish_rate = pnh.param("clock_publish_rate", 100.0);
+  options.foxglove_port = pnh.param("foxglove_port", -1);
+  options.foxglove_address = pnh.param<std::string>("foxglove_address", "127.0.0.1");
+  options.foxglove_rate = pnh.param("foxglove_rate", 30.0);
+  options.robot_description = urdf;
 
   bridge.world = pnh.param<std::string>("world", "empty");
   bridge.x = pnh.param("x", 0.0);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "live/live_stream.hpp"
 #include "ros/bridge/mechanism_statistics.hpp"
 #include "ros/bridge/sim_bridge.hpp"
 #include "sim/simulation.hpp"
@@ -23,6 +24,8 @@ struct SimBridge::Impl {
   std::shared_ptr<MechanismStatistics> statistics;  // PR2 controller manager outputs; null: off
   std::vector<std::string> link_names;  // description links the physics has (model_api.cpp)
   std::vector<std::size_t> link_index;  // their physics links
+  // After `simulation`: its observer refers to the stream, which goes first (after the ticks).
+  std::unique_ptr<live::LiveStream> live;
 };
 
 }  // namespace mechsim::ros

@@ -232,6 +232,13 @@ class SimBridge {
   // while paused (after applying a pending reset). False with `error` when the physics diverged.
   bool run_for(double duration, std::string* error);
   void add_observer(Observer observer);
+  // Live view (~foxglove_port; src/live/): serves the simulation over the Foxglove WebSocket
+  // protocol on address:port (port 0: any free one) with `urdf` as /robot_description and /tf,
+  // /joint_states, /odom at `rate` Hz (sim time); returns its ws:// address. Call before the loop
+  // starts. Throws std::runtime_error naming the address and port when it cannot listen.
+  std::string start_live_view(const std::string& address, int port, const std::string& urdf, double rate);
+  // What the live view sent ("" without one): clients, messages sent and dropped.
+  std::string live_view_summary() const;
   // Joint positions (rad or m) per description joint (robot().joints order); 0 for joints the
   // physics does not have (fixed). Base pose X_WB of the root link.
   void joint_positions(std::vector<double>& out) const;
