@@ -262,10 +262,12 @@ TEST_F(Pr2Node, LaserTiltSetPeriodicAndSetTrajCommandsReshapeTheSweep) {
   ASSERT_TRUE(call("/pr2/laser_tilt_controller/set_periodic_cmd", periodic, 10.0));
   const double t1 = periodic.response.start_time.toSec();
   EXPECT_GT(t1, 0.0);
-  // Set points come at 50 Hz of sim time (0.02 rad apart at 1 rad/s) and a loaded machine may
-  // drop a few: two whole periods, and the corners within 0.03 rad.
+  // Set points come at 50 Hz of sim time (0.02 rad apart at 1 rad/s), and the node's real-time
+  // publisher drops states while its thread is starved: under a loaded CI run one window of two
+  // periods once lost both top corners (0.15 rad of each). Four whole periods, the corners
+  // within 0.03 rad.
   double low = 0.0, high = 0.0;
-  ASSERT_TRUE(extremes(t1 + 0.1, 4.0, low, high));
+  ASSERT_TRUE(extremes(t1 + 0.1, 8.0, low, high));
   EXPECT_NEAR(low, -0.2, 0.03);
   EXPECT_NEAR(high, 0.8, 0.03);
 
