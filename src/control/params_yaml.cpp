@@ -15,7 +15,18 @@ std::string where(const std::string& source, const YAML::Mark& mark) {
   return source + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
 }
 
-std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& source, const std::string& path) {
+// Deeper than any parameter file: a YAML alias inside the node it names (`a: &x {c: *x}`) makes
+// yaml-cpp's node graph a cycle, which only a bound stops.
+constexpr int kMaxDepth = 128;
+
+std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& source, const std::string& path,
+                                      int depth = 0) {
+  if (depth > kMaxDepth) {
+    throw ParamsError(where(source, in.Mark()) + ": parameter " + path.substr(0, 200) + (path.size() > 200 ? "..." : "") +
+                          ": nested more than " + std::to_string(kMaxDepth) +
+                          " levels deep (a YAML alias inside the node its anchor names?)",
+                      path.substr(0, 200));
+  }
   auto out = std::make_unique<Params::Node>();
   out->line = in.Mark().line + 1;
   switch (in.Type()) {
@@ -33,7 +44,7 @@ std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& s
       out->kind = Params::Kind::List;
       std::size_t i = 0;
       for (const YAML::Node& item : in) {
-        out->list.push_back(convert(item, source, path + "[" + std::to_string(i++) + "]"));
+        out->list.push_back(convert(item, source, path + "[" + std::to_string(i++) + "]", depth + 1));
       }
       break;
     }
@@ -59,7 +70,7 @@ std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& s
                               child_path);
           }
         }
-        out->map.emplace_back(key, convert(entry.second, source, child_path));
+        out->map.emplace_back(key, convert(entry.second, source, child_path, depth + 1));
       }
       break;
   }

@@ -101,6 +101,14 @@ TEST(Params, MalformedYamlNamesFileAndLine) {
   EXPECT_THAT(e, HasSubstr("top level"));
 }
 
+// An alias inside the node its anchor names makes yaml-cpp's graph a cycle; it was a stack
+// overflow (found by controllers_fuzz). Now an error naming the file and the depth.
+TEST(Params, AnAliasInsideItsOwnAnchorIsAnErrorNotACrash) {
+  const std::string e = error_of([&] { (void)Params::from_yaml_string("a: &x\n  b: 1\n  c: *x\n", "cycle.yaml"); });
+  EXPECT_THAT(e, HasSubstr("cycle.yaml:"));
+  EXPECT_THAT(e, HasSubstr("nested more than 128 levels deep"));
+}
+
 TEST(Params, LoadsFromFile) {
   auto path = std::filesystem::temp_directory_path() / ("mechsim_params_test_" + std::to_string(::getpid()) + ".yaml");
   {
