@@ -367,6 +367,22 @@ ControllerStatistics read_statistics(std::uint64_t updates, std::uint64_t sum_ns
 
 std::vector<ControllerInfo> ControllerManager::list_controllers() const {
   std::lock_guard<std::mutex> lock(config_mutex_);
+  // Read between two equal, even values of transitions_: no switch or restart under way in the
+  // tick meanwhile. Such a change lasts a tick at most; a tick stalled longer (or a caller inside
+  // the tick) gets the states as they are after 200 ms rather than no answer.
+  const auto deadline = Clock::now() + std::chrono::milliseconds(200);
+  for (;;) {
+    const std::uint32_t before = transitions_.load(std::memory_order_acquire);
+    const bool late = Clock::now() >= deadline;
+    if ((before & 1U) == 0 || late) {
+      std::vector<ControllerInfo> out = list_entries();
+      if (late || transitions_.load(std::memory_order_acquire) == before) return out;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(50));
+  }
+}
+
+std::vector<ControllerInfo> ControllerManager::list_entries() const {
   std::vector<ControllerInfo> out;
   for (const auto& e : entries_) {
     ControllerInfo info;

@@ -159,6 +159,7 @@ class ControllerManager {
  private:
   struct Entry;
   Entry* find(const std::string& name) const;
+  std::vector<ControllerInfo> list_entries() const;  // under config_mutex_
   // Why `entry` may not claim what it claims beside the others loaded ("" when it may).
   std::string claim_conflict(const Entry& entry) const;
   void publish_list(std::vector<Entry*> list);
@@ -192,6 +193,11 @@ class ControllerManager {
   // can no longer take it back). Only switch_controllers() sets kPending, under config_mutex_.
   static constexpr int kNoSwitch = 0, kPending = 1, kApplying = 2;
   std::atomic<int> switch_state_{kNoSwitch};
+  // A sequence lock over the tick's state changes of several controllers at once (a switch
+  // applied, update()'s reset_controllers restart): odd while one is under way. Readers
+  // (list_controllers) retry until they read the states between two equal even values, so that
+  // a list never shows a switch half applied; the tick never waits for them.
+  std::atomic<std::uint32_t> transitions_{0};
 
   std::atomic<std::uint64_t> ticks_{0};
   std::atomic<std::uint64_t> tick_time_sum_ns_{0};

@@ -34,12 +34,14 @@ void ControllerManager::fail(Entry& entry, const char* prefix, const char* reaso
 }
 
 void ControllerManager::apply_switch(double time) noexcept {
+  transitions_.fetch_add(1, std::memory_order_acq_rel);
   for (Entry* e : pending_stop_) {
     if (e->state.load() == ControllerLifecycle::Running) stop(*e, time);
   }
   for (Entry* e : pending_start_) {
     if (e->state.load() != ControllerLifecycle::Running) start(*e, time);
   }
+  transitions_.fetch_add(1, std::memory_order_acq_rel);
   switch_state_.store(kNoSwitch, std::memory_order_release);
 }
 
@@ -122,11 +124,13 @@ void ControllerManager::update(double time, double period, bool reset_controller
     // ros_control's ControllerManager::update(time, period, true): every running controller is
     // stopped and started again (gazebo_ros_control asks for it when its e-stop is released).
     // Model plugins are not ros_control controllers: they run on.
+    transitions_.fetch_add(1, std::memory_order_acq_rel);
     for (Entry* e : list) {
       if (e->model_plugin || e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
       stop(*e, time);
       start(*e, time);
     }
+    transitions_.fetch_add(1, std::memory_order_acq_rel);
   }
   for (mechanism::JointState& joint : state_.joints) {
     if (joint.command_mode == HardwareInterface::Effort) joint.commanded_effort = 0.0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -59,6 +60,10 @@ constexpr const char* kYaml = R"(robot:
     type: test/Throwing
     joint: j3
     fail_at: 3
+  slow_start:
+    type: test/SlowStart
+    joint: j3
+    fail_at: 0
 )";
 
 // Drives a joint with effort 1 and fails at tick `fail_at` (returning an error or throwing).
@@ -70,7 +75,12 @@ class ScriptedController : public Controller {
     fail_at_ = params.get<int>("fail_at");
     return true;
   }
-  void starting(double) override { ticks_ = 0; }
+  void starting(double) override {
+    ticks_ = 0;
+    // A starting() that takes a while (allocating, reading parameters): it widens the window in
+    // which a switch is half applied.
+    if (slow_start) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
   UpdateStatus update(double, double) override {
     joint_.set_command(1.0);
     if (++ticks_ == fail_at_) {
@@ -81,6 +91,7 @@ class ScriptedController : public Controller {
   }
   void stopping(double) override { ++stops; }
   int stops = 0;
+  bool slow_start = false;
 
  private:
   bool throws_;
@@ -97,6 +108,11 @@ class ManagerTest : public ::testing::Test {
                 builtin_controller_registry()) {
     manager.registry().add("test/Failing", [] { return std::make_unique<ScriptedController>(false); });
     manager.registry().add("test/Throwing", [] { return std::make_unique<ScriptedController>(true); });
+    manager.registry().add("test/SlowStart", [] {
+      auto c = std::make_unique<ScriptedController>(false);
+      c->slow_start = true;
+      return c;
+    });
   }
   void load(const std::string& name) {
     auto r = manager.load_controller(name);
@@ -449,6 +465,55 @@ TEST_F(ManagerTest, SwitchesAndLoadsFromAnotherThreadWhileTicking) {
   rt.join();
   EXPECT_EQ(state_of("pos_j0"), ControllerLifecycle::Stopped);
   EXPECT_GT(manager.statistics().ticks, 0u);
+}
+
+// A switch that restarts several controllers (a simulation reset's) is applied by the tick one
+// controller after another; list_controllers() from another thread never shows it half applied
+// (the PR2 abuse test once listed four of nine controllers stopped by a reset's restart). Nor does
+// update()'s reset_controllers restart (an e-stop's release).
+TEST_F(ManagerTest, ListingWhileTheTickRestartsControllersNeverShowsAHalfAppliedSwitch) {
+  const std::vector<std::string> all = {"pos_j0", "vel_j1", "eff_j2", "slow_start"};
+  for (const std::string& c : all) load(c);
+  ASSERT_TRUE(manager.switch_controllers(all, {}, SwitchStrictness::Strict).ok);
+  tick();
+  std::atomic<bool> stop{false};
+  std::atomic<bool> reset_next{false};
+  std::thread rt([&] {
+    double t = time;
+    while (!stop) {
+      manager.update(t, 0.001, reset_next.exchange(false));
+      robot->step(0.001);
+      t += 0.001;
+    }
+  });
+  std::atomic<int> lists{0}, partial{0};
+  std::string example;
+  std::thread lister([&] {
+    while (!stop) {
+      int running = 0;
+      for (const ControllerInfo& info : manager.list_controllers()) running += info.state == ControllerLifecycle::Running;
+      ++lists;
+      if (running != 4 && partial++ == 0) example = std::to_string(running) + " of 4 running";
+    }
+  });
+  for (int k = 0; k < 40; ++k) {
+    if (k % 2 == 0) {
+      const auto s = manager.switch_controllers(all, all, SwitchStrictness::BestEffort);
+      ASSERT_TRUE(s.ok) << s.error;
+      ASSERT_TRUE(manager.wait_for_switch(5.0));
+    } else {
+      reset_next = true;
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+      while (reset_next && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+  }
+  stop = true;
+  rt.join();
+  lister.join();
+  EXPECT_GT(lists.load(), 40);
+  EXPECT_EQ(partial.load(), 0) << "lists that showed a restart half done, e.g. " << example;
+  EXPECT_EQ(state_of("slow_start"), ControllerLifecycle::Running);
 }
 
 }  // namespace
