@@ -5,7 +5,8 @@
 # cases, terrain). Crashes, hangs (> 1 s per input) and out-of-memory inputs are saved under
 # build/fuzz/artifacts/NAME; a fixed one is added to fuzz/regressions/NAME, which every ordinary
 # build replays as a unit test.
-# Usage: scripts/fuzz.sh [NAME|all] [SECONDS per target, default 60]
+# Usage: scripts/fuzz.sh [NAME[,NAME...]|all] [SECONDS per target, default 60]
+# Two lists at once (e.g. one per core) share the build: start the second once the first fuzzes.
 # MECHSIM_FUZZ_RUNS=N also stops a target after N executions (whichever comes first), e.g. to
 # reach the one million executions per target the reliability issue asks for.
 set -euo pipefail
@@ -28,8 +29,10 @@ mapfile -t all < <(ninja -C "$build" -t targets all | sed -n 's/^\([a-z0-9]*_fuz
 if [[ "$which" == all ]]; then
   targets=("${all[@]}")
 else
-  [[ " ${all[*]} " == *" $which "* ]] || { echo "fuzz.sh: no fuzz target '$which' (targets: ${all[*]})" >&2; exit 2; }
-  targets=("$which")
+  IFS=, read -r -a targets <<<"$which"
+  for t in "${targets[@]}"; do
+    [[ " ${all[*]} " == *" $t "* ]] || { echo "fuzz.sh: no fuzz target '$t' (targets: ${all[*]})" >&2; exit 2; }
+  done
 fi
 cmake --build "$build" -j "${MECHSIM_JOBS:-2}" --target "${targets[@]}"
 
