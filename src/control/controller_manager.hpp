@@ -155,6 +155,10 @@ class ControllerManager {
   // the same name; every running controller (model plugins aside) is stopped and started again
   // before this tick's update (gazebo_ros_control sets it on the tick its e-stop is released).
   void update(double time, double period, bool reset_controllers = false) noexcept;
+  // Asks the next update() to stop and start again every controller running then, model plugins
+  // included, after any pending switch (a simulation reset: each starting() sees the spawn
+  // state). Any thread; switches stay free meanwhile, as with gazebo_ros_control's reset flag.
+  void request_restart() noexcept { restart_requested_.store(true, std::memory_order_release); }
 
  private:
   struct Entry;
@@ -198,6 +202,7 @@ class ControllerManager {
   // (list_controllers) retry until they read the states between two equal even values, so that
   // a list never shows a switch half applied; the tick never waits for them.
   std::atomic<std::uint32_t> transitions_{0};
+  std::atomic<bool> restart_requested_{false};
 
   std::atomic<std::uint64_t> ticks_{0};
   std::atomic<std::uint64_t> tick_time_sum_ns_{0};

@@ -120,13 +120,17 @@ void ControllerManager::update(double time, double period, bool reset_controller
 
   mechanism::propagate_actuator_to_joint_position(model_, state_);
   if (switch_state_.load(std::memory_order_acquire) == kPending) try_apply_switch(time);
-  if (reset_controllers) {
+  const bool restart_all = restart_requested_.exchange(false, std::memory_order_acq_rel);
+  if (reset_controllers || restart_all) {
     // ros_control's ControllerManager::update(time, period, true): every running controller is
     // stopped and started again (gazebo_ros_control asks for it when its e-stop is released).
-    // Model plugins are not ros_control controllers: they run on.
+    // Model plugins are not ros_control controllers: they run on, except through a reset's
+    // request_restart() (Gazebo resets a model's plugins with the world).
     transitions_.fetch_add(1, std::memory_order_acq_rel);
     for (Entry* e : list) {
-      if (e->model_plugin || e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
+      if ((e->model_plugin && !restart_all) || e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) {
+        continue;
+      }
       stop(*e, time);
       start(*e, time);
     }

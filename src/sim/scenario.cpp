@@ -9,60 +9,13 @@
 #include <string_view>
 
 #include "control/params.hpp"
-#include "sim/soil_config.hpp"
+#include "sim/scenario_read.hpp"
 
 namespace mechsim::sim {
 namespace {
 
 namespace fs = std::filesystem;
-using control::Params;
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-[[noreturn]] void fail(const Params& at, const std::string& what) {
-  const std::string where = at.location().empty() ? at.path() : at.location() + ": " + at.path();
-  throw ScenarioError(where + ": " + what);
-}
-
-// A scalar's text whatever its YAML type (xacro arguments are strings on the command line).
-std::string scalar_text(const Params& p) {
-  try {
-    return p.as<std::string>();
-  } catch (const std::exception&) {
-  }
-  try {
-    const double v = p.as<double>();
-    std::string s = std::to_string(v);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-  } catch (const std::exception&) {
-  }
-  try {
-    return p.as<bool>() ? "true" : "false";
-  } catch (const std::exception&) {
-  }
-  fail(p, "expected a scalar value");
-}
-
-// Rejects keys outside `allowed` (a misspelt bound must not be ignored).
-void only_keys(const Params& p, std::initializer_list<const char*> allowed) {
-  if (!p.is_map()) fail(p, "expected a map");
-  for (const std::string& k : p.keys()) {
-    bool ok = false;
-    std::string list;
-    for (const char* a : allowed) {
-      ok = ok || k == a;
-      list += (list.empty() ? "" : ", ") + std::string(a);
-    }
-    if (!ok) fail(p.child(k), "unknown key '" + k + "' (expected one of: " + list + ")");
-  }
-}
-
-std::string resolve_path(const fs::path& base, const std::string& file) {
-  const fs::path p(file);
-  return (p.is_absolute() ? p : (base / p)).lexically_normal().string();
-}
+using namespace scenario_read;
 
 control::Twist read_twist(const Params& p) {
   only_keys(p, {"vx", "vy", "wz", "linear", "angular"});
@@ -71,25 +24,6 @@ control::Twist read_twist(const Params& p) {
   t.linear.y = p.get<double>("vy", p.get<double>("linear/y", 0.0));
   t.angular.z = p.get<double>("wz", p.get<double>("angular/z", 0.0));
   return t;
-}
-
-double finite(const Params& p, std::string_view key, double fallback) {
-  if (!p.has(key)) return fallback;
-  const double v = p.get<double>(key);
-  if (!std::isfinite(v)) fail(p.child(key), "must be finite");
-  return v;
-}
-
-std::vector<double> values_of(const Params& point, const char* key, std::size_t expected) {
-  const Params v = point.child(key);
-  const auto values = v.as<std::vector<double>>();
-  if (expected != 0 && values.size() != expected) {
-    fail(v, "has " + std::to_string(values.size()) + " values, expected " + std::to_string(expected) + " (one per joint)");
-  }
-  for (double x : values) {
-    if (!std::isfinite(x)) fail(v, "values must be finite");
-  }
-  return values;
 }
 
 std::vector<control::JointTolerance> read_tolerances(const Params& p) {
@@ -208,233 +142,6 @@ TimelineEvent read_event(const Params& e) {
   return ev;
 }
 
-Check read_check(const Params& c) {
-  Check check;
-  const std::vector<std::string> keys = c.keys();
-  if (keys.size() != 1) {
-    fail(c, "a check is a map with one key (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, tracking, laser_range, imu_tilt)");
-  }
-  const std::string& kind = keys.front();
-  const Params p = c.child(kind);
-  check.text = kind;
-  if (kind == "reach") {
-    check.kind = Check::Kind::Reach;
-    only_keys(p, {"x", "y", "within", "by"});
-    check.x = p.get<double>("x");
-    check.y = p.get<double>("y");
-    check.within = p.get<double>("within");
-    check.by = p.get<double>("by");
-  } else if (kind == "final_pose") {
-    check.kind = Check::Kind::FinalPose;
-    only_keys(p, {"x", "y", "within", "lateral_within"});
-    check.x = p.get<double>("x");
-    check.y = p.get<double>("y");
-    check.within = p.get<double>("within");
-    if (p.has("lateral_within")) check.lateral_within = p.get<double>("lateral_within");
-  } else if (kind == "final_heading") {
-    check.kind = Check::Kind::FinalHeading;
-    only_keys(p, {"yaw_deg", "within_deg"});
-    check.yaw = p.get<double>("yaw_deg") * kDeg;
-    check.within_angle = p.get<double>("within_deg") * kDeg;
-  } else if (kind == "direction") {
-    check.kind = Check::Kind::Direction;
-    only_keys(p, {"deg", "within_deg"});
-    check.yaw = p.get<double>("deg") * kDeg;
-    check.within_angle = p.get<double>("within_deg") * kDeg;
-  } else if (kind == "upright") {
-    check.kind = Check::Kind::Upright;
-    only_keys(p, {"max_tilt_deg"});
-    check.max_tilt = p.get<double>("max_tilt_deg") * kDeg;
-  } else if (kind == "odometry") {
-    check.kind = Check::Kind::Odometry;
-    only_keys(p, {"max_error_fraction", "max_yaw_error_fraction"});
-    if (p.has("max_error_fraction")) check.max_error_fraction = p.get<double>("max_error_fraction");
-    if (p.has("max_yaw_error_fraction")) check.max_yaw_error_fraction = p.get<double>("max_yaw_error_fraction");
-    if (!check.max_error_fraction && !check.max_yaw_error_fraction) fail(p, "needs max_error_fraction and/or max_yaw_error_fraction");
-  } else if (kind == "distance") {
-    check.kind = Check::Kind::Distance;
-    only_keys(p, {"min", "max"});
-    check.min_distance = p.get<double>("min", 0.0);
-    check.max_distance = p.get<double>("max", 1e300);
-  } else if (kind == "trajectory" || kind == "gripper") {
-    const bool trajectory = kind == "trajectory";
-    check.kind = trajectory ? Check::Kind::Trajectory : Check::Kind::Gripper;
-    if (trajectory) {
-      only_keys(p, {"controller", "goal", "max_rms_error", "max_error", "result"});
-    } else {
-      only_keys(p, {"controller", "goal", "reached", "stalled", "by", "position", "within", "effort", "effort_within"});
-    }
-    check.controller = p.get<std::string>("controller");
-    if (p.has("goal")) {
-      const int goal = p.get<int>("goal");
-      if (goal < 1) fail(p.child("goal"), "is the 1-based index of the controller's goal in the timeline");
-      check.goal = static_cast<std::size_t>(goal);
-    }
-    auto positive = [&](const char* key) {
-      const double v = p.get<double>(key);
-      if (!(v >= 0.0) || !std::isfinite(v)) fail(p.child(key), "must be >= 0");
-      return v;
-    };
-    if (trajectory) {
-      if (p.has("max_rms_error")) check.max_rms_error = positive("max_rms_error");
-      if (p.has("max_error")) check.max_abs_error = positive("max_error");
-      if (p.has("result")) {
-        const std::string r = p.get<std::string>("result");
-        using Code = control::TrajectoryResultCode;
-        for (Code code : {Code::Successful, Code::InvalidGoal, Code::InvalidJoints, Code::OldHeaderTimestamp,
-                          Code::PathToleranceViolated, Code::GoalToleranceViolated}) {
-          if (r == control::result_code_name(code)) check.result = code;
-        }
-        if (!check.result) {
-          fail(p.child("result"), "unknown result code '" + r +
-                                      "' (SUCCESSFUL, INVALID_GOAL, INVALID_JOINTS, OLD_HEADER_TIMESTAMP, "
-                                      "PATH_TOLERANCE_VIOLATED, GOAL_TOLERANCE_VIOLATED)");
-        }
-      }
-      if (!check.max_rms_error && !check.max_abs_error && !check.result) fail(p, "needs max_rms_error, max_error and/or result");
-    } else {
-      if (p.has("reached")) check.reached = p.get<bool>("reached");
-      if (p.has("stalled")) check.stalled = p.get<bool>("stalled");
-      if (p.has("by")) check.finished_by = positive("by");
-      if (p.has("position")) {
-        check.position = p.get<double>("position");
-        check.within = positive("within");
-      } else if (p.has("within")) {
-        fail(p.child("within"), "goes with position");
-      }
-      if (p.has("effort")) {
-        check.effort = p.get<double>("effort");
-        check.effort_within = positive("effort_within");
-      } else if (p.has("effort_within")) {
-        fail(p.child("effort_within"), "goes with effort");
-      }
-      if (!check.reached && !check.stalled && !check.finished_by && !check.position && !check.effort) {
-        fail(p, "needs reached, stalled, by, position and/or effort");
-      }
-    }
-  } else if (kind == "joint") {
-    check.kind = Check::Kind::Joint;
-    only_keys(p, {"name", "at", "position", "within"});
-    check.joint = p.get<std::string>("name");
-    if (p.has("at")) {
-      check.at = p.get<double>("at");
-      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("at"), "must be >= 0 s");
-    }
-    check.position = finite(p, "position", 0.0);
-    if (!p.has("position")) fail(p, "needs position (and within)");
-    check.within = p.get<double>("within");
-    if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0");
-  } else if (kind == "tracking") {
-    check.kind = Check::Kind::Tracking;
-    only_keys(p, {"controller", "max_error", "after"});
-    check.controller = p.get<std::string>("controller");
-    check.max_abs_error = p.get<double>("max_error");
-    if (!(*check.max_abs_error >= 0.0) || !std::isfinite(*check.max_abs_error)) fail(p.child("max_error"), "must be >= 0");
-    if (p.has("after")) {
-      check.at = p.get<double>("after");
-      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("after"), "must be >= 0 s");
-    }
-  } else if (kind == "laser_range" || kind == "imu_tilt") {
-    const bool laser = kind == "laser_range";
-    check.kind = laser ? Check::Kind::LaserRange : Check::Kind::ImuTilt;
-    if (laser) only_keys(p, {"sensor", "angle_deg", "range", "within", "at"});
-    else only_keys(p, {"sensor", "tilt_deg", "within_deg", "at"});
-    check.sensor = p.get<std::string>("sensor");
-    if (p.has("at")) {
-      check.at = p.get<double>("at");
-      if (!(*check.at >= 0.0) || !std::isfinite(*check.at)) fail(p.child("at"), "must be >= 0 s");
-    }
-    if (laser) {
-      check.angle = finite(p, "angle_deg", 0.0) * kDeg;
-      const std::string range = scalar_text(p.child("range"));
-      check.range = range == "inf" ? HUGE_VAL : p.get<double>("range");
-      if (!(check.range > 0.0)) fail(p.child("range"), "must be > 0 m, or inf");
-      check.within = p.get<double>("within");
-      if (!(check.within >= 0.0)) fail(p.child("within"), "must be >= 0 m");
-    } else {
-      check.tilt = p.get<double>("tilt_deg") * kDeg;
-      check.within_angle = p.get<double>("within_deg") * kDeg;
-      if (!(check.within_angle >= 0.0)) fail(p.child("within_deg"), "must be >= 0 deg");
-    }
-  } else if (kind == "slip") {
-    check.kind = Check::Kind::Slip;
-    only_keys(p, {"wheel", "from", "to", "min_mean", "max_mean"});
-    check.wheel = p.get<std::string>("wheel", "");
-    check.from = finite(p, "from", 0.0);
-    check.to = finite(p, "to", 1e300);
-    if (!(check.from >= 0.0 && check.to > check.from)) fail(p, "needs 0 <= from < to (s)");
-    if (p.has("min_mean")) check.min_mean = finite(p, "min_mean", 0.0);
-    if (p.has("max_mean")) check.max_mean = finite(p, "max_mean", 0.0);
-    if (!check.min_mean && !check.max_mean) fail(p, "needs min_mean and/or max_mean");
-  } else {
-    fail(c, "unknown check '" + kind + "' (reach, final_pose, final_heading, direction, upright, odometry, distance, trajectory, gripper, joint, tracking, laser_range, imu_tilt, slip)");
-  }
-  return check;
-}
-
-std::vector<physics::WorldBox> read_boxes(const Params& list) {
-  if (!list.is_list()) fail(list, "expected a list of boxes");
-  std::vector<physics::WorldBox> boxes;
-  for (const Params& b : list.items()) {
-    only_keys(b, {"name", "shape", "size", "radius", "length", "x", "y", "z", "roll", "pitch", "yaw", "quat", "fixed", "mass"});
-    physics::WorldBox box;
-    box.name = b.get<std::string>("name");
-    for (const physics::WorldBox& other : boxes) {
-      if (other.name == box.name) fail(b.child("name"), "box '" + box.name + "' is named twice");
-    }
-    const std::string shape = b.get<std::string>("shape", "box");
-    auto positive = [&](const char* key, const char* what) {
-      const double v = finite(b, key, 0.0);
-      if (!b.has(key)) fail(b, std::string("a ") + shape + " needs '" + key + "' (" + what + ")");
-      if (!(v > 0.0)) fail(b.child(key), "must be > 0 m");
-      return v;
-    };
-    auto none_of = [&](std::initializer_list<const char*> keys) {
-      for (const char* k : keys)
-        if (b.has(k)) fail(b.child(k), "a " + shape + " takes no '" + k + "'");
-    };
-    if (shape == "box") {
-      none_of({"radius", "length"});
-      const auto size = values_of(b, "size", 3);
-      for (double v : size) {
-        if (!(v > 0.0)) fail(b.child("size"), "edge lengths must be > 0 m");
-      }
-      box.size = {size[0], size[1], size[2]};
-    } else if (shape == "cylinder") {
-      none_of({"size"});
-      const double d = 2.0 * positive("radius", "m"), l = positive("length", "m, along its z axis");
-      box.shape = physics::WorldBox::Shape::Cylinder;
-      box.size = {d, d, l};
-    } else if (shape == "sphere") {
-      none_of({"size", "length"});
-      const double d = 2.0 * positive("radius", "m");
-      box.shape = physics::WorldBox::Shape::Sphere;
-      box.size = {d, d, d};
-    } else {
-      fail(b.child("shape"), "expected box, cylinder or sphere, got '" + shape + "'");
-    }
-    box.pose.position = {finite(b, "x", 0.0), finite(b, "y", 0.0), finite(b, "z", 0.0)};
-    if (b.has("quat")) {
-      if (b.has("roll") || b.has("pitch") || b.has("yaw")) fail(b.child("quat"), "give quat or roll/pitch/yaw, not both");
-      const auto q = values_of(b, "quat", 4);
-      const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-      if (!(n > 1e-9)) fail(b.child("quat"), "must not be zero");
-      box.pose.orientation = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
-    } else {
-      // ZYX: q = qz(yaw) qy(pitch) qx(roll).
-      const double r = finite(b, "roll", 0.0) / 2, p = finite(b, "pitch", 0.0) / 2, y = finite(b, "yaw", 0.0) / 2;
-      const double cr = std::cos(r), sr = std::sin(r), cp = std::cos(p), sp = std::sin(p), cy = std::cos(y), sy = std::sin(y);
-      box.pose.orientation = {cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
-                              cr * cp * sy - sr * sp * cy};
-    }
-    box.fixed = b.get<bool>("fixed", true);
-    box.mass = finite(b, "mass", box.mass);
-    if (!(box.mass > 0.0)) fail(b.child("mass"), "must be > 0 kg");
-    boxes.push_back(box);
-  }
-  return boxes;
-}
-
 // controllers.params: every leaf (scalar or list) must name a parameter of the controllers file.
 void read_controller_params(const Params& overlay, const Params& file_params, const std::string& key,
                             std::vector<ControllerParam>& out) {
@@ -458,20 +165,6 @@ void read_controller_params(const Params& overlay, const Params& file_params, co
 }
 
 }  // namespace
-
-WorldConfig read_world_config(const Params& world, const fs::path& base) {
-  WorldConfig w;
-  const std::string name = world.get<std::string>("name", "empty");
-  w.name = (name == "empty" || name == "mars_yard_2024" || name == "slope") ? name : resolve_path(base, name);
-  if (world.has("slope_deg")) w.slope_deg = finite(world, "slope_deg", 10.0);
-  if (auto soil = world.find("soil")) w.soil = read_soil(*soil);
-  w.seed = static_cast<std::uint64_t>(world.get<int>("seed", static_cast<int>(physics::kMarsYardDefaultSeed)));
-  if (world.has("size_x")) w.heightmap.size_x = world.get<double>("size_x");
-  if (world.has("size_y")) w.heightmap.size_y = world.get<double>("size_y");
-  if (world.has("z_min")) w.heightmap.z_min = world.get<double>("z_min");
-  if (world.has("z_max")) w.heightmap.z_max = world.get<double>("z_max");
-  return w;
-}
 
 Scenario load_scenario(const std::string& path) {
   if (!fs::exists(path)) throw ScenarioError(path + ": no such scenario file");

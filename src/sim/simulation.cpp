@@ -463,13 +463,10 @@ void Simulation::reset() {
     physics_effort_limit_[j] = 0.0;
   }
   read_physics();
-  std::vector<std::string> running;
-  for (const control::ControllerInfo& info : manager_->list_controllers()) {
-    if (info.state == control::ControllerLifecycle::Running) running.push_back(info.name);
-  }
-  // Restart (stop + start in one switch) so each controller's starting() sees the spawn state;
-  // the next tick applies it.
-  if (!running.empty()) manager_->switch_controllers(running, running, control::SwitchStrictness::BestEffort);
+  // Every running controller and model plugin is stopped and started again at the next tick, so
+  // that each starting() sees the spawn state. Not a switch: one pending (or asked for before
+  // that tick) neither blocks the restart nor is refused because of it.
+  manager_->request_restart();
   sensors_.sample_all(*physics_, time());
   sensor_handles_.fill(sensors_);
   ++resets_;

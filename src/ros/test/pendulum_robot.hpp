@@ -1,27 +1,12 @@
 #pragma once
-// The ROS unit tests' small robot: a pendulum fixed to the world whose 1 kg bob, 0.5 m out,
-// starts level (it swings under gravity about y), with one simple transmission (actuator "m",
-// the given reduction, effort interface); joint limits +-3 rad, 50 N m, 10 rad/s.
+// The ROS unit tests' small robot: sim/test/pendulum_urdf.hpp's pendulum with its bob level (it
+// swings under gravity about y).
 #include <string>
+
+#include "../../sim/test/pendulum_urdf.hpp"
 
 namespace mechsim::ros::test {
 
-inline std::string pendulum_urdf(int reduction) {
-  return R"(<robot name="pendulum">
-  <link name="world"/>
-  <joint name="fix" type="fixed"><parent link="world"/><child link="post"/><origin xyz="0 0 1"/></joint>
-  <link name="post"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="hinge" type="revolute">
-    <parent link="post"/><child link="bob"/><axis xyz="0 1 0"/>
-    <limit lower="-3" upper="3" effort="50" velocity="10"/>
-  </joint>
-  <link name="bob"><inertial><origin xyz="0.5 0 0"/><mass value="1"/>
-    <inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
-    <joint name="hinge"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="m"><mechanicalReduction>)" +
-         std::to_string(reduction) + R"(</mechanicalReduction></actuator></transmission>
-</robot>)";
-}
+inline std::string pendulum_urdf(int reduction) { return mechsim::test::pendulum_urdf(reduction, true); }
 
 }  // namespace mechsim::ros::test

@@ -18,6 +18,7 @@
 
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
+#include "sim/test/pendulum_urdf.hpp"
 
 namespace mechsim::sim {
 namespace {
@@ -32,20 +33,7 @@ std::string test_folder_name() {
   return name;
 }
 
-constexpr const char* kPendulum = R"(<robot name="pendulum">
-  <link name="world"/>
-  <joint name="fix" type="fixed"><parent link="world"/><child link="post"/><origin xyz="0 0 1"/></joint>
-  <link name="post"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="hinge" type="revolute">
-    <parent link="post"/><child link="bob"/><axis xyz="0 1 0"/>
-    <limit lower="-3" upper="3" effort="50" velocity="10"/>
-  </joint>
-  <link name="bob"><inertial><origin xyz="0 0 -0.5"/><mass value="1"/>
-    <inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
-    <joint name="hinge"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="m"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>
-</robot>)";
+const std::string kPendulum = mechsim::test::pendulum_urdf(1);
 
 constexpr const char* kControllers = R"(p:
   arm:

@@ -14,26 +14,12 @@
 #include "control/ports.hpp"
 #include "description/urdf/urdf_parser.hpp"
 #include "sim/simulation.hpp"
+#include "sim/test/pendulum_urdf.hpp"
 
 namespace mechsim::sim {
 namespace {
 
-// A pendulum of 1 kg at 0.5 m on a revolute joint about y, fixed to the world, with a simple
-// transmission (reduction 10) so that the tick goes through actuator space.
-constexpr const char* kPendulum = R"(<robot name="pendulum">
-  <link name="world"/>
-  <joint name="fix" type="fixed"><parent link="world"/><child link="post"/><origin xyz="0 0 1"/></joint>
-  <link name="post"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <joint name="hinge" type="revolute">
-    <parent link="post"/><child link="bob"/><axis xyz="0 1 0"/>
-    <limit lower="-3" upper="3" effort="50" velocity="10"/>
-  </joint>
-  <link name="bob"><inertial><origin xyz="0 0 -0.5"/><mass value="1"/>
-    <inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
-  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
-    <joint name="hinge"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="m"><mechanicalReduction>10</mechanicalReduction></actuator></transmission>
-</robot>)";
+const std::string kPendulum = mechsim::test::pendulum_urdf(10);  // reduction 10, the bob hanging
 
 constexpr const char* kControllers = R"(
 hold: {type: effort_controllers/JointPositionController, joint: hinge, pid: {p: 200.0, d: 20.0, i: 0.0}}
@@ -99,6 +85,24 @@ TEST(Simulation, ResetGoesBackToTheSpawnStateRestartsControllersAndKeepsTimeMono
   const auto info = sim->controllers().controller_info("push");
   ASSERT_TRUE(info);
   EXPECT_EQ(info->state, control::ControllerLifecycle::Running);
+}
+
+// gazebo_ros_control restarts the controllers after a reset with its own flag, not a switch: a
+// switch_controller right after /gazebo/reset_simulation (paused, as users reset) is accepted
+// and applied at the next tick together with the restart.
+TEST(Simulation, ASwitchRightAfterAResetIsAcceptedAndAppliedWithTheRestart) {
+  auto sim = make();
+  sim->load_and_start({"push"});
+  ASSERT_TRUE(sim->step());
+  ASSERT_TRUE(sim->load_controller("hold").ok);
+  sim->pause();
+  sim->reset();
+  const control::SwitchResult r = sim->controllers().switch_controllers({"hold"}, {"push"}, control::SwitchStrictness::Strict);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(sim->step());
+  EXPECT_EQ(sim->controllers().controller_info("push")->state, control::ControllerLifecycle::Stopped);
+  EXPECT_EQ(sim->controllers().controller_info("hold")->state, control::ControllerLifecycle::Running);
+  EXPECT_FALSE(sim->controllers().switch_pending());
 }
 
 TEST(Simulation, HoldsAPositionAgainstGravityThroughThePid) {

@@ -1,0 +1,95 @@
+// The scenario's `world:`: the world's name, seed, heightmap extent and soil, and its objects
+// (boxes, cylinders, spheres).
+#include <cmath>
+#include <string>
+
+#include "sim/scenario_read.hpp"
+#include "sim/soil_config.hpp"
+
+namespace mechsim::sim {
+
+namespace fs = std::filesystem;
+using namespace scenario_read;
+
+namespace scenario_read {
+
+std::vector<physics::WorldBox> read_boxes(const Params& list) {
+  if (!list.is_list()) fail(list, "expected a list of boxes");
+  std::vector<physics::WorldBox> boxes;
+  for (const Params& b : list.items()) {
+    only_keys(b, {"name", "shape", "size", "radius", "length", "x", "y", "z", "roll", "pitch", "yaw", "quat", "fixed", "mass"});
+    physics::WorldBox box;
+    box.name = b.get<std::string>("name");
+    for (const physics::WorldBox& other : boxes) {
+      if (other.name == box.name) fail(b.child("name"), "box '" + box.name + "' is named twice");
+    }
+    const std::string shape = b.get<std::string>("shape", "box");
+    auto positive = [&](const char* key, const char* what) {
+      const double v = finite(b, key, 0.0);
+      if (!b.has(key)) fail(b, std::string("a ") + shape + " needs '" + key + "' (" + what + ")");
+      if (!(v > 0.0)) fail(b.child(key), "must be > 0 m");
+      return v;
+    };
+    auto none_of = [&](std::initializer_list<const char*> keys) {
+      for (const char* k : keys)
+        if (b.has(k)) fail(b.child(k), "a " + shape + " takes no '" + k + "'");
+    };
+    if (shape == "box") {
+      none_of({"radius", "length"});
+      const auto size = values_of(b, "size", 3);
+      for (double v : size) {
+        if (!(v > 0.0)) fail(b.child("size"), "edge lengths must be > 0 m");
+      }
+      box.size = {size[0], size[1], size[2]};
+    } else if (shape == "cylinder") {
+      none_of({"size"});
+      const double d = 2.0 * positive("radius", "m"), l = positive("length", "m, along its z axis");
+      box.shape = physics::WorldBox::Shape::Cylinder;
+      box.size = {d, d, l};
+    } else if (shape == "sphere") {
+      none_of({"size", "length"});
+      const double d = 2.0 * positive("radius", "m");
+      box.shape = physics::WorldBox::Shape::Sphere;
+      box.size = {d, d, d};
+    } else {
+      fail(b.child("shape"), "expected box, cylinder or sphere, got '" + shape + "'");
+    }
+    box.pose.position = {finite(b, "x", 0.0), finite(b, "y", 0.0), finite(b, "z", 0.0)};
+    if (b.has("quat")) {
+      if (b.has("roll") || b.has("pitch") || b.has("yaw")) fail(b.child("quat"), "give quat or roll/pitch/yaw, not both");
+      const auto q = values_of(b, "quat", 4);
+      const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+      if (!(n > 1e-9)) fail(b.child("quat"), "must not be zero");
+      box.pose.orientation = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+    } else {
+      // ZYX: q = qz(yaw) qy(pitch) qx(roll).
+      const double r = finite(b, "roll", 0.0) / 2, p = finite(b, "pitch", 0.0) / 2, y = finite(b, "yaw", 0.0) / 2;
+      const double cr = std::cos(r), sr = std::sin(r), cp = std::cos(p), sp = std::sin(p), cy = std::cos(y), sy = std::sin(y);
+      box.pose.orientation = {cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+                              cr * cp * sy - sr * sp * cy};
+    }
+    box.fixed = b.get<bool>("fixed", true);
+    box.mass = finite(b, "mass", box.mass);
+    if (!(box.mass > 0.0)) fail(b.child("mass"), "must be > 0 kg");
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+}  // namespace scenario_read
+
+WorldConfig read_world_config(const Params& world, const fs::path& base) {
+  WorldConfig w;
+  const std::string name = world.get<std::string>("name", "empty");
+  w.name = (name == "empty" || name == "mars_yard_2024" || name == "slope") ? name : resolve_path(base, name);
+  if (world.has("slope_deg")) w.slope_deg = finite(world, "slope_deg", 10.0);
+  if (auto soil = world.find("soil")) w.soil = read_soil(*soil);
+  w.seed = static_cast<std::uint64_t>(world.get<int>("seed", static_cast<int>(physics::kMarsYardDefaultSeed)));
+  if (world.has("size_x")) w.heightmap.size_x = world.get<double>("size_x");
+  if (world.has("size_y")) w.heightmap.size_y = world.get<double>("size_y");
+  if (world.has("z_min")) w.heightmap.z_min = world.get<double>("z_min");
+  if (world.has("z_max")) w.heightmap.z_max = world.get<double>("z_max");
+  return w;
+}
+
+}  // namespace mechsim::sim
