@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -45,27 +47,23 @@ void stamp(std::string& out, double t) {
   out += '}';
 }
 
-void vec3(std::string& out, const Vec3& v) {
-  out += "{\"x\":";
-  number(out, v.x);
-  out += ",\"y\":";
-  number(out, v.y);
-  out += ",\"z\":";
-  number(out, v.z);
+// {"k1":v1,"k2":v2,...} of numbers.
+void numbers(std::string& out, std::initializer_list<std::pair<const char*, double>> fields) {
+  char sep = '{';
+  for (const auto& [key, value] : fields) {
+    out += sep;
+    out += '"';
+    out += key;
+    out += "\":";
+    number(out, value);
+    sep = ',';
+  }
   out += '}';
 }
 
-void quat(std::string& out, const Quat& q) {
-  out += "{\"x\":";
-  number(out, q.x);
-  out += ",\"y\":";
-  number(out, q.y);
-  out += ",\"z\":";
-  number(out, q.z);
-  out += ",\"w\":";
-  number(out, q.w);
-  out += '}';
-}
+void vec3(std::string& out, const Vec3& v) { numbers(out, {{"x", v.x}, {"y", v.y}, {"z", v.z}}); }
+
+void quat(std::string& out, const Quat& q) { numbers(out, {{"x", q.x}, {"y", q.y}, {"z", q.z}, {"w", q.w}}); }
 
 Quat conjugate(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
 

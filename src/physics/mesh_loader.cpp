@@ -99,4 +99,27 @@ MeshBytes load_mesh_for_mujoco(const std::string& path) {
   return {".stl", scene_to_binary_stl(*scene, path), true};
 }
 
+MeshBounds mesh_bounds(const std::string& path, const double scale[3]) {
+  Assimp::Importer importer;
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_PreTransformVertices);
+  if (scene == nullptr)
+    throw PhysicsError("mesh '" + path + "': assimp could not read it: " + importer.GetErrorString());
+  MeshBounds b;
+  bool any = false;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene->mMeshes[m];
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const double p[3] = {mesh.mVertices[v].x * scale[0], mesh.mVertices[v].y * scale[1], mesh.mVertices[v].z * scale[2]};
+      for (int i = 0; i < 3; ++i) {
+        b.min[i] = any ? std::min(b.min[i], p[i]) : p[i];
+        b.max[i] = any ? std::max(b.max[i], p[i]) : p[i];
+      }
+      any = true;
+    }
+  }
+  if (!any) throw PhysicsError("mesh '" + path + "': no vertices");
+  return b;
+}
+
 }  // namespace mechsim::physics

@@ -18,4 +18,12 @@ struct MeshBytes {
 // Throws PhysicsError naming the file and what failed (unreadable, no triangles, ...).
 MeshBytes load_mesh_for_mujoco(const std::string& path);
 
+// The axis-aligned bounds of a mesh file's vertices in its own frame (m, as authored, node
+// transforms applied, as load_mesh_for_mujoco), times `scale`. Throws PhysicsError as it does.
+struct MeshBounds {
+  double min[3] = {0.0, 0.0, 0.0};
+  double max[3] = {0.0, 0.0, 0.0};
+};
+MeshBounds mesh_bounds(const std::string& path, const double scale[3]);
+
 }  // namespace mechsim::physics

@@ -210,6 +210,10 @@ class Writer {
       const std::string where = "world box '" + b.name + "'";
       if (b.name.empty()) throw PhysicsError("world: a box has no name");
       if (!names.insert(b.name).second) throw PhysicsError(where + ": the name is used twice");
+      if (b.shape == WorldBox::Shape::Mesh) {
+        write_mesh_object(b, where, friction);
+        continue;
+      }
       if (!(b.size.x > 0.0 && b.size.y > 0.0 && b.size.z > 0.0) || !std::isfinite(b.size.x + b.size.y + b.size.z))
         throw PhysicsError(where + ": size must be finite and > 0 along x, y and z (m)");
       if (b.shape != WorldBox::Shape::Box && b.size.x != b.size.y)
@@ -241,6 +245,23 @@ class Writer {
            << vec(inertia) << "\"/>\n      " << geom << "/>\n    </body>\n";
       }
     }
+  }
+
+  // A fixed mesh object: a world geom of its mesh asset (MuJoCo collides with its convex hull; rays
+  // and cameras see its triangles). One whose mesh could not be loaded or compiled is left out
+  // with a warning, as a robot's mesh geom is.
+  void write_mesh_object(const WorldBox& b, const std::string& where, const std::string& friction) {
+    if (!b.fixed) throw PhysicsError(where + ": a mesh object must be fixed (mechsim holds free boxes, cylinders and spheres)");
+    const auto it = b.mesh_path.empty() ? usable_.end() : usable_.find(mesh_key(b.mesh_path, b.mesh_scale));
+    if (it == usable_.end()) {
+      const auto any = b.mesh_path.empty() ? all_.end() : all_.find(mesh_key(b.mesh_path, b.mesh_scale));
+      const std::string why = any == all_.end() ? "no mesh file" : any->second->error.empty() ? "MuJoCo cannot compile it" : any->second->error;
+      doc_.warnings.push_back(where + ": mesh '" + b.mesh_path + "' left out (" + why + ")");
+      return;
+    }
+    x_ << "    <geom name=\"box:" << escape(b.name) << "\" type=\"mesh\" mesh=\"" << it->second->name
+       << "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << friction << "\""
+       << pose_attrs(b.pose) << "/>\n";
   }
 
   void write_body(std::size_t index, int indent) {
@@ -342,28 +363,36 @@ class Writer {
   MjcfDocument doc_;
 };
 
+void add_mesh(const std::string& path, const Vec3& scale, std::map<std::string, std::size_t>& index,
+              std::vector<MeshAsset>& out) {
+  const std::string key = mesh_key(path, scale);
+  if (index.count(key)) return;
+  MeshAsset asset;
+  asset.name = "mesh" + std::to_string(out.size());
+  asset.path = path;
+  asset.scale = scale;
+  out.push_back(std::move(asset));
+  index[key] = out.size() - 1;
+}
+
 void collect_from(const std::vector<PlannedGeom>& geoms, std::map<std::string, std::size_t>& index,
                   std::vector<MeshAsset>& out) {
   for (const PlannedGeom& g : geoms) {
     if (g.geometry.type != GeometryType::Mesh || g.geometry.mesh_path.empty()) continue;
-    const std::string key = mesh_key(g.geometry.mesh_path, g.geometry.mesh_scale);
-    if (index.count(key)) continue;
-    MeshAsset asset;
-    asset.name = "mesh" + std::to_string(out.size());
-    asset.path = g.geometry.mesh_path;
-    asset.scale = g.geometry.mesh_scale;
-    out.push_back(std::move(asset));
-    index[key] = out.size() - 1;
+    add_mesh(g.geometry.mesh_path, g.geometry.mesh_scale, index, out);
   }
 }
 
 }  // namespace
 
-std::vector<MeshAsset> collect_meshes(const BodyPlan& plan) {
+std::vector<MeshAsset> collect_meshes(const BodyPlan& plan, const WorldSpec* world) {
   std::vector<MeshAsset> out;
   std::map<std::string, std::size_t> index;
   collect_from(plan.world_geoms, index, out);
   for (const PlannedBody& b : plan.bodies) collect_from(b.geoms, index, out);
+  if (world != nullptr)
+    for (const WorldBox& b : world->boxes)
+      if (b.shape == WorldBox::Shape::Mesh && !b.mesh_path.empty()) add_mesh(b.mesh_path, b.mesh_scale, index, out);
   // One file may appear at several scales: read and convert it once.
   std::map<std::string, const MeshAsset*> loaded;
   for (MeshAsset& m : out) {

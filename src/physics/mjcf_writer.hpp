@@ -22,9 +22,10 @@ struct MeshAsset {
   std::string error;        // why loading failed
 };
 
-// Loads every distinct (file, scale) mesh the plan uses. Meshes that cannot be read or
-// converted keep an `error` and their geoms are left out (with a warning) by write_mjcf.
-std::vector<MeshAsset> collect_meshes(const BodyPlan& plan);
+// Loads every distinct (file, scale) mesh the plan and the world's mesh objects use. Meshes that
+// cannot be read or converted keep an `error` and their geoms are left out (with a warning) by
+// write_mjcf.
+std::vector<MeshAsset> collect_meshes(const BodyPlan& plan, const WorldSpec* world = nullptr);
 
 // The warning for a mesh geom the model leaves out: the link, "collision"/"visual", the mesh as
 // written, why (no file resolved, no such file, the loader's or MuJoCo's error) and the path

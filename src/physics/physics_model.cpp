@@ -167,7 +167,7 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
   StageTime mjcf_time, compile_time;
   const std::string who = "robot '" + robot.name + "' (" + robot.source + ")";
   BodyPlan plan = plan_bodies(robot, options);
-  std::vector<MeshAsset> meshes = collect_meshes(plan);
+  std::vector<MeshAsset> meshes = collect_meshes(plan, &options.world);
   // The arena is sized from the compiled model, so the compiler gets a small one (its own
   // mj_makeData allocates and zeroes it) and the model its real size afterwards. 20 rows keep
   // MuJoCo's stack formula above its floor, so that its model-dependent term can be read back.

@@ -42,18 +42,24 @@ enum class DifferentialMode {
 };
 
 // An object in the world (to grasp, push or bump into): a box, a cylinder or a sphere (the
-// shapes of Gazebo's SDF worlds). A fixed one is a world geom; a free one is a body with a free
+// shapes of Gazebo's SDF worlds), or a fixed mesh (a static SDF model's). A fixed one is a world geom; a free one is a body with a free
 // joint, after the robot's (the robot's root stays the first free joint). Both collide with the
 // robot and the ground, with the ground's friction; contacts name them "box:<name>" whatever the
 // shape (the name scenarios and contact sensors already use).
 struct WorldBox {
-  enum class Shape { Box, Cylinder, Sphere };
+  enum class Shape { Box, Cylinder, Sphere, Mesh };
   std::string name;                      // unique among the world's objects
-  description::Pose pose;                // X_W<centre>; a cylinder's axis is its z
+  description::Pose pose;                // X_W<centre>; a cylinder's axis is its z; a mesh's own frame
   // The extents along the object's x, y, z (m), > 0: a box's edges; a cylinder's diameter,
-  // diameter (equal) and length; a sphere's diameter three times.
+  // diameter (equal) and length; a sphere's diameter three times; a mesh's bounding box (scaled),
+  // which spans mesh_min..mesh_min + size in its frame.
   description::Vec3 size{0.1, 0.1, 0.1};
   Shape shape = Shape::Box;
+  // Mesh only (fixed objects only: a static model's mesh in an SDF world): the file (STL, OBJ,
+  // or anything assimp reads, as robot meshes), its scale, and its bounds' low corner (m, scaled).
+  std::string mesh_path;
+  description::Vec3 mesh_scale{1.0, 1.0, 1.0};
+  description::Vec3 mesh_min{0.0, 0.0, 0.0};
   double mass = 1.0;                     // kg, > 0; free objects only (uniform density)
   bool fixed = true;
 };

@@ -110,12 +110,27 @@ ordered_json world_json(const World& world, const fs::path& dir) {
   ordered_json j = {{"name", world.name}};
   j["ground_plane"] = spec.kind == physics::WorldSpec::Kind::Empty && spec.ground_plane;
   ordered_json boxes = ordered_json::array();
+  std::map<std::string, std::string> meshes;  // resolved path -> file under replay/
   for (const physics::WorldBox& b : spec.boxes) {
     const char* shape = b.shape == physics::WorldBox::Shape::Cylinder ? "cylinder"
                         : b.shape == physics::WorldBox::Shape::Sphere ? "sphere"
+                        : b.shape == physics::WorldBox::Shape::Mesh   ? "mesh"
                                                                        : "box";
-    boxes.push_back({{"name", b.name}, {"shape", shape}, {"pose", pose_json(b.pose)}, {"size", {b.size.x, b.size.y, b.size.z}},
-                     {"fixed", b.fixed}});
+    ordered_json o = {{"name", b.name}, {"shape", shape}, {"pose", pose_json(b.pose)}, {"size", {b.size.x, b.size.y, b.size.z}},
+                      {"fixed", b.fixed}};
+    if (b.shape == physics::WorldBox::Shape::Mesh) {
+      // The mesh as the physics reads it (STL or OBJ; other formats converted), written once.
+      auto it = meshes.find(b.mesh_path);
+      if (it == meshes.end()) {
+        const physics::MeshBytes bytes = physics::load_mesh_for_mujoco(b.mesh_path);
+        const std::string file = "meshes/world_" + std::to_string(meshes.size()) + "_" + safe_stem(b.mesh_path) + bytes.extension;
+        write_file(dir / file, bytes.bytes.data(), bytes.bytes.size());
+        it = meshes.emplace(b.mesh_path, file).first;
+      }
+      o["file"] = it->second;
+      o["scale"] = {b.mesh_scale.x, b.mesh_scale.y, b.mesh_scale.z};
+    }
+    boxes.push_back(std::move(o));
   }
   j["boxes"] = boxes;
   if (spec.kind == physics::WorldSpec::Kind::Heightmap && spec.terrain) {

@@ -331,17 +331,20 @@ void SensorReport::laser_picture(ScenarioResult& result) {
   }
   int object = 1;
   for (const physics::WorldBox& b : sim_.world().spec.boxes) {
-    if (b.shape != physics::WorldBox::Shape::Box) {  // an upright cylinder's or a sphere's footprint
+    if (b.shape == physics::WorldBox::Shape::Cylinder || b.shape == physics::WorldBox::Shape::Sphere) {
+      // an upright cylinder's or a sphere's footprint
       gp << "set object " << object++ << " circle at " << b.pose.position.x << "," << b.pose.position.y << " size "
          << b.size.x / 2 << " fillstyle solid 0.35 fillcolor rgb '#808080' front\n";
       continue;
     }
-    // The box's footprint, turned by its yaw.
+    // The box's footprint, turned by its yaw (a mesh's: its bounding box's, from its low corner).
     const double yaw = yaw_of(b.pose.orientation), c = std::cos(yaw), s = std::sin(yaw);
+    const bool mesh = b.shape == physics::WorldBox::Shape::Mesh;
+    const double mx = mesh ? b.mesh_min.x + b.size.x / 2 : 0.0, my = mesh ? b.mesh_min.y + b.size.y / 2 : 0.0;
     gp << "set object " << object++ << " polygon from ";
     const double corners[5][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
     for (int i = 0; i < 5; ++i) {
-      const double lx = corners[i][0] * b.size.x / 2, ly = corners[i][1] * b.size.y / 2;
+      const double lx = mx + corners[i][0] * b.size.x / 2, ly = my + corners[i][1] * b.size.y / 2;
       gp << (i ? " to " : "") << b.pose.position.x + c * lx - s * ly << "," << b.pose.position.y + s * lx + c * ly;
     }
     gp << " fillstyle solid 0.35 fillcolor rgb '#808080' front\n";

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "description/sdf/sdf_model.hpp"
+#include "physics/mesh_loader.hpp"
 #include "physics/transform.hpp"
 
 #include "physics/terrain_world.hpp"
@@ -13,13 +15,34 @@ namespace mechsim::sim {
 
 namespace {
 
-// Boxes, cylinders and spheres: what the world's objects can be (physics::WorldBox).
+// Boxes, cylinders and spheres: what the world's objects can be (physics::WorldBox); meshes too
+// when fixed (`meshes`).
 bool only_primitives(const description::RobotModel& robot) {
   for (const description::Link& link : robot.links) {
     for (const description::Collision& c : link.collisions)
       if (c.geometry.type == description::GeometryType::Mesh) return false;
   }
   return true;
+}
+
+// Why a static model's mesh collision cannot be a world object ("" when it can): its file
+// resolved, exists and is readable (the bounds are read here, so a bad file is named now).
+std::string mesh_problem(const description::Geometry& g, physics::WorldBox& object) {
+  if (g.mesh_path.empty()) return "mesh '" + g.mesh_uri + "' was not found (is its model on GAZEBO_MODEL_PATH?)";
+  std::error_code ec;
+  if (!std::filesystem::exists(g.mesh_path, ec)) return "mesh '" + g.mesh_uri + "': no such file " + g.mesh_path;
+  const double scale[3] = {g.mesh_scale.x, g.mesh_scale.y, g.mesh_scale.z};
+  try {
+    const physics::MeshBounds b = physics::mesh_bounds(g.mesh_path, scale);
+    object.size = {b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]};
+    object.mesh_min = {b.min[0], b.min[1], b.min[2]};
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  object.shape = physics::WorldBox::Shape::Mesh;
+  object.mesh_path = g.mesh_path;
+  object.mesh_scale = g.mesh_scale;
+  return {};
 }
 
 void set_shape(const description::Geometry& g, physics::WorldBox& object) {
@@ -72,9 +95,10 @@ World make_sdf_world(const std::string& path) {
     const bool has_links = !model.robot.links.empty() &&
                            std::any_of(model.robot.links.begin(), model.robot.links.end(),
                                        [](const description::Link& l) { return !l.collisions.empty(); });
-    if (has_links && only_primitives(model.robot) && (model.is_static || model.robot.links.size() == 1)) {
+    if (has_links && (model.is_static || (only_primitives(model.robot) && model.robot.links.size() == 1))) {
       const description::Pose X_WR = physics::compose(model.pose, model.root_offset);
       const description::Link& root = model.robot.links.front();
+      const std::size_t before = world.spec.boxes.size();
       for (const description::Link& link : model.robot.links) {
         if (!model.is_static && &link != &root) continue;
         for (std::size_t i = 0; i < link.collisions.size(); ++i) {
@@ -88,17 +112,25 @@ World make_sdf_world(const std::string& path) {
               if (j.child_link == link.name) X_WL = physics::compose(X_WR, j.origin);
           }
           box.pose = physics::compose(X_WL, c.origin);
-          set_shape(c.geometry, box);
+          if (c.geometry.type == description::GeometryType::Mesh) {
+            const std::string problem = mesh_problem(c.geometry, box);
+            if (!problem.empty()) {
+              world.not_simulated.push_back("model '" + model.name + "': link '" + link.name + "': " + problem);
+              continue;
+            }
+          } else {
+            set_shape(c.geometry, box);
+          }
           box.fixed = model.is_static;
           if (!model.is_static) box.mass = link.inertial && link.inertial->mass > 0.0 ? link.inertial->mass : 1.0;
           world.spec.boxes.push_back(box);
         }
       }
-      used = true;
+      if (world.spec.boxes.size() > before) used = true;
     } else if (has_links) {
       world.not_simulated.push_back("model '" + model.name +
-                                    "' (mechsim's world holds the ground, boxes, cylinders and spheres; meshes and "
-                                    "articulated models need a robot of their own)");
+                                    "' (mechsim's world holds the ground, boxes, cylinders and spheres, and meshes of "
+                                    "static models; moving meshes and articulated models need a robot of their own)");
     }
     if (used) world.sdf_models.push_back(model.name);
   }

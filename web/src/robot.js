@@ -20,7 +20,8 @@ function applyOrigin(object, origin) {
   object.quaternion.set(qx, qy, qz, w);
 }
 
-async function meshObject(visual, cache, mat) {
+// A mesh file under replay/ (`visual.file`, STL or OBJ, `visual.scale`), loaded once per cache.
+export async function meshObject(visual, cache, mat) {
   if (!cache.has(visual.file)) {
     cache.set(visual.file, readBytes(`replay/${visual.file}`).then((bytes) => {
       if (visual.file.endsWith('.obj')) return { obj: new OBJLoader().parse(new TextDecoder().decode(bytes)) };

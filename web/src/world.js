@@ -2,6 +2,7 @@
 // mesh coloured by height (the colour map below), plus the base's path and the waypoints.
 import * as THREE from 'three';
 import { readBytes } from './data.js';
+import { meshObject } from './robot.js';
 
 // Height colour map, low to high: deep blue-grey, sand, ochre, rust, pale rock.
 const STOPS = [
@@ -98,7 +99,18 @@ export async function buildWorld(worldJson) {
     group.add(terrainMesh(field, heights));
     heightAt = makeHeightAt(field, heights);
   }
+  const meshes = new Map();
   for (const box of worldJson.boxes ?? []) {
+    const mat = new THREE.MeshStandardMaterial({ color: box.fixed ? 0x9c7a54 : 0xc9a36b, roughness: 0.8 });
+    if (box.shape === 'mesh') {  // a static model's mesh: its file and scale, in the object's frame
+      const holder = new THREE.Group();
+      holder.add(await meshObject(box, meshes, mat));
+      const [w, x, y, z] = box.pose.q;
+      holder.position.set(...box.pose.p);
+      holder.quaternion.set(x, y, z, w);
+      group.add(holder);
+      continue;
+    }
     // Extents: a box's edges; a cylinder's diameter, diameter and length (axis z); a sphere's diameter.
     let geometry;
     if (box.shape === 'cylinder') {
@@ -109,8 +121,7 @@ export async function buildWorld(worldJson) {
     } else {
       geometry = new THREE.BoxGeometry(...box.size);
     }
-    const mesh = new THREE.Mesh(geometry,
-      new THREE.MeshStandardMaterial({ color: box.fixed ? 0x9c7a54 : 0xc9a36b, roughness: 0.8 }));
+    const mesh = new THREE.Mesh(geometry, mat);
     const [w, x, y, z] = box.pose.q;
     mesh.position.set(...box.pose.p);
     mesh.quaternion.set(x, y, z, w);

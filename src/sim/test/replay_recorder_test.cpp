@@ -206,6 +206,31 @@ TEST_F(ReplayRecorderTest, MeshesAreCopiedBesideTheRobot) {
   EXPECT_NE(robot["warnings"][0].get<std::string>().find("missing.stl"), std::string::npos) << robot["warnings"][0];
 }
 
+// A static SDF model's mesh is a world object of the replay: its file beside the robot's meshes,
+// its scale and pose, drawn by the page like a robot mesh.
+TEST_F(ReplayRecorderTest, AStaticSdfModelsMeshIsCopiedForTheWorld) {
+  const std::string stl = tetrahedron_stl();
+  std::ofstream(dir_ / "rock.stl", std::ios::binary) << stl;
+  std::ofstream(dir_ / "rocks.world") << R"(<?xml version="1.0"?><sdf version="1.6"><world name="w">
+    <model name="ground"><static>true</static><link name="l"><collision name="c"><geometry><plane><normal>0 0 1</normal>
+      <size>20 20</size></plane></geometry></collision></link></model>
+    <model name="rock"><static>true</static><pose>2 1 0 0 0 0</pose><link name="l"><collision name="c"><geometry>
+      <mesh><uri>rock.stl</uri><scale>3 3 3</scale></mesh></geometry></collision></link></model>
+  </world></sdf>)";
+  const ScenarioResult r = run("world: {name: rocks.world}\n");
+  ASSERT_TRUE(r.completed) << r.error;
+  const nlohmann::json world = read_json(dir_ / "out" / "replay" / "world.json");
+  ASSERT_EQ(world["boxes"].size(), 1u) << world.dump();
+  const nlohmann::json& rock = world["boxes"][0];
+  EXPECT_EQ(rock["shape"], "mesh");
+  EXPECT_EQ(rock["scale"], (nlohmann::json{3.0, 3.0, 3.0}));
+  EXPECT_EQ(rock["pose"]["p"], (nlohmann::json{2.0, 1.0, 0.0}));
+  std::ifstream copied(dir_ / "out" / "replay" / rock["file"].get<std::string>(), std::ios::binary);
+  std::stringstream bytes;
+  bytes << copied.rdbuf();
+  EXPECT_EQ(bytes.str(), stl);
+}
+
 TEST_F(ReplayRecorderTest, RateZeroRecordsNoReplay) {
   const ScenarioResult r = run("replay_rate: 0\n");
   ASSERT_TRUE(r.completed) << r.error;

@@ -1,12 +1,16 @@
 // The objects of a Gazebo SDF world in mechsim's physics: pr2_gazebo's own scan.world (a sphere,
 // a box, a cylinder and a cup mesh on a box for ground) becomes a world whose sphere, box and
 // cylinder stand where the file puts them, at their sizes (found by ray casts from above); the
-// cup's mesh is listed as not simulated.
+// cup's mesh, whose file the shared data lacks, is listed as not simulated. A static model's mesh
+// (here an OBJ block of our own) stands where and as large as the file says, and holds objects up.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "description/urdf/urdf_parser.hpp"
@@ -71,6 +75,93 @@ TEST(SdfWorldObjects, FreeCylindersAndSpheresRestAtTheirSize) {
   EXPECT_NEAR(p.ground_height(1.0, 0.0), 0.2, 3e-3);    // the ball's top
   EXPECT_NEAR(p.ground_height(-1.0, 0.0), 0.4, 3e-3);   // the drum's top, still upright
   EXPECT_NEAR(p.ground_height(-1.0, 0.14), 0.4, 3e-3);  // flat across its face
+}
+
+// A unit cube with a corner at its origin (its frame is not its centre), as an OBJ file.
+constexpr const char* kCubeObj = R"(v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+f 1 3 2
+f 1 4 3
+f 5 6 7
+f 5 7 8
+f 1 2 6
+f 1 6 5
+f 2 3 7
+f 2 7 6
+f 3 4 8
+f 3 8 7
+f 4 1 5
+f 4 5 8
+)";
+
+constexpr const char* kMeshWorld = R"(<?xml version="1.0"?>
+<sdf version="1.6">
+  <world name="meshes">
+    <model name="ground"><static>true</static>
+      <link name="l"><collision name="c"><geometry><plane><normal>0 0 1</normal><size>20 20</size></plane></geometry></collision></link>
+    </model>
+    <model name="block"><static>true</static><pose>3 0 0 0 0 1.5707963267948966</pose>
+      <link name="body"><collision name="c"><geometry><mesh><uri>block.obj</uri><scale>2 1 0.5</scale></mesh></geometry></collision></link>
+    </model>
+    <model name="lost"><static>true</static><pose>-3 0 0 0 0 0</pose>
+      <link name="body"><collision name="c"><geometry><mesh><uri>model://nowhere/mesh.stl</uri></mesh></geometry></collision></link>
+    </model>
+  </world>
+</sdf>
+)";
+
+TEST(SdfWorldObjects, AStaticModelsMeshStandsWhereTheFileSaysAndHoldsObjectsUp) {
+  const fs::path dir = fs::temp_directory_path() / ("mechsim_sdf_mesh_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() { fs::remove_all(dir); }
+  } cleanup{dir};
+  std::ofstream(dir / "block.obj") << kCubeObj;
+  std::ofstream(dir / "meshes.world") << kMeshWorld;
+  WorldConfig config;
+  config.name = (dir / "meshes.world").string();
+  World world = make_world(config);
+  ASSERT_EQ(world.spec.boxes.size(), 1u);
+  const physics::WorldBox& block = world.spec.boxes[0];
+  EXPECT_EQ(block.shape, physics::WorldBox::Shape::Mesh);
+  EXPECT_NEAR(block.size.x, 2.0, 1e-9);
+  EXPECT_NEAR(block.size.y, 1.0, 1e-9);
+  EXPECT_NEAR(block.size.z, 0.5, 1e-9);
+  EXPECT_TRUE(block.fixed);
+  EXPECT_NE(std::find(world.sdf_models.begin(), world.sdf_models.end(), "block"), world.sdf_models.end());
+  EXPECT_EQ(std::find(world.sdf_models.begin(), world.sdf_models.end(), "lost"), world.sdf_models.end());
+  EXPECT_TRUE(std::any_of(world.not_simulated.begin(), world.not_simulated.end(), [](const std::string& n) {
+    return n.find("model 'lost'") != std::string::npos && n.find("model://nowhere/mesh.stl") != std::string::npos;
+  })) << ::testing::PrintToString(world.not_simulated);
+
+  // The block turned by 90 deg about z at (3, 0): it spans x 2..3 and y 0..2 (its corner at the
+  // model's origin), 0.5 m high. A ball dropped on it rests on its top.
+  physics::WorldBox ball;
+  ball.name = "ball";
+  ball.shape = physics::WorldBox::Shape::Sphere;
+  ball.size = {0.2, 0.2, 0.2};
+  ball.pose.position = {2.5, 1.0, 1.5};
+  ball.fixed = false;
+  world.spec.boxes.push_back(ball);
+  physics::BuildOptions options;
+  options.world = world.spec;
+  options.spawn.x = -6.0;  // out of the way
+  const auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
+  for (const std::string& w : model->warnings()) ADD_FAILURE() << "warning: " << w;
+  physics::Physics p(model);
+  EXPECT_NEAR(p.ground_height(2.2, 0.3), 0.5, 1e-6);
+  EXPECT_NEAR(p.ground_height(2.9, 1.9), 0.5, 1e-6);
+  EXPECT_NEAR(p.ground_height(3.1, 1.0), 0.0, 1e-6);  // beside it
+  EXPECT_NEAR(p.ground_height(2.5, 2.1), 0.0, 1e-6);
+  while (p.time() < 1.5) ASSERT_TRUE(p.step().ok());
+  EXPECT_NEAR(p.ground_height(2.5, 1.0), 0.7, 3e-3);  // the ball's top, resting on the block
 }
 
 TEST(SdfWorldObjects, ARoundObjectOfUnequalWidthsIsABuildErrorNamingIt) {
