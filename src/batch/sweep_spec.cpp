@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "control/params.hpp"
+#include "control/params_keys.hpp"
 
 namespace mechsim::batch {
 namespace {
@@ -19,15 +20,7 @@ using control::Params;
 
 void only_keys(const Params& p, std::initializer_list<const char*> allowed) {
   if (!p.is_map()) fail(p, "expected a map");
-  for (const std::string& k : p.keys()) {
-    bool ok = false;
-    std::string list;
-    for (const char* a : allowed) {
-      ok = ok || k == a;
-      list += (list.empty() ? "" : ", ") + std::string(a);
-    }
-    if (!ok) fail(p.child(k), "unknown key '" + k + "' (expected one of: " + list + ")");
-  }
+  if (const auto unknown = control::unknown_key(p, allowed)) fail(p.child(unknown->key), unknown->message);
 }
 
 double finite(const Params& p, const char* key) {

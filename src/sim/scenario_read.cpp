@@ -3,6 +3,8 @@
 #include <cmath>
 #include <exception>
 
+#include "control/params_keys.hpp"
+
 namespace mechsim::sim::scenario_read {
 
 namespace fs = std::filesystem;
@@ -34,15 +36,7 @@ std::string scalar_text(const Params& p) {
 
 void only_keys(const Params& p, std::initializer_list<const char*> allowed) {
   if (!p.is_map()) fail(p, "expected a map");
-  for (const std::string& k : p.keys()) {
-    bool ok = false;
-    std::string list;
-    for (const char* a : allowed) {
-      ok = ok || k == a;
-      list += (list.empty() ? "" : ", ") + std::string(a);
-    }
-    if (!ok) fail(p.child(k), "unknown key '" + k + "' (expected one of: " + list + ")");
-  }
+  if (const auto unknown = control::unknown_key(p, allowed)) fail(p.child(unknown->key), unknown->message);
 }
 
 std::string resolve_path(const fs::path& base, const std::string& file) {
