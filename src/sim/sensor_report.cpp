@@ -347,7 +347,9 @@ void SensorReport::laser_picture(ScenarioResult& result) {
       const double lx = mx + corners[i][0] * b.size.x / 2, ly = my + corners[i][1] * b.size.y / 2;
       gp << (i ? " to " : "") << b.pose.position.x + c * lx - s * ly << "," << b.pose.position.y + s * lx + c * ly;
     }
-    gp << " fillstyle solid 0.35 fillcolor rgb '#808080' front\n";
+    // A mesh's bounding box is larger than the mesh: drawn behind the scans, which show its shape.
+    gp << (mesh ? " fillstyle transparent solid 0.2 fillcolor rgb '#808080' back\n"
+                : " fillstyle solid 0.35 fillcolor rgb '#808080' front\n");
   }
   if (fs::exists(dir / "base.csv"))
     layers += quoted((dir / "base.csv").string()) + " using 2:3 with lines lw 2 lc rgb '#0050ff' title 'path of the base', ";
