@@ -50,6 +50,30 @@ seed() {
       find robots -name '*.yaml' -not -path '*scenarios*' 2>/dev/null
       [[ -d $shared ]] && find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100 ;;
   esac | while read -r f; do cp -f "$f" "$corpus/seed_$(basename "$(dirname "$f")")_$(basename "$f")"; done
+  case "$name" in
+    sweep_fuzz)
+      # A sweep file with the scenario it names, as one input (fuzz_files.hpp's "=== NAME").
+      find robots src/batch/test/data -name '*.yaml' 2>/dev/null | while read -r f; do
+        grep -q '^axes:' "$f" || continue
+        scenario=$(dirname "$f")/$(sed -n 's/^scenario: *//p' "$f" | head -1)
+        [[ -f "$scenario" ]] || continue
+        { sed 's/^scenario: .*/scenario: scenario.yaml/' "$f"; echo "=== scenario.yaml"; cat "$scenario"; } \
+          >"$corpus/seed_$(basename "$f")"
+      done ;;
+    xmlrpc_fuzz)
+      # The controller YAMLs as the parameter server returns them: an XML-RPC <value>.
+      { find robots -name '*.yaml' -not -path '*scenarios*' -not -path '*sweeps*' 2>/dev/null
+        [[ -d $shared ]] && find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100; } |
+        while read -r f; do
+          /usr/bin/python3 -c 'import sys, yaml, xmlrpc.client
+v = yaml.safe_load(open(sys.argv[1]))
+if isinstance(v, dict):
+    x = xmlrpc.client.dumps((v,), allow_none=False)
+    sys.stdout.write(x[x.index("<value>"):x.rindex("</value>") + 8])' "$f" \
+            >"$corpus/seed_$(basename "$(dirname "$f")")_$(basename "$f" .yaml).xml" 2>/dev/null || true
+        done
+      find "$corpus" -name 'seed_*.xml' -empty -delete ;;
+  esac
 }
 
 # Without the allocation stack of every malloc (ASan's default keeps 30 frames) the targets run
@@ -66,14 +90,15 @@ for t in "${targets[@]}"; do
   case "$t" in
     xacro_fuzz) dict=(-dict=fuzz/dicts/xacro.dict) ;;
     urdf_fuzz | mjcf_fuzz) dict=(-dict=fuzz/dicts/urdf.dict) ;;
-    controllers_fuzz | scenario_fuzz) dict=(-dict=fuzz/dicts/yaml.dict) ;;
+    controllers_fuzz | scenario_fuzz | sweep_fuzz) dict=(-dict=fuzz/dicts/yaml.dict) ;;
+    xmlrpc_fuzz) dict=(-dict=fuzz/dicts/xmlrpc.dict) ;;
     *) dict=() ;;
   esac
   # Scenario files are a few kB (the largest shipped: 2.3 kB): 16 kB inputs leave room to grow
   # while keeping the fuzzer off 100 kB nesting bombs, which only yaml-cpp's parser sees (the
   # regression inputs replay them in full in every build).
   max_len=65536
-  [[ "$t" == scenario_fuzz ]] && max_len=16384
+  [[ "$t" == scenario_fuzz || "$t" == sweep_fuzz ]] && max_len=16384
   before=$(find "$artifacts" -type f | wc -l)
   log=$build/$t.log
   echo "fuzz.sh: $t for $seconds s (corpus $(find "$corpus" -type f | wc -l) inputs)" >&2

@@ -24,7 +24,8 @@ for arg in "$@"; do
   case "$arg" in
     --with-ros) with_ros=1 ;;
     # scripts/fuzz.sh: Clang's libFuzzer and sanitizers.
-    --with-fuzz) packages+=(clang) ;;
+    # libxmlrpcpp-dev: the parameter-server target (xmlrpc_fuzz) without the whole ROS layer.
+    --with-fuzz) packages+=(clang libxmlrpcpp-dev) ;;
     *) echo "install-deps: unknown option '$arg' (--with-ros, --with-fuzz)" >&2; exit 2 ;;
   esac
 done

@@ -14,7 +14,7 @@ void warn(std::string* warning, const std::string& text) {
 
 bool set_param_from_xmlrpc(control::Params& target, const std::string& key, const XmlRpc::XmlRpcValue& value,
                            std::string* warning) {
-  XmlRpc::XmlRpcValue v = value;  // the accessors are non-const
+  const XmlRpc::XmlRpcValue& v = value;  // read through the const accessors: no copy of the subtree
   const std::string path = control::join_param_path(target.path(), key);
   switch (v.getType()) {
     case XmlRpc::XmlRpcValue::TypeBoolean: target.set(key, static_cast<bool>(v)); return true;
@@ -57,7 +57,7 @@ bool set_param_from_xmlrpc(control::Params& target, const std::string& key, cons
 }
 
 bool fill_params_from_xmlrpc(control::Params& target, const XmlRpc::XmlRpcValue& value, std::string* warning) {
-  XmlRpc::XmlRpcValue v = value;
+  const XmlRpc::XmlRpcValue& v = value;
   if (v.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
     warn(warning, target.path() + ": expected a namespace (struct)");
     return false;
