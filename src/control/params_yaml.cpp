@@ -4,15 +4,27 @@
 
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "control/params.hpp"
 #include "control/params_node.hpp"
+#include "description/utf8.hpp"
 
 namespace mechsim::control {
 namespace {
 
 std::string where(const std::string& source, const YAML::Mark& mark) {
   return source + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+void require_utf8(const std::string& text, const YAML::Mark& mark, const std::string& source, const std::string& path,
+                  const char* what) {
+  const std::size_t at = description::invalid_utf8_at(text);
+  if (at == std::string_view::npos) return;
+  throw ParamsError(where(source, mark) + ": parameter " + path + ": the " + what + " is not UTF-8 text (" +
+                        description::utf8_byte_name(text, at) + " at offset " + std::to_string(at) +
+                        "); save the file as UTF-8",
+                    path);
 }
 
 // Deeper than any parameter file: a YAML alias inside the node it names (`a: &x {c: *x}`) makes
@@ -37,6 +49,7 @@ std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& s
     case YAML::NodeType::Scalar:
       out->kind = Params::Kind::Scalar;
       out->text = in.Scalar();
+      require_utf8(out->text, in.Mark(), source, path, "value");
       // yaml-cpp tags plain scalars "?" and quoted ones "!".
       out->scalar = in.Tag() == "!" ? ScalarType::Quoted : ScalarType::Plain;
       break;
@@ -57,6 +70,7 @@ std::unique_ptr<Params::Node> convert(const YAML::Node& in, const std::string& s
                             path);
         }
         const std::string key = entry.first.Scalar();
+        require_utf8(key, entry.first.Mark(), source, path, "key");
         const std::string child_path = join_param_path(path, key);
         if (key.empty() || key.find('/') != std::string::npos) {
           throw ParamsError(where(source, entry.first.Mark()) + ": parameter " + child_path +

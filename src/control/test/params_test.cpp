@@ -109,6 +109,26 @@ TEST(Params, AnAliasInsideItsOwnAnchorIsAnErrorNotACrash) {
   EXPECT_THAT(e, HasSubstr("nested more than 128 levels deep"));
 }
 
+// Stray bytes of an 8-bit file (Latin-1, a binary paste) passed through yaml-cpp into names that
+// end in JSON (summary.json, a sweep's plan.json), where nlohmann::json refused them: `mechsim
+// sweep` stopped with "[json.exception.type_error.316] invalid UTF-8 byte" naming neither file
+// nor key (found by sweep_fuzz). Now the reader says where.
+TEST(Params, TextThatIsNotUtf8IsAnErrorNamingTheLineAndTheParameter) {
+  std::string e = error_of([&] { (void)Params::from_yaml_string("a: 1\nname: ev\xFFry\n", "latin.yaml"); });
+  EXPECT_THAT(e, HasSubstr("latin.yaml:2:"));
+  EXPECT_THAT(e, HasSubstr("parameter /name: the value is not UTF-8 text (byte 0xFF at offset 2)"));
+  e = error_of([&] { (void)Params::from_yaml_string("pid:\n  caf\xE9: 1\n", "key.yaml"); });
+  EXPECT_THAT(e, HasSubstr("key.yaml:2:"));
+  EXPECT_THAT(e, HasSubstr("parameter /pid: the key is not UTF-8 text (byte 0xE9"));
+  // Overlong forms, surrogates, code points past U+10FFFF and sequences cut short are refused too.
+  for (const char* bad : {"v: \xC0\xAF\n", "v: \xED\xA0\x80\n", "v: \xF4\x90\x80\x80\n", "v: \xE2\x82\n"}) {
+    EXPECT_THAT(error_of([&] { (void)Params::from_yaml_string(bad, "b.yaml"); }), HasSubstr("not UTF-8")) << bad;
+  }
+  // Well-formed UTF-8 of every length reads back unchanged.
+  const Params ok = Params::from_yaml_string("name: \"\xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9A\x80\"\n", "ok.yaml");
+  EXPECT_EQ(ok.get<std::string>("name"), "\xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9A\x80");
+}
+
 TEST(Params, LoadsFromFile) {
   auto path = std::filesystem::temp_directory_path() / ("mechsim_params_test_" + std::to_string(::getpid()) + ".yaml");
   {

@@ -6,7 +6,7 @@
 #include <cstdlib>
 
 #include "description/pyexpr/pyexpr_lex.hpp"
-#include "description/pyexpr/utf8.hpp"
+#include "description/utf8.hpp"
 
 namespace mechsim::description::pyexpr {
 namespace {

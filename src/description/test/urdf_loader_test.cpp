@@ -53,6 +53,22 @@ TEST_F(RobotLoader, LoadsAPlainUrdf) {
   EXPECT_THAT(r.urdf, HasSubstr("<robot name=\"plain\">"));
 }
 
+// A URDF saved as Latin-1 (an accented link name) ran, and the run then failed writing its JSON
+// with "[json.exception.type_error.316] invalid UTF-8 byte", naming no file. Now the reader says
+// where, before anything runs.
+TEST_F(RobotLoader, AUrdfThatIsNotUtf8IsRefusedWithItsLine) {
+  const std::string path = write("latin1.urdf", "<robot name=\"r\">\n  <link name=\"t\xEAte\"/>\n</robot>\n");
+  try {
+    load_robot(path, {});
+    FAIL() << "no error";
+  } catch (const DescriptionError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("latin1.urdf:2"));
+    EXPECT_THAT(e.what(), HasSubstr("not UTF-8 text (byte 0xEA)"));
+  }
+  const std::string utf8 = write("utf8.urdf", "<robot name=\"r\">\n  <link name=\"t\xC3\xAAte\"/>\n</robot>\n");
+  EXPECT_EQ(load_robot(utf8, {}).model.links.at(0).name, "t\xC3\xAAte");
+}
+
 TEST_F(RobotLoader, ExpandsXacroFilesWithArguments) {
   const std::string path = write("wheels.urdf.xacro", kXacro);
   const LoadedRobot one = load_robot(path, {});

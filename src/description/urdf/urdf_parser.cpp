@@ -15,6 +15,7 @@
 #include "description/sensor_spec.hpp"
 #include "description/urdf/urdf_reading.hpp"
 #include "description/urdf/validation.hpp"
+#include "description/utf8.hpp"
 
 namespace mechsim::description {
 
@@ -252,6 +253,13 @@ void normalize_axis(Vec3& a) {
 
 RobotModel parse_urdf_string(std::string_view xml, const std::string& source_name,
                              const UrdfOptions& options, std::vector<std::string>* warnings) {
+  // XML's encoding without a BOM is UTF-8, and tinyxml2 (like ROS's urdfdom) never decodes another:
+  // stray 8-bit bytes would reach link names and, at the end of a run, the JSON it writes.
+  if (const std::size_t at = invalid_utf8_at(xml); at != std::string_view::npos) {
+    const int line = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    throw_problems(source_name, {location(source_name, line) + "not UTF-8 text (" + utf8_byte_name(xml, at) +
+                                 "): save the file as UTF-8"});
+  }
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
     throw_problems(source_name,

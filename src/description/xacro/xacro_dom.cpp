@@ -1,7 +1,7 @@
 // GCC 12 reports a false -Wrestrict on `"literal" + std::string&&` at -O3 (GCC bug 105329).
 #pragma GCC diagnostic ignored "-Wrestrict"
 #include "description/xacro/xacro_dom.hpp"
-#include "description/pyexpr/utf8.hpp"
+#include "description/utf8.hpp"
 
 #include <algorithm>
 #include <charconv>
