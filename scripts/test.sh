@@ -6,6 +6,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --with-ros
+# Test data from Debian packages that mechsim does not install (a public DEM): the tests that need
+# it skip, naming the script, when it cannot be fetched.
+scripts/fetch-test-data.sh
 scripts/build.sh release
 # The ROS layer was just installed: a build without it would run fewer tests without a word.
 grep -qx 'MECHSIM_ROS_ENABLED:INTERNAL=ON' build/release/CMakeCache.txt || {

@@ -85,9 +85,28 @@ Heightmap load_heightmap(const std::filesystem::path& path, const HeightmapOptio
 
   double z0 = 0.0, dz = 1.0;
   if (raster.is_float) {
-    if (options.z_min || options.z_max) {
-      throw HeightmapError(where + ": z_min/z_max apply to integer images only; a " +
-                           raster.format + " holds absolute heights (m)");
+    // Absolute heights, kept as they are unless both z_min and z_max are given: then the DEM's
+    // lowest and highest samples become z_min and z_max (its relief rescaled, as Gazebo's <size>
+    // z does for a DEM), e.g. to lay a survey of kilometres onto a yard of tens of metres.
+    if (options.z_min.has_value() != options.z_max.has_value()) {
+      throw HeightmapError(where + ": give both z_min and z_max to rescale the heights of a " + raster.format +
+                           " (its lowest and highest samples become them), or neither to keep them");
+    }
+    if (options.z_min) {
+      if (!(*options.z_max >= *options.z_min)) {
+        throw HeightmapError(where + ": height range z_min " + number(*options.z_min) + " m > z_max " +
+                             number(*options.z_max) + " m");
+      }
+      double lo = INFINITY, hi = -INFINITY;
+      for (const double v : raster.samples) {
+        if (!std::isfinite(v) || (raster.nodata && v == *raster.nodata)) continue;  // refused below
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+      if (lo <= hi) {
+        dz = hi > lo ? (*options.z_max - *options.z_min) / (hi - lo) : 0.0;
+        z0 = *options.z_min - lo * dz;
+      }
     }
   } else {
     const auto z_min = options.z_min ? options.z_min : raster.z_min;

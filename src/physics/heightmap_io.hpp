@@ -3,7 +3,8 @@
 //
 // Formats (detected from the file's signature, not its name):
 //  - PNG, 8- or 16-bit grayscale: sample value v maps to z_min + v / vmax * (z_max - z_min).
-//  - TIFF, 32- or 64-bit IEEE float: samples are absolute heights (m).
+//  - TIFF, 32- or 64-bit IEEE float: samples are absolute heights (m); with z_min and z_max
+//    both given, the lowest and highest samples map to them (the relief rescaled linearly).
 //  - TIFF, 8- or 16-bit unsigned integer: mapped like PNG.
 // Image row 0 is the north edge (largest y), as in Gazebo heightmaps and GeoTIFF rasters, so
 // loading flips rows into Heightmap order (row 0 south).
@@ -31,7 +32,8 @@ struct HeightmapError : std::runtime_error {
 struct HeightmapOptions {
   std::optional<double> size_x, size_y;  // footprint along x and y (m), > 0
   std::optional<double> z_min, z_max;    // heights (m) of the lowest and highest integer sample
-                                         // values (0 and 255 or 65535); integer images only
+                                         // values (0 and 255 or 65535); of a float image's lowest
+                                         // and highest samples (both or neither)
 };
 
 Heightmap load_heightmap(const std::filesystem::path& path, const HeightmapOptions& options = {});

@@ -11,6 +11,9 @@
 //   world:
 //     name: empty                     # empty | mars_yard_2024 (seed) | slope (slope_deg: a plane
 //                                     # rising along +x, 40 m x 12 m) | heightmap file (size_x ...)
+//     # A heightmap file: a PNG or TIFF (physics/heightmap_io.hpp). size_x, size_y: its footprint (m;
+//     # a GeoTIFF's own pixel scale when absent); z_min, z_max: the heights of an integer image's
+//     # lowest and highest sample values, or, both given, a float DEM's relief rescaled onto them.
 //     soil: dry_sand                  # optional: the wheels meet this soil, not rigid ground
 //                                     # (sim/soil_config.hpp: named sets or your own values)
 //     # Leaving the usable ground (a height field's footprint, or the Mars Yard's ground inside its

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -241,8 +242,29 @@ TEST(HeightmapIoErrors, MissingFootprintAndRange) {
                "z_min 2 m > z_max 1 m");
   test::write_tiff(dir / "f.tif", tiff(2, 2), {1, 2, 3, 4});
   expect_error(dir / "f.tif", with_range({}, 0, 1), "missing footprint");
-  expect_error(dir / "f.tif", full(1, 1, 0, 1),
-               "z_min/z_max apply to integer images only");
+  HeightmapOptions only_min = footprint(1, 1);
+  only_min.z_min = 0.0;
+  expect_error(dir / "f.tif", only_min, "give both z_min and z_max to rescale the heights");
+  expect_error(dir / "f.tif", full(1, 1, 2, 1), "z_min 2 m > z_max 1 m");
+}
+
+// A DEM of kilometres laid onto a yard: z_min/z_max rescale a float image's relief linearly, its
+// lowest sample to z_min and its highest to z_max (Gazebo's <size> z for a DEM); without them the
+// heights stay absolute.
+TEST(HeightmapIo, AFloatDemsReliefIsRescaledToTheGivenRange) {
+  const auto dir = test::temp_dir("float_rescale");
+  test::write_tiff(dir / "dem.tif", tiff(2, 3), {10, 20, 40, 60, 85, 110});
+  const Heightmap kept = load_heightmap(dir / "dem.tif", footprint(45, 30));
+  EXPECT_FLOAT_EQ(*std::min_element(kept.heights.begin(), kept.heights.end()), 10.0f);
+  EXPECT_FLOAT_EQ(*std::max_element(kept.heights.begin(), kept.heights.end()), 110.0f);
+  const Heightmap yard = load_heightmap(dir / "dem.tif", full(45, 30, -0.5, 2.5));
+  EXPECT_DOUBLE_EQ(yard.size_x, 45.0);
+  EXPECT_FLOAT_EQ(*std::min_element(yard.heights.begin(), yard.heights.end()), -0.5f);
+  EXPECT_FLOAT_EQ(*std::max_element(yard.heights.begin(), yard.heights.end()), 2.5f);
+  // Linear: 60 m is half-way between 10 and 110, so it lands half-way between -0.5 and 2.5.
+  for (std::size_t i = 0; i < kept.heights.size(); ++i) {
+    EXPECT_NEAR(yard.heights[i], -0.5 + (kept.heights[i] - 10.0) * 0.03, 1e-5) << i;
+  }
 }
 
 TEST(HeightmapIoErrors, NanSamplesAreNamed) {

@@ -1,15 +1,18 @@
 // mechsim's CC8 on terrain and on soil (issue: rovers on real terrain): the shipped terrain and
 // soil scenarios meet their checks; on loose soil it climbs less than on rigid ground and its
 // wheels slip more uphill than downhill; standing on a 10 degree slope of soil it does not creep;
-// and on a height field it has never seen (generated here: no public DEM can be fetched in the
-// test) it drives without falling through or blowing up, on rigid ground and on soil.
+// and on height fields it has never seen it drives without falling through or blowing up, on
+// rigid ground and on soil: a generated one, and a real public DEM (Olinda, Brazil, from Debian's
+// r-cran-stars; scripts/fetch-test-data.sh) laid onto 45 m x 45 m.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <tuple>
@@ -111,7 +114,7 @@ TEST(Cc8Terrain, StandingOnATenDegreeSlopeOfSoilItDoesNotCreep) {
   }
 }
 
-// A terrain the project has never seen. No public DEM can be fetched here, so it is generated:
+// A terrain the project has never seen, generated:
 // 45 m x 45 m at 5 cm, rolling ground (three octaves of sines at odd angles, 1.5 m of relief),
 // a ridge, a pit and 40 boulders (20-40 cm), written as a float TIFF and read back as any user's
 // file would be. The CC8 drives a loop across it for 20 s.
@@ -187,6 +190,61 @@ TEST_F(UnseenHeightmap, TheCc8DrivesAcrossItWithoutFallingThroughOrBlowingUp) {
     const physics::Heightmap map = physics::load_heightmap(file.string(), {});
     const double ix = (r.final_x + 22.5) / 0.05, iy = (r.final_y + 22.5) / 0.05;
     const double ground = map.at(static_cast<std::size_t>(std::lround(iy)), static_cast<std::size_t>(std::lround(ix)));
+    std::printf("[ figures  ] base %.3f m above the ground under it\n", r.final_z - ground);
+    EXPECT_GT(r.final_z - ground, -0.05);
+    EXPECT_LT(r.final_z - ground, 0.5);
+  }
+}
+
+// A real DEM the project was not built on: Olinda, Brazil (UTM 25S), 111 x 111 float samples about
+// 90 m apart, -1..88 m: coastal plain, sea (flat at 0 m) and a dissected plateau. Read as it is,
+// its GeoTIFF footprint is about 10 km; laid onto 45 m x 45 m with its relief rescaled to 1.5 m
+// (z_min/z_max, as Gazebo's <size> does for a DEM) it is a rough yard of 41 cm cells with steps
+// of up to ~20 cm between cells. The CC8 drives 60 s of a route across the plain to the shore.
+TEST_F(UnseenHeightmap, TheCc8DrivesARealPublicDemLaidOntoAYard) {
+  const fs::path dem = fs::path(MECHSIM_SOURCE_DIR) / "build/test-data/olinda_dem_utm25s.tif";
+  if (!fs::exists(dem)) {
+    GTEST_SKIP() << dem.string() << " is absent: scripts/fetch-test-data.sh fetches it from Debian's r-cran-stars "
+                 << "(scripts/test.sh runs it)";
+  }
+  const physics::Heightmap as_is = physics::load_heightmap(dem);
+  EXPECT_EQ(as_is.cols, 111u);
+  EXPECT_EQ(as_is.rows, 111u);
+  EXPECT_NEAR(as_is.size_x, 10000.0, 500.0) << "the GeoTIFF pixel scale read";
+  EXPECT_NEAR(*std::min_element(as_is.heights.begin(), as_is.heights.end()), -1.0, 0.5);
+  EXPECT_NEAR(*std::max_element(as_is.heights.begin(), as_is.heights.end()), 88.0, 0.5);
+
+  const fs::path robots = fs::path(MECHSIM_SOURCE_DIR) / "robots/cc8";
+  for (const char* soil : {"", "lete_sand"}) {
+    const fs::path file = dir_ / (std::string("olinda_") + (*soil ? soil : "rigid") + ".yaml");
+    std::ofstream(file) << "name: cc8_olinda_dem\n"
+                        << "robot: {description: " << (robots / "urdf/cc8.urdf.xacro").string()
+                        << ", packages: {mechsim_cc8: " << robots.string() << "}}\n"
+                        << "world: {name: " << dem.string() << ", size_x: 45, size_y: 45, z_min: 0, z_max: 1.5"
+                        << (*soil ? std::string(", soil: ") + soil : std::string()) << "}\n"
+                        << "spawn: {x: -12, y: -17, yaw: 0.5}\n"
+                        << "controllers: {file: " << (robots / "config/controllers.yaml").string()
+                        << ", namespace: cc8, start: [joint_state_controller, rover_drive_controller]}\n"
+                        << "duration: 60\n"
+                        << "timeline:\n"
+                        << "  - at: 0.5\n"
+                        << "    controller: rover_drive_controller\n"
+                        << "    route: {waypoints: [[-6, -13], [0, -9], [6, -8], [10, -12], [16, -14]], speed: 0.45,\n"
+                        << "            tolerance: 0.4, lookahead: 1.0, max_yaw_rate: 0.5}\n";
+    const ScenarioResult r = run(std::string("Olinda DEM, ") + (*soil ? soil : "rigid"), load_scenario(file.string()));
+    ASSERT_TRUE(r.completed) << r.error;  // no divergence, did not leave or fall off the field
+    EXPECT_TRUE(r.events.empty());
+    EXPECT_GT(r.distance, *soil ? 12.0 : 20.0) << "it drove across the plain";
+    EXPECT_LT(r.max_tilt, 35.0 * M_PI / 180.0) << "it stayed on its wheels";
+    // Above the ground under it (the map as the world holds it: rescaled and 45 m across).
+    physics::HeightmapOptions yard;
+    yard.size_x = yard.size_y = 45.0;
+    yard.z_min = 0.0;
+    yard.z_max = 1.5;
+    const physics::Heightmap map = physics::load_heightmap(dem, yard);
+    const auto ix = static_cast<std::size_t>(std::lround((r.final_x + 22.5) / map.cell_x()));
+    const auto iy = static_cast<std::size_t>(std::lround((r.final_y + 22.5) / map.cell_y()));
+    const double ground = map.at(iy, ix);
     std::printf("[ figures  ] base %.3f m above the ground under it\n", r.final_z - ground);
     EXPECT_GT(r.final_z - ground, -0.05);
     EXPECT_LT(r.final_z - ground, 0.5);
