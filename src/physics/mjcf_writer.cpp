@@ -247,11 +247,14 @@ class Writer {
     }
   }
 
-  // A fixed mesh object: a world geom of its mesh asset (MuJoCo collides with its convex hull; rays
-  // and cameras see its triangles). One whose mesh could not be loaded or compiled is left out
-  // with a warning, as a robot's mesh geom is.
+  // A mesh object: a geom of its mesh asset (MuJoCo collides with its convex hull; rays and cameras
+  // see its triangles), a world geom when fixed, else a body with a free joint. A free one's mass
+  // is spread as a solid filling its bounds (centre of mass at the bounds' centre, a box's
+  // inertia): MuJoCo 2.2.2's compiler takes inertia from all geoms or none, and mechsim gives
+  // every body its own. One whose mesh could not be loaded or compiled is left out with a warning,
+  // as a robot's mesh geom is.
   void write_mesh_object(const WorldBox& b, const std::string& where, const std::string& friction) {
-    if (!b.fixed) throw PhysicsError(where + ": a mesh object must be fixed (mechsim holds free boxes, cylinders and spheres)");
+    if (!b.fixed && !(b.mass > 0.0 && std::isfinite(b.mass))) throw PhysicsError(where + ": mass must be finite and > 0 (kg)");
     const auto it = b.mesh_path.empty() ? usable_.end() : usable_.find(mesh_key(b.mesh_path, b.mesh_scale));
     if (it == usable_.end()) {
       const auto any = b.mesh_path.empty() ? all_.end() : all_.find(mesh_key(b.mesh_path, b.mesh_scale));
@@ -259,9 +262,20 @@ class Writer {
       doc_.warnings.push_back(where + ": mesh '" + b.mesh_path + "' left out (" + why + ")");
       return;
     }
-    x_ << "    <geom name=\"box:" << escape(b.name) << "\" type=\"mesh\" mesh=\"" << it->second->name
-       << "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << friction << "\""
-       << pose_attrs(b.pose) << "/>\n";
+    const std::string geom = "<geom name=\"box:" + escape(b.name) + "\" type=\"mesh\" mesh=\"" + it->second->name +
+                             "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" + friction + "\"";
+    if (b.fixed) {
+      x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
+      return;
+    }
+    if (!(b.size.x > 0.0 && b.size.y > 0.0 && b.size.z > 0.0))
+      throw PhysicsError(where + ": a free mesh object needs bounds of some size along x, y and z");
+    const double m = b.mass, xx = b.size.x * b.size.x, yy = b.size.y * b.size.y, zz = b.size.z * b.size.z;
+    const description::Vec3 centre{b.mesh_min.x + b.size.x / 2, b.mesh_min.y + b.size.y / 2, b.mesh_min.z + b.size.z / 2};
+    x_ << "    <body name=\"box:" << escape(b.name) << "\"" << pose_attrs(b.pose) << ">\n      <freejoint name=\"box:"
+       << escape(b.name) << "\"/>\n      <inertial pos=\"" << vec(centre) << "\" mass=\"" << num(m) << "\" diaginertia=\""
+       << vec({m * (yy + zz) / 12.0, m * (xx + zz) / 12.0, m * (xx + yy) / 12.0}) << "\"/>\n      " << geom
+       << "/>\n    </body>\n";
   }
 
   void write_body(std::size_t index, int indent) {

@@ -55,12 +55,14 @@ struct WorldBox {
   // which spans mesh_min..mesh_min + size in its frame.
   description::Vec3 size{0.1, 0.1, 0.1};
   Shape shape = Shape::Box;
-  // Mesh only (fixed objects only: a static model's mesh in an SDF world): the file (STL, OBJ,
-  // or anything assimp reads, as robot meshes), its scale, and its bounds' low corner (m, scaled).
+  // Mesh only: the file (STL, OBJ, or anything assimp reads, as robot meshes), its scale, and its
+  // bounds' low corner (m, scaled). MuJoCo collides with its convex hull; a free one's mass fills
+  // its bounds (a solid box's inertia about the bounds' centre).
   std::string mesh_path;
   description::Vec3 mesh_scale{1.0, 1.0, 1.0};
   description::Vec3 mesh_min{0.0, 0.0, 0.0};
-  double mass = 1.0;                     // kg, > 0; free objects only (uniform density)
+  double mass = 1.0;                     // kg, > 0; free objects only (uniform density; a mesh's
+                                         // as if it filled its bounds)
   bool fixed = true;
 };
 

@@ -205,7 +205,7 @@ Scenario load_scenario(const Params& root, const std::string& path) {
     s.seed = static_cast<std::uint64_t>(root.get<int>("seed", 1));
     if (auto world = root.find("world")) {
       s.world = read_world_config(*world, base);
-      if (auto boxes = world->find("boxes")) s.boxes = read_boxes(*boxes);
+      if (auto boxes = world->find("boxes")) s.boxes = read_boxes(*boxes, base);
       const std::string leaving = world->get<std::string>("on_leaving", "stop");
       if (leaving == "stop") {
         s.on_leaving = LeavingTerrain::Stop;

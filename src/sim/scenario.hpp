@@ -27,6 +27,9 @@
 //          # or an orientation quaternion instead of roll/pitch/yaw: quat: [w, x, y, z]
 //       - {name: drum, shape: cylinder, radius: 0.2, length: 0.6, x: 2, z: 0.3}  # axis along z
 //       - {name: ball, shape: sphere, radius: 0.1, x: 1, z: 0.5, fixed: false}
+//       - {name: rock, shape: mesh, mesh: rock.stl, scale: [1, 1, 1], x: 3, z: 0.4, fixed: false, mass: 20}
+//         # a mesh file (STL, OBJ, DAE, ...; relative to this file), its own frame at the pose;
+//         # MuJoCo collides with its convex hull; a free one's mass fills its bounds
 //   spawn:
 //     x: 0, y: 0, z: 0.02, yaw: 0     # m, rad (roll, pitch, yaw) of the root link. On a height
 //                                     # field (mars_yard_2024, a heightmap file) z is measured

@@ -33,6 +33,6 @@ double finite(const Params& p, std::string_view key, double fallback);
 std::vector<double> values_of(const Params& point, const char* key, std::size_t expected);
 
 Check read_check(const Params& c);
-std::vector<physics::WorldBox> read_boxes(const Params& list);
+std::vector<physics::WorldBox> read_boxes(const Params& list, const std::filesystem::path& base);
 
 }  // namespace mechsim::sim::scenario_read

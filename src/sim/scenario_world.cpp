@@ -1,7 +1,11 @@
 // The scenario's `world:`: the world's name, seed, heightmap extent and soil, and its objects
-// (boxes, cylinders, spheres).
+// (boxes, cylinders, spheres, meshes).
 #include <cmath>
+#include <exception>
+#include <filesystem>
 #include <string>
+
+#include "physics/mesh_loader.hpp"
 
 #include "sim/scenario_read.hpp"
 #include "sim/soil_config.hpp"
@@ -13,11 +17,12 @@ using namespace scenario_read;
 
 namespace scenario_read {
 
-std::vector<physics::WorldBox> read_boxes(const Params& list) {
+std::vector<physics::WorldBox> read_boxes(const Params& list, const fs::path& base) {
   if (!list.is_list()) fail(list, "expected a list of boxes");
   std::vector<physics::WorldBox> boxes;
   for (const Params& b : list.items()) {
-    only_keys(b, {"name", "shape", "size", "radius", "length", "x", "y", "z", "roll", "pitch", "yaw", "quat", "fixed", "mass"});
+    only_keys(b, {"name", "shape", "size", "radius", "length", "mesh", "scale", "x", "y", "z", "roll", "pitch", "yaw", "quat",
+                  "fixed", "mass"});
     physics::WorldBox box;
     box.name = b.get<std::string>("name");
     for (const physics::WorldBox& other : boxes) {
@@ -51,9 +56,33 @@ std::vector<physics::WorldBox> read_boxes(const Params& list) {
       const double d = 2.0 * positive("radius", "m");
       box.shape = physics::WorldBox::Shape::Sphere;
       box.size = {d, d, d};
+    } else if (shape == "mesh") {
+      // The file's own frame at the pose (not its centre): as a robot's or an SDF model's mesh.
+      none_of({"size", "radius", "length"});
+      if (!b.has("mesh")) fail(b, "a mesh needs 'mesh' (its file: STL, OBJ, DAE, ...; relative to this file)");
+      const std::string file = resolve_path(base, b.get<std::string>("mesh"));
+      std::error_code ec;
+      if (!fs::is_regular_file(file, ec)) fail(b.child("mesh"), "no such file: " + file);
+      if (b.has("scale")) {
+        const auto scale = values_of(b, "scale", 3);
+        for (double v : scale)
+          if (!(v > 0.0)) fail(b.child("scale"), "must be > 0 along x, y and z");
+        box.mesh_scale = {scale[0], scale[1], scale[2]};
+      }
+      const double scale[3] = {box.mesh_scale.x, box.mesh_scale.y, box.mesh_scale.z};
+      try {
+        const physics::MeshBounds bounds = physics::mesh_bounds(file, scale);
+        box.size = {bounds.max[0] - bounds.min[0], bounds.max[1] - bounds.min[1], bounds.max[2] - bounds.min[2]};
+        box.mesh_min = {bounds.min[0], bounds.min[1], bounds.min[2]};
+      } catch (const std::exception& e) {
+        fail(b.child("mesh"), e.what());
+      }
+      box.shape = physics::WorldBox::Shape::Mesh;
+      box.mesh_path = file;
     } else {
-      fail(b.child("shape"), "expected box, cylinder or sphere, got '" + shape + "'");
+      fail(b.child("shape"), "expected box, cylinder, sphere or mesh, got '" + shape + "'");
     }
+    if (shape != "mesh" && b.has("scale")) fail(b.child("scale"), "a " + shape + " takes no 'scale' (a mesh's)");
     box.pose.position = {finite(b, "x", 0.0), finite(b, "y", 0.0), finite(b, "z", 0.0)};
     if (b.has("quat")) {
       if (b.has("roll") || b.has("pitch") || b.has("yaw")) fail(b.child("quat"), "give quat or roll/pitch/yaw, not both");

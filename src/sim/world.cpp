@@ -15,17 +15,7 @@ namespace mechsim::sim {
 
 namespace {
 
-// Boxes, cylinders and spheres: what the world's objects can be (physics::WorldBox); meshes too
-// when fixed (`meshes`).
-bool only_primitives(const description::RobotModel& robot) {
-  for (const description::Link& link : robot.links) {
-    for (const description::Collision& c : link.collisions)
-      if (c.geometry.type == description::GeometryType::Mesh) return false;
-  }
-  return true;
-}
-
-// Why a static model's mesh collision cannot be a world object ("" when it can): its file
+// Why a model's mesh collision cannot be a world object ("" when it can): its file
 // resolved, exists and is readable (the bounds are read here, so a bad file is named now).
 std::string mesh_problem(const description::Geometry& g, physics::WorldBox& object) {
   if (g.mesh_path.empty()) return "mesh '" + g.mesh_uri + "' was not found (is its model on GAZEBO_MODEL_PATH?)";
@@ -61,7 +51,7 @@ void set_shape(const description::Geometry& g, physics::WorldBox& object) {
   }
 }
 
-// Gazebo's world file: the ground and the boxes, cylinders and spheres the physics can hold (sdf_model.hpp says how models
+// Gazebo's world file: the ground and the boxes, cylinders, spheres and meshes the physics can hold (sdf_model.hpp says how models
 // map to robots; a model's root link frame is its pose times root_offset).
 World make_sdf_world(const std::string& path) {
   description::SdfWorld sdf;
@@ -95,7 +85,10 @@ World make_sdf_world(const std::string& path) {
     const bool has_links = !model.robot.links.empty() &&
                            std::any_of(model.robot.links.begin(), model.robot.links.end(),
                                        [](const description::Link& l) { return !l.collisions.empty(); });
-    if (has_links && (model.is_static || (only_primitives(model.robot) && model.robot.links.size() == 1))) {
+    // Static models whole; a moving model of one link with one shape (a box, cylinder, sphere or
+    // mesh) as a free object. Several shapes would fall apart as separate objects.
+    const bool one_shape = model.robot.links.size() == 1 && model.robot.links.front().collisions.size() == 1;
+    if (has_links && (model.is_static || one_shape)) {
       const description::Pose X_WR = physics::compose(model.pose, model.root_offset);
       const description::Link& root = model.robot.links.front();
       const std::size_t before = world.spec.boxes.size();
@@ -129,8 +122,8 @@ World make_sdf_world(const std::string& path) {
       if (world.spec.boxes.size() > before) used = true;
     } else if (has_links) {
       world.not_simulated.push_back("model '" + model.name +
-                                    "' (mechsim's world holds the ground, boxes, cylinders and spheres, and meshes of "
-                                    "static models; moving meshes and articulated models need a robot of their own)");
+                                    "' (mechsim's world holds the ground and objects of one link: boxes, cylinders, "
+                                    "spheres and meshes; a moving model of several links or shapes needs a robot of its own)");
     }
     if (used) world.sdf_models.push_back(model.name);
   }

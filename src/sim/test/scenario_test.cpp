@@ -82,6 +82,23 @@ checks:
   EXPECT_EQ(s.integrator, physics::BuildOptions{}.integrator);  // the project default when absent
 }
 
+// Objects of any mesh a user has: its file relative to the scenario, its scale, its bounds read.
+TEST_F(ScenarioFile, ReadsMeshObjects) {
+  std::ofstream(dir_ / "wedge.obj") << "v 0 0 0\nv 2 0 0\nv 0 1 0\nv 0 0 0.5\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const Scenario s = load_scenario(write(
+      "duration: 1\nworld:\n  boxes:\n    - {name: w, shape: mesh, mesh: wedge.obj, scale: [1, 2, 3], x: 1, fixed: false, mass: 4}\n"));
+  ASSERT_EQ(s.boxes.size(), 1u);
+  const physics::WorldBox& w = s.boxes[0];
+  EXPECT_EQ(w.shape, physics::WorldBox::Shape::Mesh);
+  EXPECT_EQ(w.mesh_path, (dir_ / "wedge.obj").lexically_normal().string());
+  EXPECT_DOUBLE_EQ(w.size.x, 2.0);
+  EXPECT_DOUBLE_EQ(w.size.y, 2.0);
+  EXPECT_DOUBLE_EQ(w.size.z, 1.5);
+  EXPECT_DOUBLE_EQ(w.mesh_scale.z, 3.0);
+  EXPECT_FALSE(w.fixed);
+  EXPECT_DOUBLE_EQ(w.mass, 4.0);
+}
+
 TEST_F(ScenarioFile, ReadsTheIntegrator) {
   EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: euler\n")).integrator, physics::Integrator::Euler);
   EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: rk4\n")).integrator, physics::Integrator::Rk4);
@@ -237,13 +254,22 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCase{"joint_check_no_within", "duration: 1\nchecks:\n  - {joint: {name: j, position: 1}}\n", "within"},
                     BadCase{"odometry_empty", "duration: 1\nchecks:\n  - {odometry: {}}\n", "needs max_error_fraction and/or max_yaw_error_fraction"},
                     BadCase{"box_size", "duration: 1\nworld: {boxes: [{name: a, size: [1, 0, 1]}]}\n", "/world/boxes[0]/size: edge lengths must be > 0 m"},
+                    BadCase{"mesh_without_file", "duration: 1\nworld: {boxes: [{name: m, shape: mesh}]}\n", "a mesh needs 'mesh'"},
+                    BadCase{"mesh_missing", "duration: 1\nworld: {boxes: [{name: m, shape: mesh, mesh: rock.stl}]}\n",
+                            "/world/boxes[0]/mesh: no such file: "},
+                    BadCase{"mesh_not_a_mesh", "duration: 1\nworld: {boxes: [{name: m, shape: mesh, mesh: controllers.yaml}]}\n",
+                            "/world/boxes[0]/mesh: "},
+                    BadCase{"mesh_with_size", "duration: 1\nworld: {boxes: [{name: m, shape: mesh, mesh: a.stl, size: [1, 1, 1]}]}\n",
+                            "a mesh takes no 'size'"},
+                    BadCase{"box_with_scale", "duration: 1\nworld: {boxes: [{name: b, size: [1, 1, 1], scale: [2, 2, 2]}]}\n",
+                            "a box takes no 'scale'"},
                     BadCase{"box_twice", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1]}, {name: a, size: [1, 1, 1]}]}\n",
                             "box 'a' is named twice"},
                     BadCase{"box_quat_and_yaw", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], yaw: 1, quat: [1, 0, 0, 0]}]}\n",
                             "give quat or roll/pitch/yaw, not both"},
                     BadCase{"box_typo", "duration: 1\nworld: {boxes: [{name: a, size: [1, 1, 1], heigth: 2}]}\n", "unknown key 'heigth'"},
                     BadCase{"box_shape", "duration: 1\nworld: {boxes: [{name: a, shape: cone, radius: 1}]}\n",
-                            "/world/boxes[0]/shape: expected box, cylinder or sphere, got 'cone'"},
+                            "/world/boxes[0]/shape: expected box, cylinder, sphere or mesh, got 'cone'"},
                     BadCase{"cylinder_no_length", "duration: 1\nworld: {boxes: [{name: a, shape: cylinder, radius: 1}]}\n",
                             "a cylinder needs 'length'"},
                     BadCase{"sphere_size", "duration: 1\nworld: {boxes: [{name: a, shape: sphere, radius: 1, size: [1, 1, 1]}]}\n",

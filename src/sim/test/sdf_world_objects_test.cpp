@@ -2,13 +2,15 @@
 // a box, a cylinder and a cup mesh on a box for ground) becomes a world whose sphere, box and
 // cylinder stand where the file puts them, at their sizes (found by ray casts from above); the
 // cup's mesh, whose file the shared data lacks, is listed as not simulated. A static model's mesh
-// (here an OBJ block of our own) stands where and as large as the file says, and holds objects up.
+// (here an OBJ block of our own) stands where and as large as the file says, and holds objects up;
+// a moving model's mesh falls, turns over and comes to rest at its size.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -162,6 +164,73 @@ TEST(SdfWorldObjects, AStaticModelsMeshStandsWhereTheFileSaysAndHoldsObjectsUp) 
   EXPECT_NEAR(p.ground_height(2.5, 2.1), 0.0, 1e-6);
   while (p.time() < 1.5) ASSERT_TRUE(p.step().ok());
   EXPECT_NEAR(p.ground_height(2.5, 1.0), 0.7, 3e-3);  // the ball's top, resting on the block
+}
+
+constexpr const char* kMovingMeshWorld = R"(<?xml version="1.0"?>
+<sdf version="1.6">
+  <world name="moving">
+    <model name="ground"><static>true</static>
+      <link name="l"><collision name="c"><geometry><plane><normal>0 0 1</normal><size>20 20</size></plane></geometry></collision></link>
+    </model>
+    <model name="crate"><pose>2 -1 0.6 0 0 0.3</pose>
+      <link name="body"><inertial><mass>5</mass></inertial>
+        <collision name="c"><geometry><mesh><uri>block.obj</uri><scale>1 0.8 0.4</scale></mesh></geometry></collision></link>
+    </model>
+    <model name="tipping"><pose>-2 1 0.8 0 1.2 0</pose>
+      <link name="body"><collision name="c"><geometry><mesh><uri>block.obj</uri><scale>0.3 0.3 1</scale></mesh></geometry></collision></link>
+    </model>
+    <model name="two_shapes"><pose>0 4 1 0 0 0</pose>
+      <link name="body">
+        <collision name="a"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+        <collision name="b"><pose>0 0 0.3 0 0 0</pose><geometry><sphere><radius>0.1</radius></sphere></geometry></collision>
+      </link>
+    </model>
+  </world>
+</sdf>
+)";
+
+// Moving (non-static) one-link models of a mesh are free objects: a crate dropped 0.6 m lands flat
+// at its height (0.4 m); a tall block (0.3 x 0.3 x 1 m) dropped tilted 69 deg falls over onto
+// its long side (0.3 m high). A moving link of two shapes is listed as not simulated rather than
+// falling apart into two objects.
+TEST(SdfWorldObjects, AMovingModelsMeshFallsAndRestsAtItsSize) {
+  const fs::path dir = fs::temp_directory_path() / ("mechsim_sdf_moving_mesh_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() { fs::remove_all(dir); }
+  } cleanup{dir};
+  std::ofstream(dir / "block.obj") << kCubeObj;
+  std::ofstream(dir / "moving.world") << kMovingMeshWorld;
+  WorldConfig config;
+  config.name = (dir / "moving.world").string();
+  const World world = make_world(config);
+  ASSERT_EQ(world.spec.boxes.size(), 2u);
+  for (const physics::WorldBox& b : world.spec.boxes) {
+    EXPECT_EQ(b.shape, physics::WorldBox::Shape::Mesh) << b.name;
+    EXPECT_FALSE(b.fixed) << b.name;
+  }
+  EXPECT_DOUBLE_EQ(world.spec.boxes[0].mass, 5.0);
+  EXPECT_TRUE(std::any_of(world.not_simulated.begin(), world.not_simulated.end(), [](const std::string& n) {
+    return n.find("model 'two_shapes'") != std::string::npos && n.find("several links or shapes") != std::string::npos;
+  })) << ::testing::PrintToString(world.not_simulated);
+
+  physics::BuildOptions options;
+  options.world = world.spec;
+  options.spawn.x = -6.0;  // out of the way
+  const auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
+  for (const std::string& w : model->warnings()) ADD_FAILURE() << "warning: " << w;
+  physics::Physics p(model);
+  EXPECT_NEAR(p.ground_height(2.4, -0.6), 1.0, 1e-6) << "the crate's top before it falls";
+  while (p.time() < 3.0) ASSERT_TRUE(p.step().ok());
+  // The crate (1 x 0.8 m footprint from its corner at (2, -1), turned 0.3 rad): its middle.
+  const double cx = 2.0 + 0.5 * std::cos(0.3) - 0.4 * std::sin(0.3), cy = -1.0 + 0.5 * std::sin(0.3) + 0.4 * std::cos(0.3);
+  EXPECT_NEAR(p.ground_height(cx, cy), 0.4, 5e-3);
+  // The tall block lies on its side: nothing of it higher than 0.3 m (+ a little settling).
+  double top = 0.0;
+  for (double x = -3.5; x <= 0.0; x += 0.05)
+    for (double y = 0.5; y <= 1.8; y += 0.05) top = std::max(top, p.ground_height(x, y));
+  EXPECT_NEAR(top, 0.3, 5e-3) << "fell over onto a long side";
 }
 
 TEST(SdfWorldObjects, ARoundObjectOfUnequalWidthsIsABuildErrorNamingIt) {
