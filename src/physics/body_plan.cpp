@@ -399,8 +399,65 @@ class Planner {
 
 }  // namespace
 
+namespace {
+
+// A world model planned as a robot of its own, at its pose, its names prefixed.
+BodyPlan plan_passive(const WorldModel& model, const BuildOptions& options) {
+  if (model.name.empty()) throw PhysicsError("world: a passive model has no name");
+  if (model.robot == nullptr) throw PhysicsError("world model '" + model.name + "': no description");
+  BuildOptions own = options;
+  own.spawn = {};
+  own.world.models.clear();
+  BodyPlan p = Planner(*model.robot, own).run();
+  const std::string prefix = model.name + "::";
+  for (PlannedBody& b : p.bodies) {
+    b.name = prefix + b.name;
+    if (b.parent < 0) b.X_PB = compose(model.pose, b.X_PB);
+    for (PlannedJoint& j : b.joints) {
+      j.name = prefix + j.name;
+      j.urdf_joint = prefix + j.urdf_joint;
+      j.one_dof_urdf = false;  // nothing drives it: no actuator
+    }
+    for (PlannedGeom& g : b.geoms) {
+      g.name = prefix + g.name;
+      g.link = prefix + g.link;
+      g.wheel = g.narrow_wheel = false;  // the soil model acts on the robot's wheels only
+    }
+  }
+  for (PlannedGeom& g : p.world_geoms) {
+    g.name = prefix + g.name;
+    g.link = prefix + g.link;
+    g.X_BG = compose(model.pose, g.X_BG);
+    g.wheel = g.narrow_wheel = false;
+  }
+  for (LinkFrame& f : p.link_frames) f.link = prefix + f.link;
+  for (PlannedMimic& m : p.mimics) {
+    m.follower = prefix + m.follower;
+    m.leader = prefix + m.leader;
+  }
+  for (auto& [a, b] : p.excludes) {
+    a = prefix + a;
+    b = prefix + b;
+  }
+  for (std::string& w : p.warnings) w = "world model '" + model.name + "': " + w;
+  p.differential.reset();
+  p.gravity_off_links.clear();
+  return p;
+}
+
+}  // namespace
+
 BodyPlan plan_bodies(const description::RobotModel& robot, const BuildOptions& options) {
-  return Planner(robot, options).run();
+  BodyPlan plan = Planner(robot, options).run();
+  std::set<std::string> names;
+  for (const WorldModel& model : options.world.models) {
+    if (!names.insert(model.name).second) throw PhysicsError("world model '" + model.name + "': the name is used twice");
+    BodyPlan p = plan_passive(model, options);
+    plan.warnings.insert(plan.warnings.end(), p.warnings.begin(), p.warnings.end());
+    p.warnings.clear();
+    plan.passive.push_back(std::move(p));
+  }
+  return plan;
 }
 
 }  // namespace mechsim::physics

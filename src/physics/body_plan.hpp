@@ -88,6 +88,10 @@ struct BodyPlan {
   std::vector<std::string> dropped_joints;  // URDF joints not simulated (massless child)
   std::vector<std::string> warnings;
   bool fixed_to_world = false;
+  // The world's passive models (WorldSpec::models), planned as robots of their own, every name
+  // prefixed "<model>::" and their roots placed at the model's pose. No actuators are written
+  // for their joints.
+  std::vector<BodyPlan> passive;
 };
 
 // Throws PhysicsError (physics/physics_error.hpp) on descriptions MuJoCo cannot represent.

@@ -96,9 +96,14 @@ class Writer {
       usable_[mesh_key(m.path, m.scale)] = &m;
     }
     for (const MeshAsset& m : meshes) all_[mesh_key(m.path, m.scale)] = &m;
-    children_.resize(plan.bodies.size());
+    children_ = children_of(plan);
+  }
+
+  static std::vector<std::vector<std::size_t>> children_of(const BodyPlan& plan) {
+    std::vector<std::vector<std::size_t>> children(plan.bodies.size());
     for (std::size_t i = 0; i < plan.bodies.size(); ++i)
-      if (plan.bodies[i].parent >= 0) children_[plan.bodies[i].parent].push_back(i);
+      if (plan.bodies[i].parent >= 0) children[static_cast<std::size_t>(plan.bodies[i].parent)].push_back(i);
+    return children;
   }
 
   MjcfDocument write(const std::string& model_name) {
@@ -126,18 +131,34 @@ class Writer {
     write_world();
     for (const PlannedGeom& g : plan_.world_geoms) write_geom(g, 2);
     for (std::size_t i = 0; i < plan_.bodies.size(); ++i)
-      if (plan_.bodies[i].parent < 0) write_body(i, 2);
+      if (plan_.bodies[i].parent < 0) write_body(plan_, children_, i, 2);
+    // The world's passive models after the robot (its root joint stays the model's first), their
+    // geoms colliding as world objects do.
+    for (const BodyPlan& p : plan_.passive) {
+      passive_ = true;
+      for (const PlannedGeom& g : p.world_geoms) write_geom(g, 2);
+      const auto children = children_of(p);
+      for (std::size_t i = 0; i < p.bodies.size(); ++i)
+        if (p.bodies[i].parent < 0) write_body(p, children, i, 2);
+      passive_ = false;
+    }
     write_boxes();
     x_ << "  </worldbody>\n";
-    if (!plan_.excludes.empty()) {
+    std::vector<std::pair<std::string, std::string>> excludes = plan_.excludes;
+    std::vector<PlannedMimic> mimics = plan_.mimics;
+    for (const BodyPlan& p : plan_.passive) {
+      excludes.insert(excludes.end(), p.excludes.begin(), p.excludes.end());
+      mimics.insert(mimics.end(), p.mimics.begin(), p.mimics.end());
+    }
+    if (!excludes.empty()) {
       x_ << "  <contact>\n";
-      for (const auto& [a, b] : plan_.excludes)
+      for (const auto& [a, b] : excludes)
         x_ << "    <exclude body1=\"" << escape(a) << "\" body2=\"" << escape(b) << "\"/>\n";
       x_ << "  </contact>\n";
     }
-    if (!plan_.mimics.empty()) {
+    if (!mimics.empty()) {
       x_ << "  <equality>\n";
-      for (const PlannedMimic& m : plan_.mimics) {
+      for (const PlannedMimic& m : mimics) {
         x_ << "    <joint name=\"mimic:" << escape(m.follower) << "\" joint1=\"" << escape(m.follower)
            << "\" joint2=\"" << escape(m.leader) << "\" polycoef=\"" << num(m.offset) << " " << num(m.multiplier)
            << " 0 0 0\"";
@@ -278,8 +299,9 @@ class Writer {
        << "/>\n    </body>\n";
   }
 
-  void write_body(std::size_t index, int indent) {
-    const PlannedBody& b = plan_.bodies[index];
+  void write_body(const BodyPlan& plan, const std::vector<std::vector<std::size_t>>& children, std::size_t index,
+                  int indent) {
+    const PlannedBody& b = plan.bodies[index];
     const std::string pad(static_cast<std::size_t>(indent) * 2, ' ');
     x_ << pad << "<body name=\"" << escape(b.name) << "\"" << pose_attrs(b.X_PB) << ">\n";
     if (b.inertial) {
@@ -290,7 +312,7 @@ class Writer {
     }
     for (const PlannedJoint& j : b.joints) write_joint(j, pad + "  ");
     for (const PlannedGeom& g : b.geoms) write_geom(g, indent + 1);
-    for (std::size_t child : children_[index]) write_body(child, indent + 1);
+    for (std::size_t child : children[index]) write_body(plan, children, child, indent + 1);
     x_ << pad << "</body>\n";
   }
 
@@ -340,6 +362,11 @@ class Writer {
     if (g.visual) {
       x_ << " contype=\"0\" conaffinity=\"0\" group=\"1\"";
       if (g.rgba) x_ << " rgba=\"" << num((*g.rgba)[0]) << " " << num((*g.rgba)[1]) << " " << num((*g.rgba)[2]) << " " << num((*g.rgba)[3]) << "\"";
+    } else if (passive_) {
+      // A passive model's geoms are world objects (bit 0): they touch the ground, the robot,
+      // other objects and each other (MuJoCo skips a body and its parent).
+      x_ << " contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << num(g.friction) << " "
+         << num(options_.contact.torsional_friction) << " " << num(options_.contact.rolling_friction) << "\"";
     } else {
       // bit 0: world; bit 1: this robot. Links without selfCollide do not accept bit 1, so two
       // of them never touch; a selfCollide link touches every link (SDF: collide if either).
@@ -373,6 +400,7 @@ class Writer {
   ArenaSize arena_;
   std::map<std::string, const MeshAsset*> usable_, all_;
   std::vector<std::vector<std::size_t>> children_;
+  bool passive_ = false;  // writing a passive model's geoms
   std::ostringstream x_;
   MjcfDocument doc_;
 };
@@ -404,6 +432,10 @@ std::vector<MeshAsset> collect_meshes(const BodyPlan& plan, const WorldSpec* wor
   std::map<std::string, std::size_t> index;
   collect_from(plan.world_geoms, index, out);
   for (const PlannedBody& b : plan.bodies) collect_from(b.geoms, index, out);
+  for (const BodyPlan& p : plan.passive) {
+    collect_from(p.world_geoms, index, out);
+    for (const PlannedBody& b : p.bodies) collect_from(b.geoms, index, out);
+  }
   if (world != nullptr)
     for (const WorldBox& b : world->boxes)
       if (b.shape == WorldBox::Shape::Mesh && !b.mesh_path.empty()) add_mesh(b.mesh_path, b.mesh_scale, index, out);

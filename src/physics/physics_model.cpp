@@ -223,13 +223,18 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     if (options.render_terrain) fill_terrain_tiles(*m, *options.world.terrain);
   }
 
-  // Joint table: every 1-DOF MuJoCo joint, in MuJoCo order.
-  std::set<std::string> one_dof;
+  // Joint table: every 1-DOF MuJoCo joint of the robot, in MuJoCo order (the world's passive
+  // models' joints are the world's, as its free objects' are).
+  std::set<std::string> one_dof, passive;
   for (const PlannedBody& b : plan.bodies)
     for (const PlannedJoint& j : b.joints)
       if (j.one_dof_urdf) one_dof.insert(j.name);
+  for (const BodyPlan& p : plan.passive)
+    for (const PlannedBody& b : p.bodies)
+      for (const PlannedJoint& j : b.joints) passive.insert(j.name);
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) continue;
+    if (passive.count(mj_id2name(m, mjOBJ_JOINT, j))) continue;
     JointInfo info;
     info.name = mj_id2name(m, mjOBJ_JOINT, j);
     info.prismatic = m->jnt_type[j] == mjJNT_SLIDE;

@@ -1,6 +1,7 @@
 #pragma once
 // Options for building the MuJoCo model of one robot in one world.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -66,6 +67,17 @@ struct WorldBox {
   bool fixed = true;
 };
 
+// A passive articulated object in the world (an SDF world's moving model of several links): its
+// links and joints as a description, its root link at `pose`. Nothing drives it (no actuators,
+// no controllers); its joints keep their damping, friction and limits; its names in the MuJoCo
+// model are prefixed "<name>::". It collides with the world, the robot and its own links as a
+// world object does.
+struct WorldModel {
+  std::string name;
+  std::shared_ptr<const description::RobotModel> robot;
+  description::Pose pose;  // X_W<root link> (for a root link `world`: of the description's world frame)
+};
+
 // The world the robot is placed in.
 struct WorldSpec {
   enum class Kind { Empty, Heightmap };
@@ -74,6 +86,7 @@ struct WorldSpec {
   double gravity = 9.81;           // m/s^2 along -z of the world
   bool ground_plane = true;        // an infinite plane at z = 0 (Empty only)
   std::vector<WorldBox> boxes;     // objects in the world (any kind of world)
+  std::vector<WorldModel> models;  // passive articulated objects
 };
 
 // Where the robot starts: X_W<root> for a floating robot; for a robot whose root link is

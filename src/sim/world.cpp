@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "description/sdf/sdf_model.hpp"
 #include "physics/mesh_loader.hpp"
@@ -86,7 +87,7 @@ World make_sdf_world(const std::string& path) {
                            std::any_of(model.robot.links.begin(), model.robot.links.end(),
                                        [](const description::Link& l) { return !l.collisions.empty(); });
     // Static models whole; a moving model of one link with one shape (a box, cylinder, sphere or
-    // mesh) as a free object. Several shapes would fall apart as separate objects.
+    // mesh) as a free object; other moving models as passive articulated objects.
     const bool one_shape = model.robot.links.size() == 1 && model.robot.links.front().collisions.size() == 1;
     if (has_links && (model.is_static || one_shape)) {
       const description::Pose X_WR = physics::compose(model.pose, model.root_offset);
@@ -121,9 +122,14 @@ World make_sdf_world(const std::string& path) {
       }
       if (world.spec.boxes.size() > before) used = true;
     } else if (has_links) {
-      world.not_simulated.push_back("model '" + model.name +
-                                    "' (mechsim's world holds the ground and objects of one link: boxes, cylinders, "
-                                    "spheres and meshes; a moving model of several links or shapes needs a robot of its own)");
+      // A moving model of several links or shapes: a passive articulated object (its joints
+      // free, nothing driving them; a model's plugins are not run).
+      physics::WorldModel passive;
+      passive.name = model.name;
+      passive.robot = std::make_shared<const description::RobotModel>(model.robot);
+      passive.pose = physics::compose(model.pose, model.root_offset);
+      world.spec.models.push_back(std::move(passive));
+      used = true;
     }
     if (used) world.sdf_models.push_back(model.name);
   }
