@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "description/urdf/urdf_parser.hpp"
@@ -119,18 +120,35 @@ constexpr const char* kMeshWorld = R"(<?xml version="1.0"?>
 </sdf>
 )";
 
-TEST(SdfWorldObjects, AStaticModelsMeshStandsWhereTheFileSaysAndHoldsObjectsUp) {
-  const fs::path dir = fs::temp_directory_path() / ("mechsim_sdf_mesh_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  struct Cleanup {
-    fs::path dir;
-    ~Cleanup() { fs::remove_all(dir); }
-  } cleanup{dir};
-  std::ofstream(dir / "block.obj") << kCubeObj;
-  std::ofstream(dir / "meshes.world") << kMeshWorld;
-  WorldConfig config;
-  config.name = (dir / "meshes.world").string();
-  World world = make_world(config);
+// A world file of the test's own in a scratch folder (removed however the test ends), beside the
+// OBJ block its meshes name; and the cube robot built into it, out of the objects' way.
+class SdfWorldFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("mechsim_sdf_world_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "block.obj") << kCubeObj;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  World load(const char* sdf) {
+    std::ofstream(dir_ / "test.world") << sdf;
+    WorldConfig config;
+    config.name = (dir_ / "test.world").string();
+    return make_world(config);
+  }
+  static std::shared_ptr<const physics::PhysicsModel> build(const physics::WorldSpec& world) {
+    physics::BuildOptions options;
+    options.world = world;
+    options.spawn.x = -6.0;  // out of the way
+    auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
+    for (const std::string& w : model->warnings()) ADD_FAILURE() << "warning: " << w;
+    return model;
+  }
+  fs::path dir_;
+};
+
+TEST_F(SdfWorldFile, AStaticModelsMeshStandsWhereTheFileSaysAndHoldsObjectsUp) {
+  World world = load(kMeshWorld);
   ASSERT_EQ(world.spec.boxes.size(), 1u);
   const physics::WorldBox& block = world.spec.boxes[0];
   EXPECT_EQ(block.shape, physics::WorldBox::Shape::Mesh);
@@ -153,11 +171,7 @@ TEST(SdfWorldObjects, AStaticModelsMeshStandsWhereTheFileSaysAndHoldsObjectsUp) 
   ball.pose.position = {2.5, 1.0, 1.5};
   ball.fixed = false;
   world.spec.boxes.push_back(ball);
-  physics::BuildOptions options;
-  options.world = world.spec;
-  options.spawn.x = -6.0;  // out of the way
-  const auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
-  for (const std::string& w : model->warnings()) ADD_FAILURE() << "warning: " << w;
+  const auto model = build(world.spec);
   physics::Physics p(model);
   EXPECT_NEAR(p.ground_height(2.2, 0.3), 0.5, 1e-6);
   EXPECT_NEAR(p.ground_height(2.9, 1.9), 0.5, 1e-6);
@@ -193,18 +207,8 @@ constexpr const char* kMovingMeshWorld = R"(<?xml version="1.0"?>
 // Moving (non-static) one-link models of a mesh are free objects: a crate dropped 0.6 m lands flat
 // at its height (0.4 m); a tall block (0.3 x 0.3 x 1 m) dropped tilted 69 deg falls over onto
 // its long side (0.3 m high). A moving link of two shapes stays one body (a passive model).
-TEST(SdfWorldObjects, AMovingModelsMeshFallsAndRestsAtItsSize) {
-  const fs::path dir = fs::temp_directory_path() / ("mechsim_sdf_moving_mesh_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  struct Cleanup {
-    fs::path dir;
-    ~Cleanup() { fs::remove_all(dir); }
-  } cleanup{dir};
-  std::ofstream(dir / "block.obj") << kCubeObj;
-  std::ofstream(dir / "moving.world") << kMovingMeshWorld;
-  WorldConfig config;
-  config.name = (dir / "moving.world").string();
-  const World world = make_world(config);
+TEST_F(SdfWorldFile, AMovingModelsMeshFallsAndRestsAtItsSize) {
+  const World world = load(kMovingMeshWorld);
   ASSERT_EQ(world.spec.boxes.size(), 2u);
   for (const physics::WorldBox& b : world.spec.boxes) {
     EXPECT_EQ(b.shape, physics::WorldBox::Shape::Mesh) << b.name;
@@ -215,11 +219,7 @@ TEST(SdfWorldObjects, AMovingModelsMeshFallsAndRestsAtItsSize) {
   ASSERT_EQ(world.spec.models.size(), 1u);
   EXPECT_EQ(world.spec.models[0].name, "two_shapes");
 
-  physics::BuildOptions options;
-  options.world = world.spec;
-  options.spawn.x = -6.0;  // out of the way
-  const auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
-  for (const std::string& w : model->warnings()) ADD_FAILURE() << "warning: " << w;
+  const auto model = build(world.spec);
   physics::Physics p(model);
   EXPECT_NEAR(p.ground_height(2.4, -0.6), 1.0, 1e-6) << "the crate's top before it falls";
   while (p.time() < 3.0) ASSERT_TRUE(p.step().ok());
@@ -265,28 +265,15 @@ constexpr const char* kArticulatedWorld = R"(<?xml version="1.0"?>
 // Moving models of several links are passive articulated objects: a pendulum hinged to the world
 // and released 0.6 rad from the vertical swings down and, damped, comes to hang under its hinge;
 // a dumbbell (two spheres on a fixed joint) dropped tilted lands level on both spheres.
-TEST(SdfWorldObjects, AnArticulatedModelMovesOnItsJoints) {
-  const fs::path dir = fs::temp_directory_path() / ("mechsim_sdf_articulated_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  struct Cleanup {
-    fs::path dir;
-    ~Cleanup() { fs::remove_all(dir); }
-  } cleanup{dir};
-  std::ofstream(dir / "articulated.world") << kArticulatedWorld;
-  WorldConfig config;
-  config.name = (dir / "articulated.world").string();
-  const World world = make_world(config);
+TEST_F(SdfWorldFile, AnArticulatedModelMovesOnItsJoints) {
+  const World world = load(kArticulatedWorld);
   ASSERT_EQ(world.spec.models.size(), 2u) << ::testing::PrintToString(world.not_simulated);
   EXPECT_EQ(world.spec.models[0].name, "swing");
   EXPECT_EQ(world.spec.models[1].name, "dumbbell");
   for (const char* m : {"swing", "dumbbell"})
     EXPECT_NE(std::find(world.sdf_models.begin(), world.sdf_models.end(), m), world.sdf_models.end()) << m;
 
-  physics::BuildOptions options;
-  options.world = world.spec;
-  options.spawn.x = -6.0;  // out of the way
-  const auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
-  for (const std::string& w : model->warnings()) ADD_FAILURE() << "warning: " << w;
+  const auto model = build(world.spec);
   EXPECT_FALSE(model->joint_index("swing::hinge")) << "a passive joint is not the robot's";
   physics::Physics p(model);
   // The bob (radius 0.1) starts 0.6 m from the hinge (1, 0, 1.2) along the arm turned 0.6 rad
