@@ -2,7 +2,8 @@
 # The whole test suite, from a fresh Debian 12 machine: installs what it needs (ROS 1 included,
 # for the optional ROS layer), builds the release flavour and runs every test (unit, conformance,
 # scenario, cli, ros, slurm: a single-node Slurm the test starts), then builds the unit-test
-# programs with AddressSanitizer + UBSan and runs the unit tests there.
+# programs with AddressSanitizer + UBSan and runs the unit tests there, then fuzzes the readers of
+# robot descriptions and controller parameters for a short fixed budget.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --with-ros
@@ -20,3 +21,9 @@ ctest --test-dir build/release --output-on-failure -j 2
 scripts/build.sh asan unit-tests
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build/asan -L unit --output-on-failure -j 2
+# A short fixed fuzzing budget (libFuzzer, Clang, ASan + UBSan): 15 s for each target whose layers
+# build in about 3 minutes from scratch (description, mechanism, control, controllers; the other
+# targets need the physics and simulation layers, a Clang build of their own that would double
+# CI's time: `scripts/fuzz.sh all SECONDS` fuzzes them). A crash, a sanitizer report or a hang
+# found here fails the run (fuzz/README.md).
+MECHSIM_FUZZ_RUNS='' scripts/fuzz.sh xacro_fuzz,urdf_fuzz,controllers_fuzz,xmlrpc_fuzz 15
