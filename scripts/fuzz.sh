@@ -79,6 +79,12 @@ if isinstance(v, dict):
 # Without the allocation stack of every malloc (ASan's default keeps 30 frames) the targets run
 # about twice as fast; a finding is then replayed through its regression test for the full report.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-malloc_context_size=0:quarantine_size_mb=16}
+# The targets' scratch folders (fuzz/fuzz_files.hpp) go under the build folder: a target stopped
+# by a finding or a timeout exits without removing its own, and this script clears them when done.
+export TMPDIR=$root/$build/tmp
+rm -rf "$TMPDIR"
+mkdir -p "$TMPDIR"
+trap 'rm -rf "$TMPDIR"' EXIT
 status=0
 summary=()
 for t in "${targets[@]}"; do
