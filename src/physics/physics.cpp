@@ -103,6 +103,7 @@ void Physics::spawn_state() {
   data_->xfrc_base.assign(data_->d->xfrc_applied, data_->d->xfrc_applied + 6 * m->nbody);
   std::fill(data_->soil_state.begin(), data_->soil_state.end(), Data::SoilWheel{});
   std::fill(data_->soil_readings.begin(), data_->soil_readings.end(), WheelSoilReading{});
+  data_->ruts.clear();
   forward();
   diff_tau_a_ = diff_tau_b_ = 0.0;
 }
@@ -390,6 +391,24 @@ Twist Physics::link_twist(std::size_t link) const {
   const int b = info.body;
   const Vec3 r{X_WL.position.x - d->xipos[3 * b], X_WL.position.y - d->xipos[3 * b + 1],
                X_WL.position.z - d->xipos[3 * b + 2]};  // centre of mass -> link origin, world frame
+  return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
+}
+
+Pose Physics::body_pose(int b) const {
+  refresh_kinematics();
+  const mjData* d = data_->d;
+  return {{d->xpos[3 * b], d->xpos[3 * b + 1], d->xpos[3 * b + 2]},
+          {d->xquat[4 * b], d->xquat[4 * b + 1], d->xquat[4 * b + 2], d->xquat[4 * b + 3]}};
+}
+
+Twist Physics::body_twist(int b) const {
+  refresh_kinematics();
+  const mjData* d = data_->d;
+  mjtNum v[6];  // [angular; linear] at the body's centre of mass, world orientation
+  mj_objectVelocity(data_->m, d, mjOBJ_BODY, b, v, 0);
+  const Vec3 w{v[0], v[1], v[2]};
+  const Vec3 r{d->xpos[3 * b] - d->xipos[3 * b], d->xpos[3 * b + 1] - d->xipos[3 * b + 1],
+               d->xpos[3 * b + 2] - d->xipos[3 * b + 2]};  // centre of mass -> body origin
   return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
 }
 

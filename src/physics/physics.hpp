@@ -117,6 +117,8 @@ struct WheelSoilReading {
   double traction = 0.0;      // N, net drawbar pull along the heading (> 0 pulls forward)
   double lateral_force = 0.0; // N, along the axle
   double torque = 0.0;        // N m about the axle (< 0 resists a wheel driven forward)
+  double rut_depth = 0.0;     // m: how deep another wheel compacted the soil where this one is
+                              // (SoilParameters::multi_pass), 0 on virgin soil
 };
 
 // Acceleration of a point (Physics::link_acceleration), world frame.
@@ -237,6 +239,10 @@ class Physics {
   // Pose X_WL and twist of URDF link `link` (PhysicsModel::link_index).
   description::Pose link_pose(std::size_t link) const;
   Twist link_twist(std::size_t link) const;
+  // Any compiled body's frame (PhysicsModel::body_index, e.g. a world object's) and the twist of
+  // its origin, world frame. `body` must be in [1, body_count()).
+  description::Pose body_pose(int body) const;
+  Twist body_twist(int body) const;
   description::Pose base_pose() const;  // the root link
   Twist base_twist() const;
 

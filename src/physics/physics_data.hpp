@@ -11,6 +11,7 @@
 
 #include "physics/mujoco_internal.hpp"
 #include "physics/physics.hpp"
+#include "physics/soil_ruts.hpp"
 
 namespace mechsim::physics {
 
@@ -49,6 +50,14 @@ struct Physics::Data {
   std::vector<SoilWheel> soil_state, soil_pending;
   std::vector<WheelSoilReading> soil_readings, soil_pending_readings;
   int soil_ground = -1;
+  // The ruts (multi-pass), and where each wheel pressed the soil in the running step: the
+  // bottom point, the axle and the sinkage (NaN: not in the soil), pressed in when it succeeds.
+  detail::RutMap ruts;
+  struct Press {
+    double low[3] = {0.0, 0.0, 0.0}, axle[3] = {0.0, 0.0, 0.0};
+    double sinkage = 0.0;
+  };
+  std::vector<Press> soil_press;
   std::vector<mjtNum> xfrc_base;
   // The root's free joint and the root link's frame in its body (root_io.cpp), found once.
   mutable bool root_known = false;

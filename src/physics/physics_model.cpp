@@ -325,4 +325,8 @@ std::string PhysicsModel::body_name(int body) const {
   return n != nullptr ? n : "body" + std::to_string(body);
 }
 
+int PhysicsModel::body_index(const std::string& name) const {
+  return mj_name2id(impl_->model, mjOBJ_BODY, name.c_str());
+}
+
 }  // namespace mechsim::physics

@@ -125,6 +125,9 @@ class PhysicsModel {
   int dof_count() const;  // MuJoCo nv
   int geom_count() const;
   std::string body_name(int body) const;  // "world" for -1 or 0
+  // The compiled body named `name` (a URDF link, "<model>::<link>" of a world's passive model,
+  // "box:<name>" of a world's free object), -1 when there is none.
+  int body_index(const std::string& name) const;
   // A compiled geom's name ("<link>/collision/<i>", "<link>/visual/<i>", "ground", "terrain",
   // "box:<name>"), "" when unnamed or out of range; and its MuJoCo body (-1 when out of range).
   std::string_view geom_name(int geom) const;

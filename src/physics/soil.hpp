@@ -30,6 +30,9 @@ struct SoilParameters {
   // Depth (m) below the soil surface where a rigid bedrock stops the wheel (MuJoCo's rigid
   // contact there): a bound on sinkage for soils too soft for the load.
   double bedrock_depth = 0.06;
+  // Multi-pass (opt-in): a wheel that follows another in its rut meets soil the first one
+  // compacted (terramechanics.hpp, rut_depth). false: every wheel meets virgin soil.
+  bool multi_pass = false;
   // Citation of the values (shown in reports and `mechsim world soils`).
   std::string source;
 };

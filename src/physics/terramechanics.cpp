@@ -19,11 +19,14 @@ struct Sums {
 }  // namespace
 
 WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& wheel, double sinkage, double slip,
-                                  double lateral_shear, double rolling) {
+                                  double lateral_shear, double rolling, double rut_depth) {
   WheelSoilForces f;
   const double r = wheel.radius, b = wheel.width;
   if (!(sinkage > 0.0) || !(r > 0.0) || !(b > 0.0)) return f;
-  const double z = std::min(sinkage, r);
+  const double zr = std::isfinite(rut_depth) ? std::max(0.0, rut_depth) : 0.0;
+  // Below the rut's floor (the surface itself without a rut).
+  const double z = std::min(sinkage, r) - zr;
+  if (!(z > 0.0)) return f;  // the rim does not reach the rut's floor: no soil under it
   const double s = std::clamp(slip, -1.0, 1.0);
   const double t1 = std::acos(1.0 - z / r);
   const double t2 = -soil.exit_ratio * t1;
@@ -32,6 +35,7 @@ WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& 
   f.exit_angle = t2;
   const double k = (soil.k_c / b + soil.k_phi) * std::pow(r, soil.n);
   const double cos1 = std::cos(t1), sin1 = std::sin(t1);
+  const double offset = zr / r;  // the depth the soil was loaded to before, per radius
   const double tan_phi = std::tan(soil.friction_angle);
   const double span = t1 - t2;
 
@@ -40,7 +44,7 @@ WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& 
   const auto add = [&](double theta, double w, bool front) {
     double c_star = std::cos(theta);
     if (!front) c_star = std::cos(t1 - (theta - t2) / (tm - t2) * (t1 - tm));
-    const double sigma = k * std::pow(std::max(0.0, c_star - cos1), soil.n);
+    const double sigma = k * std::pow(std::max(0.0, c_star - cos1) + offset, soil.n);
     // Wong and Reece's j = r [(t1 - theta) - (1 - s)(sin t1 - sin theta)], split into the slip's
     // part and the rolling rim's own (the arc being longer than its chord), which a wheel at rest
     // does not have.
@@ -83,20 +87,22 @@ WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& 
   return f;
 }
 
-SteadyWheel steady_wheel(const SoilParameters& soil, const WheelShape& wheel, double load, double slip) {
+SteadyWheel steady_wheel(const SoilParameters& soil, const WheelShape& wheel, double load, double slip,
+                         double rut_depth) {
   SteadyWheel out;
+  const auto at = [&](double z) { return wheel_soil_forces(soil, wheel, z, slip, 0.0, 1.0, rut_depth); };
   double lo = 0.0, hi = wheel.radius;
-  if (wheel_soil_forces(soil, wheel, hi, slip).normal < load) {
+  if (at(hi).normal < load) {
     out.sinkage = hi;
-    out.forces = wheel_soil_forces(soil, wheel, hi, slip);
+    out.forces = at(hi);
     return out;
   }
   for (int i = 0; i < 80; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (wheel_soil_forces(soil, wheel, mid, slip).normal < load ? lo : hi) = mid;
+    (at(mid).normal < load ? lo : hi) = mid;
   }
   out.sinkage = 0.5 * (lo + hi);
-  out.forces = wheel_soil_forces(soil, wheel, out.sinkage, slip);
+  out.forces = at(out.sinkage);
   out.ok = true;
   return out;
 }

@@ -48,8 +48,19 @@ struct WheelSoilForces {
 // `rolling` in [0, 1] scales the rim's own share of j_x, r (1 - slip) [(theta_1 - theta) - (sin
 // theta_1 - sin theta)]: 1 for a rolling wheel (Wong and Reece), 0 for one at rest, whose shear
 // is its slip's alone.
+//
+// Multi-pass: `rut_depth` (m) is how deep an earlier wheel compacted the soil along this one's
+// path (its sinkage there, below the same surface). Soil loaded before gives under a new load only
+// once the load exceeds the earlier one (Wong's repetitive loading, with the unloading-reloading
+// line taken as rigid), so the rut's floor is the surface the rim meets, and a point of the rim
+// sunk d below the floor meets the virgin curve's stress at its depth below the old surface,
+// (k_c / b + k_phi) (rut_depth + d)^n: the stress starts at the earlier pass's pressure instead of
+// zero. Angles, the stress's shape and the shear count from the rut's floor. A wheel in a rut as
+// deep as its own sinkage sinks a little further and meets less compaction resistance: why a
+// rover's middle and rear wheels roll more easily than its front ones. `sinkage` stays the depth
+// below the old surface; the rim above the rut's floor meets nothing.
 WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& wheel, double sinkage, double slip,
-                                  double lateral_shear = 0.0, double rolling = 1.0);
+                                  double lateral_shear = 0.0, double rolling = 1.0, double rut_depth = 0.0);
 
 // A wheel carrying `load` (N) at steady slip `slip`, as a single-wheel test rig measures it:
 // the sinkage where the soil's normal force equals the load (bisection), and the forces there.
@@ -58,6 +69,7 @@ struct SteadyWheel {
   WheelSoilForces forces;
   bool ok = false;       // false when the soil cannot carry the load before the wheel sinks its radius
 };
-SteadyWheel steady_wheel(const SoilParameters& soil, const WheelShape& wheel, double load, double slip);
+SteadyWheel steady_wheel(const SoilParameters& soil, const WheelShape& wheel, double load, double slip,
+                         double rut_depth = 0.0);
 
 }  // namespace mechsim::physics

@@ -104,6 +104,17 @@ double relax(double j, double v_slip, double u, double length, double dt) {
   return steady + (j - steady) * std::exp(-u * dt / length);
 }
 
+// Calls at(x, y) at points across the wheel's width on its axle line through its lowest point
+// `low`, one per rut cell the width spans.
+template <typename At>
+void for_each_rut_cell(const double low[3], const double axle[3], double width, At&& at) {
+  const int count = std::max(1, static_cast<int>(std::ceil(width / detail::kRutCell)));
+  for (int k = 0; k < count; ++k) {
+    const double u = width * ((k + 0.5) / count - 0.5);
+    at(low[0] + u * axle[0], low[1] + u * axle[1]);
+  }
+}
+
 // The world geom the soil lies on: the height field or the ground plane (group 2), or -1.
 int find_ground(const mjModel* m) {
   for (int g = 0; g < m->ngeom; ++g)
@@ -131,6 +142,8 @@ void Physics::set_soil(std::optional<SoilParameters> soil) {
   data.soil_pending.assign(n, {});
   data.soil_readings.assign(n, {});
   data.soil_pending_readings.assign(n, {});
+  data.soil_press.assign(n, {});
+  data.ruts.clear();
   data.stale = true;
 }
 
@@ -163,6 +176,15 @@ void Physics::commit_soil() {
   if (!data_->soil) return;
   data_->soil_state = data_->soil_pending;
   data_->soil_readings = data_->soil_pending_readings;
+  if (!data_->soil->multi_pass) return;
+  const std::vector<WheelInfo>& wheels = model_->wheels();
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const Data::Press& p = data_->soil_press[i];
+    if (!(p.sinkage > 0.0)) continue;
+    for_each_rut_cell(p.low, p.axle, wheels[i].width, [&](double x, double y) {
+      data_->ruts.press(static_cast<int>(i), x, y, p.sinkage);
+    });
+  }
 }
 
 void Physics::apply_soil() {
@@ -184,6 +206,7 @@ void Physics::apply_soil() {
     WheelSoilReading& reading = data.soil_pending_readings[i];
     after = before;
     reading = {};
+    data.soil_press[i].sinkage = 0.0;
     const double r = w.radius;
     const mjtNum* c = d->geom_xpos + 3 * w.geom;
     const mjtNum* R = d->geom_xmat + 9 * w.geom;
@@ -206,6 +229,22 @@ void Physics::apply_soil() {
       after = {};
       continue;
     }
+    // Multi-pass: the ruts other wheels left across this one's width, on average.
+    double rut = 0.0;
+    if (soil.multi_pass) {
+      int cells = 0;
+      for_each_rut_cell(low, a, w.width, [&](double x, double y) {
+        rut += data.ruts.depth(static_cast<int>(i), x, y);
+        ++cells;
+      });
+      rut /= cells;
+      Data::Press& press = data.soil_press[i];
+      for (int k = 0; k < 3; ++k) {
+        press.low[k] = low[k];
+        press.axle[k] = a[k];
+      }
+      press.sinkage = sinkage;
+    }
     // Contact frame: heading x = axle x n, axle y = n x x.
     double x[3], y[3];
     cross(a, n, x);
@@ -219,7 +258,8 @@ void Physics::apply_soil() {
 
     // Shear displacements over the step, and the forces in the frame of the motion.
     const SoilParameters& s = soil;
-    const double theta1 = std::acos(std::max(-1.0, 1.0 - std::min(sinkage, r) / r));
+    // The arc in the soil (in a rut: below its floor, terramechanics.hpp).
+    const double theta1 = std::acos(std::clamp(1.0 - (std::min(sinkage, r) - rut) / r, -1.0, 1.0));
     const double length = std::max(kMinContactLength, r * theta1 * (1.0 + s.exit_ratio));
     after.shear_x = std::clamp(relax(before.shear_x, rw - v, u, length, dt), -length, length);
     after.shear_y = std::clamp(relax(before.shear_y, v_side, u, length, dt), -length, length);
@@ -231,7 +271,7 @@ void Physics::apply_soil() {
     after.pushing = toward(before.pushing, v, kPushLength, dt);
     const double dir = after.rolling >= 0.0 ? 1.0 : -1.0;
     const WheelSoilForces f = wheel_soil_forces(s, {r, w.width}, sinkage, dir * after.shear_x / length, dir * after.shear_y,
-                                                std::abs(after.rolling));
+                                                std::abs(after.rolling), rut);
     // The shear's thrust in the rolling's frame; the compaction resistance against the travel.
     double fx = dir * (f.drawbar + f.resistance) - after.pushing * f.resistance;
     double fy = dir * f.lateral;
@@ -245,7 +285,8 @@ void Physics::apply_soil() {
     const double rim_mass = (m->dof_M0[dof] + m->dof_armature[dof]) / (r * r);
     const double cap_normal = kDampingCap * m->body_mass[w.body] / dt;
     const double cap_shear = kDampingCap * std::min(m->body_mass[w.body], rim_mass) / dt;
-    const double k_normal = (s.n + 0.5) * fn / std::max(sinkage, 1e-4);
+    // d(load)/d(sinkage): the stress grows as z^n and the arc as (z - rut)^(1/2).
+    const double k_normal = fn * (s.n / std::max(sinkage, 1e-4) + 0.5 / std::max(sinkage - rut, 1e-4));
     fn = std::max(0.0, fn - std::min(cap_normal, 2.0 * std::sqrt(k_normal * load_mass)) * v_normal);
     const double capacity = s.cohesion * w.width * length + fn * tan_phi;
     const double c_shear = std::min(cap_shear, 2.0 * std::sqrt(capacity / s.shear_modulus * load_mass));
@@ -276,6 +317,7 @@ void Physics::apply_soil() {
     reading.traction = dir * fx;
     reading.lateral_force = dir * fy;
     reading.torque = f.torque;
+    reading.rut_depth = rut;
   }
 }
 

@@ -112,10 +112,22 @@ struct GazeboWorld::Entity {
   enum class Kind { World, WorldModel, Robot, RobotLink };
   Kind kind = Kind::World;
   std::string link;  // RobotLink: the URDF link
-  // The entity's state in the world frame (the robot's through its loop thread).
+  std::size_t model = 0;  // WorldModel: index into world_models_
+  // The entity's state in the world frame (the robot's, and the world's moving models while a
+  // robot's physics holds them, through the robot's loop thread).
   bool state(const GazeboWorld& w, EntityState& out, std::string* status) const {
     out = EntityState{};
-    if (kind == Kind::World || kind == Kind::WorldModel) return true;
+    if (kind == Kind::World) return true;
+    if (kind == Kind::WorldModel) {
+      // Moving models move only in a robot's physics; without one they are where the SDF put them.
+      if (!w.robot_ || model >= w.sdf_model_count_) {
+        out.pose = w.world_model_poses_[model];
+        return true;
+      }
+      const BridgeResult r = w.robot_->bridge().world_model_state(model, out);
+      if (!r.ok) *status = r.error;
+      return r.ok;
+    }
     const BridgeResult r = w.robot_->bridge().link_state(kind == Kind::Robot ? std::string() : link, out);
     if (!r.ok) *status = r.error;
     return r.ok;
@@ -125,9 +137,11 @@ struct GazeboWorld::Entity {
 bool GazeboWorld::resolve(const std::string& name, Entity& out, std::string* status) const {
   out = Entity{};
   if (name.empty() || name == "world" || name == "map") return true;
-  for (const std::string& m : world_models_) {
+  for (std::size_t i = 0; i < world_models_.size(); ++i) {
+    const std::string& m = world_models_[i];
     if (name == m || name.rfind(m + "::", 0) == 0) {
       out.kind = Entity::Kind::WorldModel;
+      out.model = i;
       return true;
     }
   }

@@ -59,9 +59,12 @@ void GazeboWorld::publish_states(double time) {
     m.name.resize(n);
     m.pose.resize(n);
     m.twist.resize(n);
+    bridge.world_model_states_now(t.world_models);
     for (std::size_t i = 0; i < world_models_.size(); ++i) {
       m.name[i] = world_models_[i];
-      fill(EntityState{}, m.pose[i], m.twist[i]);
+      // An SDF world's models where the physics has them; the ground plane of mechsim's own
+      // worlds at the origin.
+      fill(i < t.world_models.size() ? t.world_models[i] : EntityState{}, m.pose[i], m.twist[i]);
     }
     m.name[n - 1] = robot_name_;
     const std::string& root = bridge.robot().root_link;

@@ -19,6 +19,7 @@ struct GazeboWorld::Topics {
   double next_states = 0.0;  // s, sim time (loop thread)
   // The robot's loop thread fills these (reused: no allocation once sized).
   std::vector<EntityState> links;
+  std::vector<EntityState> world_models;  // the SDF world's models (SimBridge::world_model_states_now)
   gazebo_msgs::ModelStates model_msg;
   gazebo_msgs::LinkStates link_msg;
   ::ros::WallTimer performance_timer;

@@ -55,7 +55,12 @@ GazeboWorld::GazeboWorld(::ros::NodeHandle private_nh, GazeboWorldOptions option
   has_ground_ = world.has_ground;
   gravity_ = world.gravity;
   world_models_ = world.sdf_models;
-  if (!description::is_sdf_world_file(world_name_) && has_ground_) world_models_.push_back("ground_plane");
+  world_model_poses_ = world.sdf_model_poses;
+  sdf_model_count_ = world_models_.size();
+  if (!description::is_sdf_world_file(world_name_) && has_ground_) {
+    world_models_.push_back("ground_plane");
+    world_model_poses_.emplace_back();
+  }
   for (const std::string& n : world.not_simulated) ROS_WARN_STREAM("mechsim: " << world_name_ << ": not simulated: " << n);
   if (world.real_time_factor > 0.0 && options_.real_time_factor == 1.0) options_.real_time_factor = world.real_time_factor;
   if (world.max_step_size > 0.0 && std::abs(world.max_step_size - options_.period) > 1e-12) {

@@ -84,7 +84,11 @@ class GazeboWorld {
   ::ros::NodeHandle private_nh_, root_nh_;
   GazeboWorldOptions options_;
   std::string world_name_;
-  std::vector<std::string> world_models_;  // the world's own (static) models, by name
+  // The world's own models, by name: an SDF world's (world_model_poses_: where the SDF puts them;
+  // a robot's physics has the moving ones), or the ground plane of mechsim's worlds.
+  std::vector<std::string> world_models_;
+  std::vector<description::Pose> world_model_poses_;
+  std::size_t sdf_model_count_ = 0;  // the first ones are the SDF world's (the robot's physics has them)
   bool has_ground_ = true;
   description::Vec3 gravity_{0.0, 0.0, -9.81};  // m/s^2, for robots spawned later
 

@@ -389,11 +389,12 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
     j["odometry_yaw_error_rad"] = result.odometry_yaw_error;
   }
   if (sim.world().soil) {
-    j["soil"] = {{"name", sim.world().soil->name}, {"source", sim.world().soil->source}};
+    j["soil"] = {{"name", sim.world().soil->name}, {"source", sim.world().soil->source}, {"multi_pass", sim.world().soil->multi_pass}};
     j["wheels"] = nlohmann::ordered_json::array();
     for (const WheelOutcome& w : result.wheels) {
       j["wheels"].push_back({{"link", w.link}, {"mean_slip", w.mean_slip}, {"mean_traction_N", w.mean_traction},
-                             {"max_sinkage_m", w.max_sinkage}, {"time_in_soil_s", w.time_in_soil}});
+                             {"max_sinkage_m", w.max_sinkage}, {"mean_sinkage_m", w.mean_sinkage},
+                             {"mean_rut_depth_m", w.mean_rut_depth}, {"time_in_soil_s", w.time_in_soil}});
     }
   }
   j["tracking"] = nlohmann::ordered_json::array();

@@ -24,7 +24,7 @@
 //   sensors/<name>.png  per IMU: angular velocity, acceleration and orientation over time
 //   laser_scans.png  the laser scans seen from above over the world at laser_picture_times
 //   wheels.csv, wheels.png  with a soil (world.soil): per wheel slip, slip angle, sinkage, load,
-//                    traction, lateral force, torque (sim/wheel_report.hpp)
+//                    traction, lateral force, torque, rut depth met (sim/wheel_report.hpp)
 
 #include <atomic>
 #include <functional>
@@ -125,6 +125,8 @@ struct WheelOutcome {
   double mean_slip = 0.0;      // physics::WheelSoilReading::slip
   double mean_traction = 0.0;  // N
   double max_sinkage = 0.0;    // m
+  double mean_sinkage = 0.0;   // m
+  double mean_rut_depth = 0.0;  // m: the ruts of other wheels it ran in (soil multi_pass), 0 without
   double time_in_soil = 0.0;   // s
 };
 

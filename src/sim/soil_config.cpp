@@ -30,7 +30,7 @@ physics::SoilParameters named(const control::Params& node, const std::string& na
 physics::SoilParameters read_soil(const control::Params& node) {
   if (!node.is_map()) return named(node, node.as<std::string>());
   static const char* const kKeys[] = {"base",       "n",  "k_c", "k_phi",      "cohesion",     "friction_angle_deg",
-                                      "shear_modulus", "c1", "c2", "exit_ratio", "bedrock_depth"};
+                                      "shear_modulus", "c1", "c2", "exit_ratio", "bedrock_depth", "multi_pass"};
   for (const std::string& k : node.keys()) {
     bool known = false;
     for (const char* key : kKeys) known = known || k == key;
@@ -62,6 +62,8 @@ physics::SoilParameters read_soil(const control::Params& node) {
   set("c2", soil.c2);
   set("exit_ratio", soil.exit_ratio);
   set("bedrock_depth", soil.bedrock_depth);
+  // The model's switch, not a property of the soil: the set keeps its name.
+  if (node.has("multi_pass")) soil.multi_pass = node.get<bool>("multi_pass");
   if (!modified && !base.empty()) soil.name = base;
   if (modified) soil.source = "user values" + (base.empty() ? std::string() : " on " + soil.source);
   if (const std::string problem = physics::check_soil(soil); !problem.empty()) fail(node, problem);

@@ -15,6 +15,8 @@
 //     c2: 0.32
 //     exit_ratio: 0.0                    # theta_2 = -exit_ratio theta_1
 //     bedrock_depth: 0.06                # m below the surface: the wheels' rigid contact
+//     multi_pass: false                  # true: wheels run in the ruts others left
+//                                        # (terramechanics.hpp, rut_depth)
 
 #include "control/params.hpp"
 #include "physics/soil.hpp"

@@ -32,7 +32,7 @@ WheelReport::WheelReport(const Simulation& sim, const Scenario& scenario, const 
   csv_ << "time";
   for (const std::string& l : links_)
     csv_ << "," << l << "_slip," << l << "_slip_angle_deg," << l << "_sinkage_mm," << l << "_normal_N," << l << "_traction_N,"
-         << l << "_lateral_N," << l << "_torque_Nm";
+         << l << "_lateral_N," << l << "_torque_Nm," << l << "_rut_mm";
   csv_ << "\n";
 }
 
@@ -54,6 +54,8 @@ void WheelReport::observe(const Simulation& sim) {
     figures_[i].slip_sum += wheels[i].slip;
     figures_[i].traction_sum += wheels[i].traction;
     figures_[i].max_sinkage = std::max(figures_[i].max_sinkage, wheels[i].sinkage);
+    figures_[i].sinkage_sum += wheels[i].sinkage;
+    figures_[i].rut_sum += wheels[i].rut_depth;
     ++figures_[i].samples;
   }
   if (!csv_.is_open() || sim.ticks() % record_every_ != 0) return;
@@ -61,8 +63,8 @@ void WheelReport::observe(const Simulation& sim) {
   std::snprintf(row, sizeof row, "%.4f", t);
   csv_ << row;
   for (const physics::WheelSoilReading& w : wheels) {
-    std::snprintf(row, sizeof row, ",%.5f,%.4f,%.4f,%.4f,%.4f,%.4f,%.5f", w.slip, w.slip_angle * 180.0 / M_PI, 1000.0 * w.sinkage,
-                  w.normal_force, w.traction, w.lateral_force, w.torque);
+    std::snprintf(row, sizeof row, ",%.5f,%.4f,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f", w.slip, w.slip_angle * 180.0 / M_PI,
+                  1000.0 * w.sinkage, w.normal_force, w.traction, w.lateral_force, w.torque, 1000.0 * w.rut_depth);
     csv_ << row;
   }
   csv_ << "\n";
@@ -99,6 +101,8 @@ void WheelReport::write(ScenarioResult& result, bool plots) {
     w.mean_slip = figures_[i].slip_sum / n;
     w.mean_traction = figures_[i].traction_sum / n;
     w.max_sinkage = figures_[i].max_sinkage;
+    w.mean_sinkage = figures_[i].sinkage_sum / n;
+    w.mean_rut_depth = figures_[i].rut_sum / n;
     w.time_in_soil = static_cast<double>(figures_[i].samples) * scenario_.period;
     result.wheels.push_back(w);
   }
@@ -115,7 +119,7 @@ void WheelReport::write(ScenarioResult& result, bool plots) {
   const auto panel = [&](const char* label, int column) {
     gp << "set ylabel " << quoted(label) << "\nplot ";
     for (std::size_t i = 0; i < links_.size(); ++i) {
-      gp << (i ? ", " : "") << csv << " using 1:" << 2 + 7 * static_cast<int>(i) + column << " with lines title "
+      gp << (i ? ", " : "") << csv << " using 1:" << 2 + 8 * static_cast<int>(i) + column << " with lines title "
          << quoted(links_[i]) << " noenhanced";
     }
     gp << "\n";

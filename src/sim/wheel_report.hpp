@@ -35,7 +35,7 @@ class WheelReport {
     long samples = 0;
   };
   struct Figures {  // per wheel, over the run while in the soil
-    double slip_sum = 0.0, traction_sum = 0.0, max_sinkage = 0.0;
+    double slip_sum = 0.0, traction_sum = 0.0, max_sinkage = 0.0, sinkage_sum = 0.0, rut_sum = 0.0;
     long samples = 0;
   };
   const Scenario& scenario_;

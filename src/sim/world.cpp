@@ -73,6 +73,7 @@ World make_sdf_world(const std::string& path) {
   for (const std::string& n : sdf.not_simulated) world.not_simulated.push_back(n);
   for (const description::SdfModel& model : sdf.models) {
     bool used = false;
+    World::ModelFrame frame{model.name, model.pose, "", {}};  // static until a moving part is found
     for (const description::SdfPlane& plane : model.planes) {
       const description::Pose X_WP = physics::compose(model.pose, plane.pose);
       const description::Vec3 n = physics::rotate(X_WP.orientation, {0.0, 0.0, 1.0});
@@ -120,7 +121,14 @@ World make_sdf_world(const std::string& path) {
           world.spec.boxes.push_back(box);
         }
       }
-      if (world.spec.boxes.size() > before) used = true;
+      if (world.spec.boxes.size() > before) {
+        used = true;
+        if (!model.is_static) {
+          // The free object's body sits at its one shape: model -> root link -> collision.
+          frame.body = "box:" + world.spec.boxes.back().name;
+          frame.X_BM = physics::inverse(physics::compose(model.root_offset, root.collisions.front().origin));
+        }
+      }
     } else if (has_links) {
       // A moving model of several links or shapes: a passive articulated object (its joints
       // free, nothing driving them; a model's plugins are not run).
@@ -129,9 +137,17 @@ World make_sdf_world(const std::string& path) {
       passive.robot = std::make_shared<const description::RobotModel>(model.robot);
       passive.pose = physics::compose(model.pose, model.root_offset);
       world.spec.models.push_back(std::move(passive));
+      // A model jointed to the world stays where it is (its links move on their joints).
+      if (model.robot.root_link != "world") {
+        frame.body = model.name + "::" + model.robot.root_link;
+        frame.X_BM = physics::inverse(model.root_offset);
+      }
       used = true;
     }
-    if (used) world.sdf_models.push_back(model.name);
+    if (used) {
+      world.sdf_models.push_back(model.name);
+      world.sdf_model_frames.push_back(std::move(frame));
+    }
   }
   return world;
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "description/pose.hpp"
 #include "physics/heightmap_io.hpp"
 #include "physics/mars_yard.hpp"
 #include "physics/physics_options.hpp"
@@ -46,6 +47,16 @@ struct World {
   // A Gazebo SDF world file (.world, .sdf): the models it simulates (as Gazebo names them: the
   // ground plane, static boxes) and what it leaves out, one line each ("model 'cup1_model': ...").
   std::vector<std::string> sdf_models;
+  // Where each of sdf_models is (same order): its pose in the SDF, and for a moving one the
+  // physics body that carries it (PhysicsModel::body_index) with the model frame in that body's
+  // frame, so that the model's pose now is X_WB X_BM. Static models (and the ground): no body.
+  struct ModelFrame {
+    std::string name;
+    description::Pose pose;  // X_WM in the SDF
+    std::string body;        // "" for a static model
+    description::Pose X_BM;
+  };
+  std::vector<ModelFrame> sdf_model_frames;
   std::vector<std::string> not_simulated;
   // <physics> of an SDF world: s per step and the real-time factor it asks for (absent: unset).
   std::optional<double> max_step_size, real_time_factor;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "physics/physics.hpp"
 #include "physics/terramechanics.hpp"
@@ -120,6 +121,110 @@ TEST(WheelSoil, AHeldWheelHoldsAPullWithoutCreeping) {
   EXPECT_GT(at_1s, 0.0);
   EXPECT_LT(at_1s, 0.01);
   EXPECT_LT(std::abs(end - at_1s), 0.001);
+}
+
+// Two single-wheel rigs in tandem on one track: the rear one starts 0.6 m behind the front one,
+// both towed at the same speed, 10 kg on each wheel, so after 2.5 s the rear wheel runs in the
+// front wheel's rut. Wheels "a" (front) and "b" (rear).
+std::string tandem_urdf() {
+  std::string out = "<robot name=\"tandem\"><link name=\"world\"/>";
+  for (const auto& [w, x] : {std::pair<std::string, std::string>{"a", "0"}, {"b", "-0.6"}}) {
+    std::string rig = R"(
+  <link name="sled_W"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="carriage_W"><inertial><mass value="9"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="wheel_W"><inertial><mass value="1"/><inertia ixx="0.03" iyy="0.05" izz="0.03" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin rpy="1.5707963267948966 0 0"/><geometry><cylinder radius="0.09" length="0.12"/></geometry></collision></link>
+  <joint name="tow_W" type="prismatic"><parent link="world"/><child link="sled_W"/><origin xyz="X 0 0"/><axis xyz="1 0 0"/>
+    <limit lower="-100" upper="100" effort="2000" velocity="10"/></joint>
+  <joint name="lift_W" type="prismatic"><parent link="sled_W"/><child link="carriage_W"/><origin xyz="0 0 0.09"/><axis xyz="0 0 1"/>
+    <limit lower="-0.2" upper="0.2" effort="0" velocity="10"/></joint>
+  <joint name="spin_W" type="continuous"><parent link="carriage_W"/><child link="wheel_W"/><axis xyz="0 1 0"/>
+    <limit effort="200" velocity="100"/></joint>)";
+    for (std::size_t at = rig.find("_W"); at != std::string::npos; at = rig.find("_W", at)) rig.replace(at + 1, 1, w);
+    rig.replace(rig.find("xyz=\"X"), 6, "xyz=\"" + x);
+    out += rig;
+  }
+  return out + "</robot>";
+}
+
+struct TandemRun {
+  RigRun front, rear;
+  double rear_rut = 0.0;  // m, the rut depth the rear wheel met (its reading)
+};
+
+// Both rigs at slip 0.2 (r w = 0.3 m/s), 6 s; averages over the last 1.5 s.
+TandemRun run_tandem(const SoilParameters& soil) {
+  const auto model = test::build(tandem_urdf());
+  Physics physics(model);
+  physics.set_soil(soil);
+  EXPECT_EQ(model->wheels().size(), 2u);
+  const double w = 0.3 / 0.09, slip = 0.2;
+  TandemRun out;
+  int samples = 0;
+  for (int k = 0; k < 6000; ++k) {
+    const double ramp = std::min(1.0, k / 500.0);
+    for (const char* name : {"a", "b"}) {
+      const std::size_t tow = *model->joint_index(std::string("tow_") + name), spin = *model->joint_index(std::string("spin_") + name);
+      if (k == 0) {
+        physics.set_mode(spin, JointMode::Velocity, {0.0, 40.0});
+        physics.set_mode(tow, JointMode::Velocity, {0.0, 4000.0});
+      }
+      physics.set_velocity_command(spin, ramp * w);
+      physics.set_velocity_command(tow, ramp * (1.0 - slip) * 0.09 * w);
+    }
+    EXPECT_TRUE(physics.step().ok());
+    if (k < 4500) continue;
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::string name = model->wheels()[i].link == "wheel_a" ? "a" : "b";
+      RigRun& run = name == "a" ? out.front : out.rear;
+      const WheelSoilReading& r = physics.wheel_soil().at(i);
+      run.slip += r.slip;
+      run.sinkage += r.sinkage;
+      run.load += r.normal_force;
+      run.drawbar += -physics.actuator_effort(*model->joint_index("tow_" + name));
+      if (name == "b") out.rear_rut += r.rut_depth;
+    }
+    ++samples;
+  }
+  for (RigRun* run : {&out.front, &out.rear}) {
+    run->slip /= samples;
+    run->sinkage /= samples;
+    run->load /= samples;
+    run->drawbar /= samples;
+  }
+  out.rear_rut /= samples;
+  return out;
+}
+
+// Multi-pass on the rig (SoilParameters::multi_pass): the rear wheel meets the front wheel's rut
+// (the front's sinkage), sinks further in all, and its sinkage and drawbar pull are within 15 % of
+// the steady model for its load, slip and rut (terramechanics.hpp); with multi_pass off (the
+// default) both wheels meet virgin soil and run alike.
+TEST(WheelSoil, ARearWheelRunsInTheFrontWheelsRutAsTheSteadyModelHasIt) {
+  for (const char* name : {"dry_sand", "lete_sand"}) {
+    SoilParameters soil = *find_soil(name);
+    EXPECT_FALSE(soil.multi_pass) << "opt-in";
+    soil.multi_pass = true;
+    const TandemRun run = run_tandem(soil);
+    const SteadyWheel front = steady_wheel(soil, {0.09, 0.12}, run.front.load, run.front.slip);
+    const SteadyWheel rear = steady_wheel(soil, {0.09, 0.12}, run.rear.load, run.rear.slip, run.rear_rut);
+    std::printf("[ figures  ] %s tandem, slip %.3f/%.3f: front sinkage %.2f mm (model %.2f), drawbar %.2f N (model %.2f); "
+                "rear in a %.2f mm rut: sinkage %.2f mm (model %.2f), drawbar %.2f N (model %.2f)\n",
+                name, run.front.slip, run.rear.slip, 1000 * run.front.sinkage, 1000 * front.sinkage, run.front.drawbar,
+                front.forces.drawbar, 1000 * run.rear_rut, 1000 * run.rear.sinkage, 1000 * rear.sinkage, run.rear.drawbar,
+                rear.forces.drawbar);
+    EXPECT_NEAR(run.rear_rut, run.front.sinkage, 0.1 * run.front.sinkage) << name << ": the rut is the front wheel's sinkage";
+    EXPECT_GT(run.rear.sinkage, run.front.sinkage) << name;
+    EXPECT_LT(run.rear.sinkage, 1.4 * run.front.sinkage) << name;
+    EXPECT_NEAR(run.rear.sinkage, rear.sinkage, 0.15 * rear.sinkage) << name;
+    EXPECT_NEAR(run.rear.drawbar, rear.forces.drawbar, 0.15 * std::abs(rear.forces.drawbar) + 0.01 * run.rear.load) << name;
+    EXPECT_NEAR(run.front.sinkage, front.sinkage, 0.15 * front.sinkage) << name;
+
+    const TandemRun off = run_tandem(*find_soil(name));
+    EXPECT_EQ(off.rear_rut, 0.0);
+    EXPECT_NEAR(off.rear.sinkage, off.front.sinkage, 0.03 * off.front.sinkage) << name;
+    EXPECT_NEAR(off.rear.drawbar, off.front.drawbar, 0.03 * std::abs(off.front.drawbar) + 0.005 * off.front.load) << name;
+  }
 }
 
 TEST(WheelSoil, TheModelsWheelsAreItsTurningCylindersAndBadSoilIsRefused) {

@@ -24,6 +24,8 @@ struct SimBridge::Impl {
   std::shared_ptr<MechanismStatistics> statistics;  // PR2 controller manager outputs; null: off
   std::vector<std::string> link_names;  // description links the physics has (model_api.cpp)
   std::vector<std::size_t> link_index;  // their physics links
+  // Per World::sdf_model_frames: the physics body carrying the model, -1 for a static one.
+  std::vector<int> world_model_body;
   // After `simulation`: its observer refers to the stream, which goes first (after the ticks).
   std::unique_ptr<live::LiveStream> live;
 };

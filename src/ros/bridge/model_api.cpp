@@ -3,6 +3,7 @@
 #include <memory>
 #include <mutex>
 
+#include "physics/transform.hpp"
 #include "ros/bridge/bridge_impl.hpp"
 
 namespace mechsim::ros {
@@ -89,6 +90,46 @@ void SimBridge::link_states_now(std::vector<EntityState>& out) const {
     out[i].linear = v.linear;
     out[i].angular = v.angular;
   }
+}
+
+namespace {
+
+EntityState world_model_state_of(const sim::Simulation& s, const std::vector<int>& bodies, std::size_t i) {
+  const sim::World::ModelFrame& f = s.world().sdf_model_frames[i];
+  EntityState out;
+  const int body = bodies[i];
+  if (body < 0) {
+    out.pose = f.pose;
+    return out;
+  }
+  const physics::Physics& p = s.physics();
+  const description::Pose X_WB = p.body_pose(body);
+  out.pose = physics::compose(X_WB, f.X_BM);
+  const physics::Twist v = p.body_twist(body);
+  // The model frame's origin moves with the body: v_M = v_B + w x (p_M - p_B).
+  const description::Vec3 r{out.pose.position.x - X_WB.position.x, out.pose.position.y - X_WB.position.y,
+                             out.pose.position.z - X_WB.position.z};
+  const description::Vec3& w = v.angular;
+  out.linear = {v.linear.x + w.y * r.z - w.z * r.y, v.linear.y + w.z * r.x - w.x * r.z, v.linear.z + w.x * r.y - w.y * r.x};
+  out.angular = w;
+  return out;
+}
+
+}  // namespace
+
+void SimBridge::world_model_states_now(std::vector<EntityState>& out) const {
+  const sim::Simulation& s = *impl_->simulation;
+  out.resize(impl_->world_model_body.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = world_model_state_of(s, impl_->world_model_body, i);
+}
+
+BridgeResult SimBridge::world_model_state(std::size_t index, EntityState& out) const {
+  return read_in_loop<EntityState>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out,
+                                   [this, index](sim::Simulation& s, EntityState& o) -> BridgeResult {
+                                     if (index >= impl_->world_model_body.size()) return refuse("no such world model");
+                                     o = world_model_state_of(s, impl_->world_model_body, index);
+                                     return {};
+                                   });
 }
 
 std::vector<std::string> SimBridge::stop_all_controllers_now() {

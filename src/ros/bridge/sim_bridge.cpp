@@ -88,6 +88,8 @@ SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::
       m.link_index.push_back(*index);
     }
   }
+  for (const sim::World::ModelFrame& f : m.simulation->world().sdf_model_frames)
+    m.world_model_body.push_back(f.body.empty() ? -1 : m.simulation->physics().model().body_index(f.body));
 }
 
 SimBridge::~SimBridge() = default;
@@ -100,6 +102,7 @@ WorldSummary describe_world(const std::string& name) {
   out.has_ground = world.spec.ground_plane || world.spec.terrain.has_value();
   out.gravity = {0.0, 0.0, -world.spec.gravity};
   out.sdf_models = world.sdf_models;
+  for (const sim::World::ModelFrame& f : world.sdf_model_frames) out.sdf_model_poses.push_back(f.pose);
   out.not_simulated = world.not_simulated;
   out.max_step_size = world.max_step_size.value_or(0.0);
   out.real_time_factor = world.real_time_factor.value_or(0.0);

@@ -71,6 +71,7 @@ struct WorldSummary {
   bool has_ground = true;
   description::Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
   std::vector<std::string> sdf_models;         // an SDF world's models that are simulated
+  std::vector<description::Pose> sdf_model_poses;  // each one's pose in the SDF (X_WM)
   std::vector<std::string> not_simulated;      // one line each
   double max_step_size = 0.0;                  // s; 0: unset
   double real_time_factor = 0.0;               // 0: unset
@@ -292,6 +293,10 @@ class SimBridge {
   // the physics has, in link_names() order, world frame.
   const std::vector<std::string>& link_names() const;
   void link_states_now(std::vector<EntityState>& out) const;
+  // The world's SDF models now (WorldSummary::sdf_models order): a moving one where the physics
+  // has it, a static one where the SDF put it. Loop thread only (an observer), like
+  // link_states_now.
+  void world_model_states_now(std::vector<EntityState>& out) const;
   // Only once the loop thread has stopped (a model being deleted): stops every running
   // controller at once (their stopping() runs) and returns the names of all loaded ones.
   std::vector<std::string> stop_all_controllers_now();
@@ -301,6 +306,8 @@ class SimBridge {
   // joints by their URDF names. Refusals (unknown link, non-finite value, a fixed robot's pose)
   // answer ok = false with why, and change nothing.
   BridgeResult link_state(const std::string& link, EntityState& out) const;
+  // The world's SDF model `index` (WorldSummary::sdf_models order), as world_model_states_now.
+  BridgeResult world_model_state(std::size_t index, EntityState& out) const;
   // The root link's pose and twist (the model's state); a robot fixed to the world is refused.
   BridgeResult set_root_state(const EntityState& state);
   // Positions (rad or m), velocities set to zero (gazebo's set_model_configuration).

@@ -99,6 +99,17 @@ TEST_F(ScenarioFile, ReadsMeshObjects) {
   EXPECT_DOUBLE_EQ(w.mass, 4.0);
 }
 
+// Multi-pass is the soil model's switch: the named set keeps its name, and it is off by default.
+TEST_F(ScenarioFile, ReadsTheSoilsMultiPassSwitch) {
+  const Scenario on = load_scenario(write("duration: 1\nworld: {name: slope, soil: {base: dry_sand, multi_pass: true}}\n"));
+  ASSERT_TRUE(on.world.soil);
+  EXPECT_TRUE(on.world.soil->multi_pass);
+  EXPECT_EQ(on.world.soil->name, "dry_sand");
+  const Scenario off = load_scenario(write("duration: 1\nworld: {name: slope, soil: dry_sand}\n"));
+  ASSERT_TRUE(off.world.soil);
+  EXPECT_FALSE(off.world.soil->multi_pass);
+}
+
 TEST_F(ScenarioFile, ReadsTheIntegrator) {
   EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: euler\n")).integrator, physics::Integrator::Euler);
   EXPECT_EQ(load_scenario(write("duration: 1\nintegrator: rk4\n")).integrator, physics::Integrator::Rk4);
@@ -209,6 +220,8 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(BadCase{"missing_duration", "name: x\n", "/duration"},
                     BadCase{"negative_duration", "duration: -1\n", "/duration"},
                     BadCase{"bad_period", "duration: 1\nperiod: 0\n", "/period"},
+                    BadCase{"bad_multi_pass", "duration: 1\nworld: {name: slope, soil: {base: dry_sand, multi_pass: often}}\n",
+                            "multi_pass"},
                     BadCase{"bad_integrator", "duration: 1\nintegrator: verlet\n", "/integrator: expected 'implicit', 'euler' or 'rk4', got 'verlet'"},
                     BadCase{"two_commands", "duration: 1\ntimeline:\n  - {at: 0, controller: c, command: 1, twist: {vx: 1}}\n",
                             "exactly one of"},

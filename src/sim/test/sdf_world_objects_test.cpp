@@ -19,6 +19,7 @@
 
 #include "description/urdf/urdf_parser.hpp"
 #include "physics/physics.hpp"
+#include "physics/transform.hpp"
 #include "sim/world.hpp"
 
 namespace mechsim::sim {
@@ -299,6 +300,63 @@ TEST_F(SdfWorldFile, AnArticulatedModelMovesOnItsJoints) {
   }
   EXPECT_NEAR(top_a, 0.2, 3e-3);
   EXPECT_NEAR(top_b, 0.2, 3e-3);
+}
+
+// The pose of an SDF model now (what /gazebo/model_states reports): X_WB X_BM for a moving one,
+// the SDF's pose for a static one.
+description::Pose model_pose(const World& world, const physics::Physics& p, const std::string& name) {
+  for (const World::ModelFrame& f : world.sdf_model_frames) {
+    if (f.name != name) continue;
+    if (f.body.empty()) return f.pose;
+    const int body = p.model().body_index(f.body);
+    EXPECT_GE(body, 1) << name << ": no body '" << f.body << "'";
+    return body >= 1 ? physics::compose(p.body_pose(body), f.X_BM) : f.pose;
+  }
+  ADD_FAILURE() << "no model frame '" << name << "'";
+  return {};
+}
+
+void expect_pose_near(const description::Pose& a, const description::Pose& b, double tolerance, const std::string& what) {
+  EXPECT_NEAR(a.position.x, b.position.x, tolerance) << what;
+  EXPECT_NEAR(a.position.y, b.position.y, tolerance) << what;
+  EXPECT_NEAR(a.position.z, b.position.z, tolerance) << what;
+  // Same rotation: |<qa, qb>| = 1.
+  const double dot = a.orientation.w * b.orientation.w + a.orientation.x * b.orientation.x +
+                     a.orientation.y * b.orientation.y + a.orientation.z * b.orientation.z;
+  EXPECT_NEAR(std::abs(dot), 1.0, tolerance) << what;
+}
+
+// Every simulated model of an SDF world has a frame, in sdf_models' order; a moving model's frame
+// follows the body that carries it: where the SDF puts it at the start, where it came to rest
+// after (the crate on the ground, still turned 0.3 rad; the dumbbell level on its spheres). A
+// model hinged to the world (the swing) keeps its frame where the file puts it.
+TEST_F(SdfWorldFile, ModelFramesFollowTheMovingModels) {
+  for (const char* sdf : {kMovingMeshWorld, kArticulatedWorld}) {
+    const World world = load(sdf);
+    ASSERT_EQ(world.sdf_model_frames.size(), world.sdf_models.size());
+    for (std::size_t i = 0; i < world.sdf_models.size(); ++i) EXPECT_EQ(world.sdf_model_frames[i].name, world.sdf_models[i]);
+    const auto model = build(world.spec);
+    physics::Physics p(model);
+    for (const World::ModelFrame& f : world.sdf_model_frames) {
+      expect_pose_near(model_pose(world, p, f.name), f.pose, 1e-9, f.name + " at the start");
+    }
+    while (p.time() < 3.0) ASSERT_TRUE(p.step().ok());
+    if (sdf == kMovingMeshWorld) {
+      EXPECT_TRUE(world.sdf_model_frames[0].body.empty()) << "the ground is static";
+      description::Pose rest;
+      rest.position = {2.0, -1.0, 0.0};  // the block's corner (the model's origin) on the ground
+      rest.orientation = physics::quat_from_rpy(0.0, 0.0, 0.3);
+      expect_pose_near(model_pose(world, p, "crate"), rest, 5e-3, "crate at rest");
+    } else {
+      const description::Pose swing = model_pose(world, p, "swing");
+      expect_pose_near(swing, world.sdf_model_frames[1].pose, 1e-12, "swing (hinged to the world)");
+      const description::Pose dumbbell = model_pose(world, p, "dumbbell");
+      EXPECT_NEAR(dumbbell.position.z, 0.1, 3e-3) << "sphere a's centre, on the ground";
+      // Level: the bar (the model's y axis) horizontal.
+      const description::Vec3 bar = physics::rotate(dumbbell.orientation, {0.0, 1.0, 0.0});
+      EXPECT_NEAR(bar.z, 0.0, 1e-2);
+    }
+  }
 }
 
 TEST(SdfWorldObjects, ARoundObjectOfUnequalWidthsIsABuildErrorNamingIt) {

@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <mutex>
 
@@ -73,12 +74,12 @@ geometry_msgs::Pose pose_at(double x, double y, double z) {
 
 class GazeboWorldNode : public ::testing::Test {
  protected:
-  void start(bool paused) {
+  void start(bool paused, const std::string& world = "") {
     const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    node_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{MECHSIM_NODE_EXE, "__name:=gazebo", "_gazebo:=true", "_real_time_factor:=1.0",
-                                 std::string("_paused:=") + (paused ? "true" : "false")},
-        log_dir() + "/gazebo_" + name + ".log");
+    std::vector<std::string> argv{MECHSIM_NODE_EXE, "__name:=gazebo", "_gazebo:=true", "_real_time_factor:=1.0",
+                                  std::string("_paused:=") + (paused ? "true" : "false")};
+    if (!world.empty()) argv.push_back("_world:=" + world);
+    node_ = std::make_unique<ChildProcess>(argv, log_dir() + "/gazebo_" + name + ".log");
     clock_sub_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 10, [this](const rosgraph_msgs::Clock::ConstPtr& m) {
       std::lock_guard<std::mutex> lock(mutex_);
       clock_ = m->clock.toSec();
@@ -402,6 +403,66 @@ TEST_F(GazeboWorldNode, StepsWhilePausedAndPublishesStatesAndTheRealTimeFactor) 
   // Paced at real time: the last full second's factor.
   EXPECT_NEAR(factors.back(), 1.0, 0.2);
   std::printf("performance_metrics real_time_factor: %.3f\n", factors.back());
+}
+
+// An SDF world's models in get_model_state and model_states: a static pillar where the file puts
+// it; a crate dropped from 1 m where the file puts it before any robot is in, and once a robot's
+// physics runs, falling and resting on the ground (its centre 0.1 m up), in both.
+TEST_F(GazeboWorldNode, AnSdfWorldsModelsAreWhereThePhysicsHasThem) {
+  const std::string file = log_dir() + "/drop.world";  // the suite's folder, removed when it ends
+  {
+    std::ofstream out(file);
+    out << R"(<?xml version="1.0"?><sdf version="1.6"><world name="drop">
+      <model name="ground"><static>true</static><link name="l"><collision name="c"><geometry><plane><normal>0 0 1</normal>
+        <size>20 20</size></plane></geometry></collision></link></model>
+      <model name="pillar"><static>true</static><pose>-2 0 0.5 0 0 0.4</pose><link name="l"><collision name="c">
+        <geometry><box><size>0.3 0.3 1</size></box></geometry></collision></link></model>
+      <model name="crate"><pose>1 0.5 1 0 0 0</pose><link name="l"><inertial><mass>2</mass></inertial>
+        <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model>
+    </world></sdf>)";
+  }
+  start(true, file);
+  gazebo_msgs::GetModelState crate = model_state("crate");
+  ASSERT_TRUE(crate.response.success) << crate.response.status_message;
+  EXPECT_NEAR(crate.response.pose.position.z, 1.0, 1e-9) << "before any robot: where the file puts it";
+  ASSERT_TRUE(spawn("bot", kBot, pose_at(0, 3, 0.2)).response.success) << node_->log();
+  crate = model_state("crate");
+  EXPECT_NEAR(crate.response.pose.position.x, 1.0, 1e-9);
+  EXPECT_NEAR(crate.response.pose.position.z, 1.0, 1e-9) << "paused: not moved yet";
+  step(300);  // 0.3 s: falling (0.44 m down, 2.9 m/s)
+  crate = model_state("crate");
+  EXPECT_NEAR(crate.response.pose.position.z, 1.0 - 0.5 * 9.81 * 0.09, 0.01) << "falling";
+  EXPECT_NEAR(crate.response.twist.linear.z, -9.81 * 0.3, 0.05);
+  step(1700);
+  crate = model_state("crate");
+  EXPECT_NEAR(crate.response.pose.position.z, 0.1, 2e-3) << "resting on the ground";
+  EXPECT_NEAR(crate.response.pose.position.x, 1.0, 1e-3);
+  const gazebo_msgs::GetModelState pillar = model_state("pillar");
+  ASSERT_TRUE(pillar.response.success) << pillar.response.status_message;
+  EXPECT_NEAR(pillar.response.pose.position.x, -2.0, 1e-9);
+  EXPECT_NEAR(pillar.response.pose.orientation.z, std::sin(0.2), 1e-9);
+
+  std::mutex m;
+  gazebo_msgs::ModelStates states;
+  ::ros::Subscriber sub = nh_.subscribe<gazebo_msgs::ModelStates>(
+      "/gazebo/model_states", 1, [&](const gazebo_msgs::ModelStates::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        states = *msg;
+      });
+  ASSERT_TRUE(wait_until([&] { return sub.getNumPublishers() > 0; }, 5.0));
+  ASSERT_TRUE(wait_until(
+      [&] {
+        step(1);
+        std::lock_guard<std::mutex> l(m);
+        return !states.name.empty();
+      },
+      10.0));
+  std::lock_guard<std::mutex> l(m);
+  EXPECT_THAT(states.name, ::testing::ElementsAre("ground", "pillar", "crate", "bot"));
+  ASSERT_EQ(states.pose.size(), 4u);
+  EXPECT_NEAR(states.pose[1].position.x, -2.0, 1e-9);
+  EXPECT_NEAR(states.pose[2].position.z, 0.1, 2e-3);
+  EXPECT_NEAR(states.pose[3].position.y, 3.0, 0.05);
 }
 
 TEST_F(GazeboWorldNode, DeleteUnloadsTheControllersAndTheClockGoesOn) {
