@@ -27,7 +27,15 @@ ReplayRecorder::ReplayRecorder(const Simulation& sim, const Scenario& scenario, 
   std::error_code ec;
   fs::remove(dir_ / "manifest.json", ec);
   write_replay_assets(sim, dir_, urdf);
-  frame_.assign(1 + 7 * sim.physics().model().links().size(), 0.0f);
+  // Free objects (a world box that is not fixed: its own body "box:<name>", at its shape).
+  for (const physics::WorldBox& b : sim.world().spec.boxes) {
+    if (b.fixed) continue;
+    const int body = sim.physics().model().body_index("box:" + b.name);
+    if (body < 1) continue;
+    object_bodies_.push_back(body);
+    object_names_.push_back(b.name);
+  }
+  frame_.assign(1 + 7 * (sim.physics().model().links().size() + object_bodies_.size()), 0.0f);
   buffer_.resize(1 << 16);
   poses_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
   poses_.open(dir_ / "poses.bin", std::ios::binary | std::ios::trunc);
@@ -40,9 +48,9 @@ void ReplayRecorder::observe(const Simulation& sim, std::uint64_t last_tick) {
   if (tick % every_ != 0 && tick != last_tick) return;
   const physics::Physics& physics = sim.physics();
   frame_[0] = static_cast<float>(sim.time());
-  const std::size_t links = (frame_.size() - 1) / 7;
-  for (std::size_t i = 0; i < links; ++i) {
-    const description::Pose X_WL = physics.link_pose(i);
+  const std::size_t links = (frame_.size() - 1) / 7 - object_bodies_.size();
+  for (std::size_t i = 0; i < links + object_bodies_.size(); ++i) {
+    const description::Pose X_WL = i < links ? physics.link_pose(i) : physics.body_pose(object_bodies_[i - links]);
     float* f = &frame_[1 + 7 * i];
     f[0] = static_cast<float>(X_WL.position.x);
     f[1] = static_cast<float>(X_WL.position.y);
@@ -74,8 +82,9 @@ void ReplayRecorder::finish(const Simulation& sim, const std::vector<std::string
   for (const physics::LinkInfo& l : sim.physics().model().links()) links.push_back(l.name);
   j["links"] = links;
   j["root_link"] = sim.robot().root_link;
+  j["objects"] = object_names_;
   j["poses"] = {{"file", "poses.bin"}, {"type", "float32le"}, {"stride", frame_.size()},
-                {"layout", "t (s), then per link: x y z (m), qw qx qy qz (world frame)"}};
+                {"layout", "t (s), then per link, then per object: x y z (m), qw qx qy qz (world frame)"}};
   j["robot_file"] = "robot.json";
   j["urdf_file"] = "robot.urdf";
   j["world_file"] = "world.json";

@@ -2,8 +2,10 @@
 // What a report keeps for `mechsim view` (a 3D replay in a browser): the world pose of every
 // URDF link at the scenario's replay_rate, and beside it the robot's visuals, the world and a
 // manifest with a format version, all under <report>/replay/:
-//   manifest.json  format "mechsim-replay", version kReplayFormatVersion, link names, frame count
-//   poses.bin      float32 little-endian frames: t (s), then per link x y z (m) qw qx qy qz (W)
+//   manifest.json  format "mechsim-replay", version kReplayFormatVersion, link names, the world's
+//                  free objects' names (`objects`, world.json box names), frame count
+//   poses.bin      float32 little-endian frames: t (s), then per link x y z (m) qw qx qy qz (W),
+//                  then the same per free object (the pose of its shape, as world.json's box pose)
 //   robot.json     the links' visuals (box, cylinder, sphere, mesh), origins X_LV, colours
 //   robot.urdf     the expanded description as the run loaded it
 //   meshes/        each visual mesh as binary STL or OBJ (Collada converted by assimp)
@@ -48,7 +50,9 @@ class ReplayRecorder {
   std::uint64_t every_ = 1;    // ticks per frame
   std::uint64_t frames_ = 0;
   double rate_ = 0.0;
-  std::vector<float> frame_;   // 1 + 7 * links
+  std::vector<float> frame_;   // 1 + 7 * (links + objects)
+  std::vector<int> object_bodies_;  // the free world objects' physics bodies
+  std::vector<std::string> object_names_;
   std::vector<char> buffer_;   // poses.bin's stream buffer, sized once
   std::ofstream poses_;
   std::string scenario_name_;

@@ -92,7 +92,15 @@ void check(const fs::path& report, ReplayFolder& out) {
   const std::uint64_t stride = member(poses, "stride", mname + " poses", is_count, "a count").get<std::uint64_t>();
   const std::uint64_t frames = member(manifest, "frames", mname, is_count, "a count").get<std::uint64_t>();
   const std::size_t links = member(manifest, "links", mname, [](const json& v) { return v.is_array(); }, "a list").size();
-  if (stride != 1 + 7 * links) throw Invalid{mname + ": poses stride " + std::to_string(stride) + " does not fit " + std::to_string(links) + " links"};
+  // The world's free objects follow the links in each frame (absent in replays that have none).
+  std::size_t objects = 0;
+  if (manifest.contains("objects")) {
+    objects = member(manifest, "objects", mname, [](const json& v) { return v.is_array(); }, "a list").size();
+  }
+  if (stride != 1 + 7 * (links + objects)) {
+    throw Invalid{mname + ": poses stride " + std::to_string(stride) + " does not fit " + std::to_string(links) + " links and " +
+                  std::to_string(objects) + " objects"};
+  }
   if (frames == 0) throw Invalid{mname + ": no frames recorded"};
   need_file(report, poses_file, files);
   const std::uintmax_t expected = frames * stride * sizeof(float);

@@ -6,7 +6,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { readBytes, readJson, readStatus, readText, reportPath } from './data.js';
-import { buildRobot, poseRobot } from './robot.js';
+import { buildRobot, poseObjects, poseRobot } from './robot.js';
 import { buildWorld, buildTraces, csvColumns } from './world.js';
 import { buildPlots, updatePlots } from './plots.js';
 import { buildLasers, updateLasers } from './lasers.js';
@@ -122,6 +122,7 @@ async function main() {
   const show = () => {
     const k = frameAt(poses, stride, frames, t);
     poseRobot(robot.groups, poses, stride, k);
+    poseObjects(world.objects, manifest.objects ?? [], manifest.links.length, poses, stride, k);
     updateLasers(lasers, t, poses, stride, k);
     const at = rootAt(k);
     if (follow.checked) {

@@ -87,6 +87,17 @@ export async function buildRobot(robotJson, linkNames) {
 }
 
 // Places each link group at frame `k` of the poses (Float32Array, `stride` floats a frame).
+// The world's free objects (manifest.objects, after the links in each frame) at frame k.
+export function poseObjects(objects, names, linkCount, poses, stride, k) {
+  for (let i = 0; i < names.length; i++) {
+    const object = objects.get(names[i]);
+    if (!object) continue;
+    const o = k * stride + 1 + 7 * (linkCount + i);
+    object.position.set(poses[o], poses[o + 1], poses[o + 2]);
+    object.quaternion.set(poses[o + 4], poses[o + 5], poses[o + 6], poses[o + 3]);
+  }
+}
+
 export function poseRobot(groups, poses, stride, k) {
   const base = k * stride + 1;
   for (let i = 0; i < groups.length; i++) {

@@ -100,6 +100,7 @@ export async function buildWorld(worldJson) {
     heightAt = makeHeightAt(field, heights);
   }
   const meshes = new Map();
+  const objects = new Map();  // free objects (fixed: false) by name: the replay moves them
   for (const box of worldJson.boxes ?? []) {
     const mat = new THREE.MeshStandardMaterial({ color: box.fixed ? 0x9c7a54 : 0xc9a36b, roughness: 0.8 });
     if (box.shape === 'mesh') {  // a static model's mesh: its file and scale, in the object's frame
@@ -109,6 +110,7 @@ export async function buildWorld(worldJson) {
       holder.position.set(...box.pose.p);
       holder.quaternion.set(x, y, z, w);
       group.add(holder);
+      if (!box.fixed) objects.set(box.name, holder);
       continue;
     }
     // Extents: a box's edges; a cylinder's diameter, diameter and length (axis z); a sphere's diameter.
@@ -126,8 +128,9 @@ export async function buildWorld(worldJson) {
     mesh.position.set(...box.pose.p);
     mesh.quaternion.set(x, y, z, w);
     group.add(mesh);
+    if (!box.fixed) objects.set(box.name, mesh);
   }
-  return { group, heightAt };
+  return { group, heightAt, objects };
 }
 
 // (x, y) columns of a CSV file's text (header row first), as numbers.

@@ -231,6 +231,30 @@ TEST_F(ReplayRecorderTest, AStaticSdfModelsMeshIsCopiedForTheWorld) {
   EXPECT_EQ(bytes.str(), stl);
 }
 
+// A free object of the world (a scenario box that is not fixed) moves in the replay: its pose
+// follows the links' in every frame, where it starts in world.json at first, falling, then at
+// rest on the ground (0.1 m up: half its 0.2 m edge).
+TEST_F(ReplayRecorderTest, FreeObjectsMoveInTheFrames) {
+  const ScenarioResult r = run("world: {boxes: [{name: crate, size: [0.2, 0.2, 0.2], x: 2, z: 1.5, fixed: false, mass: 1},"
+                               " {name: wall, size: [0.2, 2, 1], x: -2, z: 0.5}]}\n");
+  ASSERT_TRUE(r.completed) << r.error;
+  const fs::path replay = dir_ / "out" / "replay";
+  const nlohmann::json manifest = read_json(replay / "manifest.json");
+  ASSERT_EQ(manifest["objects"], (nlohmann::json{"crate"})) << "the fixed wall is not an object";
+  const std::size_t stride = manifest["poses"]["stride"];
+  ASSERT_EQ(stride, 1u + 7u * (2u + 1u));
+  const std::size_t frames = manifest["frames"];
+  std::vector<float> poses(frames * stride);
+  std::ifstream(replay / "poses.bin", std::ios::binary).read(reinterpret_cast<char*>(poses.data()),
+                                                             static_cast<std::streamsize>(poses.size() * sizeof(float)));
+  const auto crate_z = [&](std::size_t k) { return poses[k * stride + 1 + 7 * 2 + 2]; };
+  const auto crate_x = [&](std::size_t k) { return poses[k * stride + 1 + 7 * 2]; };
+  EXPECT_NEAR(crate_z(0), 1.5 - 0.5 * 9.81 * poses[0] * poses[0], 1e-3) << "falling from where it starts";
+  EXPECT_NEAR(crate_x(0), 2.0, 1e-6);
+  EXPECT_NEAR(crate_z(frames - 1), 0.1, 2e-3) << "at rest on the ground";
+  EXPECT_NEAR(crate_x(frames - 1), 2.0, 1e-3);
+}
+
 TEST_F(ReplayRecorderTest, RateZeroRecordsNoReplay) {
   const ScenarioResult r = run("replay_rate: 0\n");
   ASSERT_TRUE(r.completed) << r.error;

@@ -133,6 +133,15 @@ TEST_F(ViewTest, BadFoldersSayWhatAndWhere) {
   manifest["plots"] = {{{"file", "../../two.urdf"}}};
   std::ofstream(escape / "replay" / "manifest.json") << manifest.dump();
   EXPECT_NE(error_of(escape).find("points outside the report folder"), std::string::npos);
+
+  // Objects listed that the frames do not hold.
+  const fs::path objects = copy("objects");
+  manifest = nlohmann::json::parse(read(objects / "replay" / "manifest.json"));
+  manifest["objects"] = {"crate"};
+  std::ofstream(objects / "replay" / "manifest.json") << manifest.dump();
+  const std::string objects_error = error_of(objects);
+  EXPECT_NE(objects_error.find("does not fit"), std::string::npos) << objects_error;
+  EXPECT_NE(objects_error.find("and 1 objects"), std::string::npos) << objects_error;
 }
 
 // One GET on 127.0.0.1:port: (status, body).
