@@ -316,17 +316,8 @@ void Physics::set_joint_state(std::size_t j, double position, double velocity) {
   data_->stale = true;
 }
 
-namespace {
-// The free joint of the root body, or -1.
-int root_free_joint(const mjModel* m) {
-  for (int j = 0; j < m->njnt; ++j)
-    if (m->jnt_type[j] == mjJNT_FREE) return j;
-  return -1;
-}
-}  // namespace
-
 void Physics::set_base_pose(const Pose& X_WB) {
-  const int j = root_free_joint(data_->m);
+  const int j = detail::robot_free_joint(*model_, data_->m);
   if (j < 0) return;
   mjtNum* q = data_->d->qpos + data_->m->jnt_qposadr[j];
   const Quat r = quat_normalized(X_WB.orientation);
@@ -337,7 +328,7 @@ void Physics::set_base_pose(const Pose& X_WB) {
 
 void Physics::set_spawn_pose(const Pose& X_WB) {
   mjModel* m = data_->m;
-  const int j = root_free_joint(m);
+  const int j = detail::robot_free_joint(*model_, m);
   if (j < 0) return;
   const Quat r = quat_normalized(X_WB.orientation);
   const mjtNum values[7] = {X_WB.position.x, X_WB.position.y, X_WB.position.z, r.w, r.x, r.y, r.z};
@@ -351,7 +342,7 @@ void Physics::set_spawn_pose(const Pose& X_WB) {
 }
 
 void Physics::set_base_twist(const Twist& V) {
-  const int j = root_free_joint(data_->m);
+  const int j = detail::robot_free_joint(*model_, data_->m);
   if (j < 0) return;
   mjtNum* v = data_->d->qvel + data_->m->jnt_dofadr[j];
   // MuJoCo free joint: linear velocity in the world frame, angular velocity in the body frame.
@@ -410,6 +401,22 @@ Twist Physics::body_twist(int b) const {
   const Vec3 r{d->xpos[3 * b] - d->xipos[3 * b], d->xpos[3 * b + 1] - d->xipos[3 * b + 1],
                d->xpos[3 * b + 2] - d->xipos[3 * b + 2]};  // centre of mass -> body origin
   return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
+}
+
+bool Physics::set_free_body_state(int body, const Pose& X_WB, const Twist& V) {
+  const mjModel* m = data_->m;
+  if (body < 1 || body >= m->nbody || m->body_jntnum[body] < 1) return false;
+  const int j = m->body_jntadr[body];
+  if (m->jnt_type[j] != mjJNT_FREE) return false;
+  const Quat r = quat_normalized(X_WB.orientation);
+  const mjtNum q[7] = {X_WB.position.x, X_WB.position.y, X_WB.position.z, r.w, r.x, r.y, r.z};
+  std::copy(q, q + 7, data_->d->qpos + m->jnt_qposadr[j]);
+  // MuJoCo's free joint: the body origin's velocity in W, the angular velocity in the body frame.
+  const Vec3 w_body = rotate(quat_conjugate(r), V.angular);
+  const mjtNum v[6] = {V.linear.x, V.linear.y, V.linear.z, w_body.x, w_body.y, w_body.z};
+  std::copy(v, v + 6, data_->d->qvel + m->jnt_dofadr[j]);
+  data_->stale = true;
+  return true;
 }
 
 Pose Physics::base_pose() const { return link_pose(*model_->link_index(model_->root_link())); }

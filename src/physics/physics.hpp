@@ -243,6 +243,10 @@ class Physics {
   // its origin, world frame. `body` must be in [1, body_count()).
   description::Pose body_pose(int body) const;
   Twist body_twist(int body) const;
+  // Sets a body that floats on a free joint of its own (a world's free object or passive model's
+  // root) to pose X_WB with twist V (world frame, at its origin); false, changing nothing, for a
+  // body without one.
+  bool set_free_body_state(int body, const description::Pose& X_WB, const Twist& V);
   description::Pose base_pose() const;  // the root link
   Twist base_twist() const;
 

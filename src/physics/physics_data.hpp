@@ -72,6 +72,17 @@ struct Physics::Data {
 
 namespace detail {
 
+// The free joint of the robot's root link's body, or -1 (a robot fixed to the world; the world's
+// free objects and passive models have free joints of their own, after the robot's).
+inline int robot_free_joint(const PhysicsModel& model, const mjModel* m) {
+  const auto link = model.link_index(model.root_link());
+  if (!link) return -1;
+  const int body = model.links()[*link].body;
+  for (int j = 0; j < m->njnt; ++j)
+    if (m->jnt_type[j] == mjJNT_FREE && m->jnt_bodyid[j] == body) return j;
+  return -1;
+}
+
 inline std::string_view joint_of_dof(const mjModel* m, int dof) {
   if (dof < 0 || dof >= m->nv) return "?";
   const int j = m->dof_jntid[dof];

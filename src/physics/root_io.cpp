@@ -14,14 +14,8 @@ using description::Vec3;
 // Finds the root's free joint and the root link's frame in its body the first time.
 void find_root(const PhysicsModel& model, const Physics::Data& data) {
   if (data.root_known) return;
-  data.root_free_joint = -1;
-  for (int j = 0; j < data.m->njnt; ++j) {
-    if (data.m->jnt_type[j] == mjJNT_FREE) {
-      data.root_free_joint = j;
-      break;
-    }
-  }
   const auto link = model.link_index(model.root_link());
+  data.root_free_joint = detail::robot_free_joint(model, data.m);
   data.X_BodyRoot = link ? model.links()[*link].X_BL : Pose{};
   data.root_known = true;
 }

@@ -240,8 +240,13 @@ void GazeboWorld::advertise_model_services() {
   // Sets the robot's root from a state given in `frame` (model or its root link).
   auto set_root = [this](const Entity& target, const std::string& frame_name, const geometry_msgs::Pose& pose,
                          const geometry_msgs::Twist& twist, std::string* status) {
-    if (target.kind == Entity::Kind::WorldModel || target.kind == Entity::Kind::World) {
-      *status = "the world's static models do not move";
+    if (target.kind == Entity::Kind::World) {
+      *status = "the world itself does not move";
+      return false;
+    }
+    if (target.kind == Entity::Kind::WorldModel && (!robot_ || target.model >= sdf_model_count_)) {
+      *status = robot_ ? "model '" + world_models_[target.model] + "' is static, part of the world"
+                       : "the world's models move in a robot's physics: spawn a robot first";
       return false;
     }
     if (target.kind == Entity::Kind::RobotLink && target.link != robot_->bridge().robot().root_link) {
@@ -263,7 +268,9 @@ void GazeboWorld::advertise_model_services() {
     given.pose = pose_from(pose);
     given.linear = vec_from(twist.linear);
     given.angular = vec_from(twist.angular);
-    const BridgeResult r = robot_->bridge().set_root_state(absolute(X_WR, given));
+    const BridgeResult r = target.kind == Entity::Kind::WorldModel
+                               ? robot_->bridge().set_world_model_state(target.model, absolute(X_WR, given))
+                               : robot_->bridge().set_root_state(absolute(X_WR, given));
     if (!r.ok) *status = r.error;
     return r.ok;
   };

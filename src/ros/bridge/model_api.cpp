@@ -146,18 +146,52 @@ std::vector<std::string> SimBridge::stop_all_controllers_now() {
   return loaded;
 }
 
-BridgeResult SimBridge::set_root_state(const EntityState& state) {
-  if (!finite(state.pose) || !finite(state.linear) || !finite(state.angular)) {
-    return refuse("the pose and twist must be finite");
-  }
+namespace {
+
+// A state the physics can take: finite, bounded, a nonzero quaternion (normalised into `unit`);
+// else why not.
+std::string unusable(const EntityState& state, EntityState& unit) {
+  if (!finite(state.pose) || !finite(state.linear) || !finite(state.angular)) return "the pose and twist must be finite";
   if (!bounded(state.pose.position) || !bounded(state.linear) || !bounded(state.angular)) {
-    return refuse("the pose and twist must be below 1e10 (m, m/s, rad/s) in magnitude");
+    return "the pose and twist must be below 1e10 (m, m/s, rad/s) in magnitude";
   }
   const description::Quat& q = state.pose.orientation;
   const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-  if (norm < 1e-9) return refuse("the orientation quaternion is zero");
-  EntityState unit = state;
+  if (norm < 1e-9) return "the orientation quaternion is zero";
+  unit = state;
   unit.pose.orientation = {q.w / norm, q.x / norm, q.y / norm, q.z / norm};
+  return "";
+}
+
+}  // namespace
+
+BridgeResult SimBridge::set_world_model_state(std::size_t index, const EntityState& state) {
+  EntityState unit;
+  if (const std::string why = unusable(state, unit); !why.empty()) return refuse(why);
+  return impl_->in_loop([this, index, unit](sim::Simulation& s) -> BridgeResult {
+    if (index >= impl_->world_model_body.size()) return refuse("no such model of the world");
+    const sim::World::ModelFrame& f = s.world().sdf_model_frames[index];
+    const int body = impl_->world_model_body[index];
+    if (body < 0) return refuse("model '" + f.name + "' is static (or jointed to the world): it does not move");
+    // The model frame M to its body B: X_WB = X_WM X_MB, v_B = v_M + w x (p_B - p_M).
+    const description::Pose X_WB = physics::compose(unit.pose, physics::inverse(f.X_BM));
+    const description::Vec3 r{X_WB.position.x - unit.pose.position.x, X_WB.position.y - unit.pose.position.y,
+                              X_WB.position.z - unit.pose.position.z};
+    const description::Vec3& w = unit.angular;
+    const physics::Twist V{{unit.linear.x + w.y * r.z - w.z * r.y, unit.linear.y + w.z * r.x - w.x * r.z,
+                            unit.linear.z + w.x * r.y - w.y * r.x},
+                           w};
+    if (!s.physics().set_free_body_state(body, X_WB, V)) {
+      return refuse("model '" + f.name + "' does not float freely (its root is jointed to the world)");
+    }
+    s.state_changed();
+    return {};
+  });
+}
+
+BridgeResult SimBridge::set_root_state(const EntityState& state) {
+  EntityState unit;
+  if (const std::string why = unusable(state, unit); !why.empty()) return refuse(why);
   return impl_->in_loop([unit](sim::Simulation& s) -> BridgeResult {
     if (s.physics().model().fixed_to_world()) {
       return refuse("model '" + s.robot().name + "' is fixed to the world: its pose cannot be set");

@@ -308,6 +308,9 @@ class SimBridge {
   BridgeResult link_state(const std::string& link, EntityState& out) const;
   // The world's SDF model `index` (WorldSummary::sdf_models order), as world_model_states_now.
   BridgeResult world_model_state(std::size_t index, EntityState& out) const;
+  // Moves a moving SDF model (a free object, or a passive model not jointed to the world) to a
+  // state (its model frame, world frame); static ones are refused.
+  BridgeResult set_world_model_state(std::size_t index, const EntityState& state);
   // The root link's pose and twist (the model's state); a robot fixed to the world is refused.
   BridgeResult set_root_state(const EntityState& state);
   // Positions (rad or m), velocities set to zero (gazebo's set_model_configuration).

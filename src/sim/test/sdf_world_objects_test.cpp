@@ -359,6 +359,40 @@ TEST_F(SdfWorldFile, ModelFramesFollowTheMovingModels) {
   }
 }
 
+// A robot fixed to the world beside a free object: the robot's root state and base pose are its
+// own (it has no free joint; the object's is not the robot's), and setting the base moves nothing.
+TEST(SdfWorldObjects, AFixedRobotsRootIsNotAFreeObjectsJoint) {
+  physics::BuildOptions options;
+  physics::WorldBox crate;
+  crate.name = "crate";
+  crate.size = {0.2, 0.2, 0.2};
+  crate.pose.position = {1.0, 0.0, 0.1};
+  crate.fixed = false;
+  crate.mass = 1.0;
+  options.world.boxes = {crate};
+  const auto model = physics::PhysicsModel::build(
+      description::parse_urdf_string(R"(<robot name="post"><link name="world"/>
+        <joint name="fix" type="fixed"><parent link="world"/><child link="base"/><origin xyz="-1 0 0.5"/></joint>
+        <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+        <collision><geometry><box size="0.1 0.1 1"/></geometry></collision></link></robot>)",
+                                     "post.urdf", {}),
+      options);
+  physics::Physics p(model);
+  description::Pose X;
+  physics::Twist V;
+  EXPECT_FALSE(p.root_state(X, V)) << "a fixed robot has no floating root";
+  description::Pose moved;
+  moved.position = {5.0, 5.0, 5.0};
+  p.set_base_pose(moved);
+  const int body = model->body_index("box:crate");
+  ASSERT_GE(body, 1);
+  EXPECT_NEAR(p.body_pose(body).position.x, 1.0, 1e-12) << "the crate stays";
+  // The crate itself can be moved.
+  EXPECT_TRUE(p.set_free_body_state(body, moved, {}));
+  EXPECT_NEAR(p.body_pose(body).position.z, 5.0, 1e-12);
+  EXPECT_FALSE(p.set_free_body_state(0, moved, {})) << "the world body";
+}
+
 TEST(SdfWorldObjects, ARoundObjectOfUnequalWidthsIsABuildErrorNamingIt) {
   physics::BuildOptions options;
   physics::WorldBox egg;

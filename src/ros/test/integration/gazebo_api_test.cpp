@@ -407,7 +407,8 @@ TEST_F(GazeboWorldNode, StepsWhilePausedAndPublishesStatesAndTheRealTimeFactor) 
 
 // An SDF world's models in get_model_state and model_states: a static pillar where the file puts
 // it; a crate dropped from 1 m where the file puts it before any robot is in, and once a robot's
-// physics runs, falling and resting on the ground (its centre 0.1 m up), in both.
+// physics runs, falling and resting on the ground (its centre 0.1 m up), in both; set_model_state
+// moves the crate and refuses the pillar.
 TEST_F(GazeboWorldNode, AnSdfWorldsModelsAreWhereThePhysicsHasThem) {
   const std::string file = log_dir() + "/drop.world";  // the suite's folder, removed when it ends
   {
@@ -442,6 +443,25 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsAreWhereThePhysicsHasThem) {
   EXPECT_NEAR(pillar.response.pose.position.x, -2.0, 1e-9);
   EXPECT_NEAR(pillar.response.pose.orientation.z, std::sin(0.2), 1e-9);
 
+  // The crate moved (as a script resets an object), 0.6 m up: there, then falling again; the
+  // static pillar cannot be moved.
+  gazebo_msgs::SetModelState set;
+  set.request.model_state.model_name = "crate";
+  set.request.model_state.pose = pose_at(0.5, -1.0, 0.7);
+  ASSERT_TRUE(call("/gazebo/set_model_state", set));
+  EXPECT_TRUE(set.response.success) << set.response.status_message;
+  crate = model_state("crate");
+  EXPECT_NEAR(crate.response.pose.position.x, 0.5, 1e-9);
+  EXPECT_NEAR(crate.response.pose.position.z, 0.7, 1e-9);
+  step(1000);
+  crate = model_state("crate");
+  EXPECT_NEAR(crate.response.pose.position.z, 0.1, 2e-3) << "fell again";
+  EXPECT_NEAR(crate.response.pose.position.y, -1.0, 1e-3);
+  set.request.model_state.model_name = "pillar";
+  ASSERT_TRUE(call("/gazebo/set_model_state", set));
+  EXPECT_FALSE(set.response.success);
+  EXPECT_THAT(set.response.status_message, ::testing::HasSubstr("static"));
+
   std::mutex m;
   gazebo_msgs::ModelStates states;
   ::ros::Subscriber sub = nh_.subscribe<gazebo_msgs::ModelStates>(
@@ -461,7 +481,7 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsAreWhereThePhysicsHasThem) {
   EXPECT_THAT(states.name, ::testing::ElementsAre("ground", "pillar", "crate", "bot"));
   ASSERT_EQ(states.pose.size(), 4u);
   EXPECT_NEAR(states.pose[1].position.x, -2.0, 1e-9);
-  EXPECT_NEAR(states.pose[2].position.z, 0.1, 2e-3);
+  EXPECT_NEAR(states.pose[2].position.x, 0.5, 1e-3);
   EXPECT_NEAR(states.pose[3].position.y, 3.0, 0.05);
 }
 
