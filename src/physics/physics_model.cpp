@@ -272,6 +272,32 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
       if (!joint) continue;
       pm->wheels_.push_back({g.link, *joint, geom, m->geom_bodyid[geom], m->geom_size[3 * geom], 2.0 * m->geom_size[3 * geom + 1]});
     }
+  // The passive models' primitive shapes (their bodies' collision geoms, and those welded to the world).
+  const auto add_shape = [&](int geom) {
+    if (geom < 0) return;
+    PassiveShape shape;
+    const double* sz = m->geom_size + 3 * geom;
+    switch (m->geom_type[geom]) {
+      case mjGEOM_BOX: shape.kind = PassiveShape::Kind::Box; shape.size = {2 * sz[0], 2 * sz[1], 2 * sz[2]}; break;
+      case mjGEOM_CYLINDER: shape.kind = PassiveShape::Kind::Cylinder; shape.size = {2 * sz[0], 2 * sz[0], 2 * sz[1]}; break;
+      case mjGEOM_SPHERE: shape.kind = PassiveShape::Kind::Sphere; shape.size = {2 * sz[0], 2 * sz[0], 2 * sz[0]}; break;
+      default: return;
+    }
+    shape.body = m->geom_bodyid[geom];
+    const char* name = mj_id2name(m, mjOBJ_BODY, shape.body);
+    shape.body_name = shape.body == 0 || name == nullptr ? "world" : name;
+    const double* pos = m->geom_pos + 3 * geom;
+    const double* quat = m->geom_quat + 4 * geom;
+    shape.X_BG = {{pos[0], pos[1], pos[2]}, {quat[0], quat[1], quat[2], quat[3]}};
+    pm->passive_shapes_.push_back(std::move(shape));
+  };
+  for (const BodyPlan& p : plan.passive) {
+    for (const PlannedGeom& g : p.world_geoms)
+      if (!g.visual) add_shape(mj_name2id(m, mjOBJ_GEOM, g.name.c_str()));
+    for (const PlannedBody& b : p.bodies)
+      for (const PlannedGeom& g : b.geoms)
+        if (!g.visual) add_shape(mj_name2id(m, mjOBJ_GEOM, g.name.c_str()));
+  }
   for (const std::string& link : plan.gravity_off_links) {
     const int body = mj_name2id(m, mjOBJ_BODY, link.c_str());
     if (body <= 0) continue;

@@ -40,6 +40,18 @@ struct LinkInfo {
 
 // A wheel: a collision cylinder turning about its axis on its link's revolute or continuous
 // joint (the wheel-soil model acts on these; physics/soil.hpp).
+// A primitive collision shape of the world's passive models (WorldSpec::models), for drawing
+// them: the compiled body that carries it and its frame there. Meshes are not listed.
+struct PassiveShape {
+  int body = 0;           // compiled body; 0: welded to the world
+  std::string body_name;  // "<model>::<link>", "world" for 0
+  enum class Kind { Box, Cylinder, Sphere } kind = Kind::Box;
+  // Full extents as a WorldBox's: a box's edges; a cylinder's diameter, diameter and length (axis
+  // z); a sphere's diameter, three times.
+  description::Vec3 size;
+  description::Pose X_BG;  // in the body frame
+};
+
 struct WheelInfo {
   std::string link;         // URDF link
   std::size_t joint = 0;    // index into PhysicsModel::joints(): the joint it turns on
@@ -114,6 +126,7 @@ class PhysicsModel {
   // The robot's wheels (WheelInfo), in document order. Narrow wheels given to MuJoCo as
   // ellipsoids (ContactDefaults::point_contact_wheels) are not among them.
   const std::vector<WheelInfo>& wheels() const { return wheels_; }
+  const std::vector<PassiveShape>& passive_shapes() const { return passive_shapes_; }
 
   const std::string& mjcf() const { return mjcf_; }  // the generated document (arena size included)
   const ArenaEstimate& arena() const { return arena_; }
@@ -147,6 +160,7 @@ class PhysicsModel {
   std::vector<LinkInfo> links_;
   std::optional<DifferentialInfo> differential_;
   std::vector<WheelInfo> wheels_;
+  std::vector<PassiveShape> passive_shapes_;
   std::vector<std::string> dropped_joints_, warnings_, gravity_off_links_;
   std::vector<int> gravity_off_bodies_;
   bool fixed_to_world_ = false;

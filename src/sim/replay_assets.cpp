@@ -105,6 +105,26 @@ ordered_json robot_json(const description::RobotModel& robot, const fs::path& di
   return {{"name", robot.name}, {"root_link", robot.root_link}, {"links", links}, {"warnings", warnings}};
 }
 
+// The world's passive models, body by body: each body's primitive shapes in its frame (the
+// replay's frames move the bodies; "world" holds the shapes welded to the world, in its frame).
+ordered_json passive_bodies_json(const physics::PhysicsModel& model) {
+  ordered_json bodies = ordered_json::array();
+  std::map<std::string, std::size_t> at;
+  for (const physics::PassiveShape& s : model.passive_shapes()) {
+    auto it = at.find(s.body_name);
+    if (it == at.end()) {
+      it = at.emplace(s.body_name, bodies.size()).first;
+      bodies.push_back({{"name", s.body_name}, {"shapes", ordered_json::array()}});
+    }
+    const char* shape = s.kind == physics::PassiveShape::Kind::Cylinder ? "cylinder"
+                        : s.kind == physics::PassiveShape::Kind::Sphere ? "sphere"
+                                                                          : "box";
+    bodies[it->second]["shapes"].push_back(
+        {{"shape", shape}, {"pose", pose_json(s.X_BG)}, {"size", {s.size.x, s.size.y, s.size.z}}});
+  }
+  return bodies;
+}
+
 ordered_json world_json(const World& world, const fs::path& dir) {
   const physics::WorldSpec& spec = world.spec;
   ordered_json j = {{"name", world.name}};
@@ -182,7 +202,9 @@ void write_replay_assets(const Simulation& sim, const fs::path& replay_dir, cons
   if (ec) throw ScenarioError("replay: cannot create " + (replay_dir / "meshes").string() + ": " + ec.message());
   write_text(replay_dir / "robot.urdf", urdf);
   write_text(replay_dir / "robot.json", robot_json(sim.robot(), replay_dir).dump(1));
-  write_text(replay_dir / "world.json", world_json(sim.world(), replay_dir).dump(1));
+  ordered_json world = world_json(sim.world(), replay_dir);
+  world["bodies"] = passive_bodies_json(sim.physics().model());
+  write_text(replay_dir / "world.json", world.dump(1));
 }
 
 }  // namespace mechsim::sim

@@ -35,6 +35,12 @@ ReplayRecorder::ReplayRecorder(const Simulation& sim, const Scenario& scenario, 
     object_bodies_.push_back(body);
     object_names_.push_back(b.name);
   }
+  // The passive models' moving bodies (world.json "bodies"; "world" stays where it is).
+  for (const physics::PassiveShape& s : sim.physics().model().passive_shapes()) {
+    if (s.body < 1 || std::find(object_bodies_.begin(), object_bodies_.end(), s.body) != object_bodies_.end()) continue;
+    object_bodies_.push_back(s.body);
+    object_names_.push_back(s.body_name);
+  }
   frame_.assign(1 + 7 * (sim.physics().model().links().size() + object_bodies_.size()), 0.0f);
   buffer_.resize(1 << 16);
   poses_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));

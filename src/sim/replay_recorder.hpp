@@ -3,13 +3,16 @@
 // URDF link at the scenario's replay_rate, and beside it the robot's visuals, the world and a
 // manifest with a format version, all under <report>/replay/:
 //   manifest.json  format "mechsim-replay", version kReplayFormatVersion, link names, the world's
-//                  free objects' names (`objects`, world.json box names), frame count
+//                  free objects' and passive models' moving bodies (`objects`: world.json box and
+//                  body names), frame count
 //   poses.bin      float32 little-endian frames: t (s), then per link x y z (m) qw qx qy qz (W),
-//                  then the same per free object (the pose of its shape, as world.json's box pose)
+//                  then the same per object (a box: the pose of its shape, as world.json's box
+//                  pose; a passive body: its frame, world.json's body shapes are in it)
 //   robot.json     the links' visuals (box, cylinder, sphere, mesh), origins X_LV, colours
 //   robot.urdf     the expanded description as the run loaded it
 //   meshes/        each visual mesh as binary STL or OBJ (Collada converted by assimp)
-//   world.json     ground plane, boxes, the height field's grid and extent
+//   world.json     ground plane, boxes, the passive models' bodies and their primitive shapes
+//                  (meshes not drawn), the height field's grid and extent
 //   terrain.bin    the height field's heights (float32, row-major, row 0 south), when there is one
 
 #include <array>

@@ -130,6 +130,30 @@ export async function buildWorld(worldJson) {
     group.add(mesh);
     if (!box.fixed) objects.set(box.name, mesh);
   }
+  // The passive models' bodies: their primitive shapes in the body's frame; the replay's frames
+  // move each body (the shapes welded to the world, "world", stay).
+  for (const body of worldJson.bodies ?? []) {
+    const holder = new THREE.Group();
+    const mat = new THREE.MeshStandardMaterial({ color: 0x8aa0b8, roughness: 0.7 });
+    for (const s of body.shapes) {
+      let geometry;
+      if (s.shape === 'cylinder') {
+        geometry = new THREE.CylinderGeometry(s.size[0] / 2, s.size[0] / 2, s.size[2], 32);
+        geometry.rotateX(Math.PI / 2);
+      } else if (s.shape === 'sphere') {
+        geometry = new THREE.SphereGeometry(s.size[0] / 2, 32, 16);
+      } else {
+        geometry = new THREE.BoxGeometry(...s.size);
+      }
+      const mesh = new THREE.Mesh(geometry, mat);
+      const [w, x, y, z] = s.pose.q;
+      mesh.position.set(...s.pose.p);
+      mesh.quaternion.set(x, y, z, w);
+      holder.add(mesh);
+    }
+    group.add(holder);
+    if (body.name !== 'world') objects.set(body.name, holder);
+  }
   return { group, heightAt, objects };
 }
 

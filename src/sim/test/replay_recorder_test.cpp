@@ -255,6 +255,51 @@ TEST_F(ReplayRecorderTest, FreeObjectsMoveInTheFrames) {
   EXPECT_NEAR(crate_x(frames - 1), 2.0, 1e-3);
 }
 
+// A passive model of an SDF world (a dumbbell: two spheres on a fixed joint, a body each, welded)
+// is drawn from world.json's bodies and moved by the frames: each body starts where the file puts
+// it and lands (the spheres' centres 0.1 m up, 0.5 m apart).
+TEST_F(ReplayRecorderTest, PassiveModelsBodiesAreDrawnAndMoveInTheFrames) {
+  std::ofstream(dir_ / "dumbbell.world") << R"(<?xml version="1.0"?><sdf version="1.6"><world name="w">
+    <model name="ground"><static>true</static><link name="l"><collision name="c"><geometry><plane><normal>0 0 1</normal>
+      <size>20 20</size></plane></geometry></collision></link></model>
+    <model name="dumbbell"><pose>2 0 0.8 0 0 0</pose>
+      <link name="a"><inertial><mass>1</mass><inertia><ixx>0.004</ixx><iyy>0.004</iyy><izz>0.004</izz><ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial>
+        <collision name="c"><geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link>
+      <link name="b"><pose>0 0.5 0 0 0 0</pose><inertial><mass>1</mass><inertia><ixx>0.004</ixx><iyy>0.004</iyy><izz>0.004</izz><ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial>
+        <collision name="c"><geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link>
+      <joint name="bar" type="fixed"><parent>a</parent><child>b</child></joint>
+    </model>
+  </world></sdf>)";
+  const ScenarioResult r = run("world: {name: dumbbell.world}\n");
+  ASSERT_TRUE(r.completed) << r.error;
+  const fs::path replay = dir_ / "out" / "replay";
+  const nlohmann::json world = read_json(replay / "world.json");
+  ASSERT_EQ(world["bodies"].size(), 2u) << world.dump();
+  for (std::size_t i = 0; i < 2; ++i) {
+    const nlohmann::json& body = world["bodies"][i];
+    EXPECT_EQ(body["name"], i == 0 ? "dumbbell::a" : "dumbbell::b");
+    ASSERT_EQ(body["shapes"].size(), 1u);
+    EXPECT_EQ(body["shapes"][0]["shape"], "sphere");
+    EXPECT_NEAR(body["shapes"][0]["size"][0].get<double>(), 0.2, 1e-12);
+  }
+  const nlohmann::json manifest = read_json(replay / "manifest.json");
+  ASSERT_EQ(manifest["objects"], (nlohmann::json{"dumbbell::a", "dumbbell::b"}));
+  const std::size_t stride = manifest["poses"]["stride"];
+  ASSERT_EQ(stride, 1u + 7u * (2u + 2u));
+  const std::size_t frames = manifest["frames"];
+  std::vector<float> poses(frames * stride);
+  std::ifstream(replay / "poses.bin", std::ios::binary).read(reinterpret_cast<char*>(poses.data()),
+                                                             static_cast<std::streamsize>(poses.size() * sizeof(float)));
+  for (std::size_t i = 0; i < 2; ++i) {
+    const float* first = &poses[1 + 7 * (2 + i)];
+    const float* last = &poses[(frames - 1) * stride + 1 + 7 * (2 + i)];
+    EXPECT_NEAR(first[0], 2.0, 1e-6);
+    EXPECT_NEAR(first[1], 0.5 * static_cast<double>(i), 1e-6);
+    EXPECT_NEAR(first[2], 0.8 - 0.5 * 9.81 * poses[0] * poses[0], 1e-3);
+    EXPECT_NEAR(last[2], 0.1, 3e-3) << "landed";
+  }
+}
+
 TEST_F(ReplayRecorderTest, RateZeroRecordsNoReplay) {
   const ScenarioResult r = run("replay_rate: 0\n");
   ASSERT_TRUE(r.completed) << r.error;
