@@ -77,6 +77,18 @@ function terrainMesh(field, heights, limit = 320) {
   return new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ vertexColors: true, roughness: 0.95 }));
 }
 
+// A primitive's geometry from its extents: a box's edges; a cylinder's diameter, diameter and
+// length (axis z); a sphere's diameter.
+function shapeGeometry(shape) {
+  if (shape.shape === 'cylinder') {
+    const geometry = new THREE.CylinderGeometry(shape.size[0] / 2, shape.size[0] / 2, shape.size[2], 32);
+    geometry.rotateX(Math.PI / 2);  // three.js cylinders run along y, the world's along z
+    return geometry;
+  }
+  if (shape.shape === 'sphere') return new THREE.SphereGeometry(shape.size[0] / 2, 32, 16);
+  return new THREE.BoxGeometry(...shape.size);
+}
+
 export async function buildWorld(worldJson) {
   const group = new THREE.Group();
   let heightAt = () => 0;
@@ -113,17 +125,7 @@ export async function buildWorld(worldJson) {
       if (!box.fixed) objects.set(box.name, holder);
       continue;
     }
-    // Extents: a box's edges; a cylinder's diameter, diameter and length (axis z); a sphere's diameter.
-    let geometry;
-    if (box.shape === 'cylinder') {
-      geometry = new THREE.CylinderGeometry(box.size[0] / 2, box.size[0] / 2, box.size[2], 32);
-      geometry.rotateX(Math.PI / 2);  // three.js cylinders run along y, the world's along z
-    } else if (box.shape === 'sphere') {
-      geometry = new THREE.SphereGeometry(box.size[0] / 2, 32, 16);
-    } else {
-      geometry = new THREE.BoxGeometry(...box.size);
-    }
-    const mesh = new THREE.Mesh(geometry, mat);
+    const mesh = new THREE.Mesh(shapeGeometry(box), mat);
     const [w, x, y, z] = box.pose.q;
     mesh.position.set(...box.pose.p);
     mesh.quaternion.set(x, y, z, w);
@@ -136,16 +138,7 @@ export async function buildWorld(worldJson) {
     const holder = new THREE.Group();
     const mat = new THREE.MeshStandardMaterial({ color: 0x8aa0b8, roughness: 0.7 });
     for (const s of body.shapes) {
-      let geometry;
-      if (s.shape === 'cylinder') {
-        geometry = new THREE.CylinderGeometry(s.size[0] / 2, s.size[0] / 2, s.size[2], 32);
-        geometry.rotateX(Math.PI / 2);
-      } else if (s.shape === 'sphere') {
-        geometry = new THREE.SphereGeometry(s.size[0] / 2, 32, 16);
-      } else {
-        geometry = new THREE.BoxGeometry(...s.size);
-      }
-      const mesh = new THREE.Mesh(geometry, mat);
+      const mesh = new THREE.Mesh(shapeGeometry(s), mat);
       const [w, x, y, z] = s.pose.q;
       mesh.position.set(...s.pose.p);
       mesh.quaternion.set(x, y, z, w);

@@ -72,6 +72,14 @@ nlohmann::json read_json(const fs::path& file) {
   return nlohmann::json::parse(text.str());
 }
 
+// poses.bin of a replay folder whose manifest says `frames` frames of `stride` floats.
+std::vector<float> read_poses(const fs::path& replay, std::size_t frames, std::size_t stride) {
+  std::vector<float> poses(frames * stride);
+  std::ifstream(replay / "poses.bin", std::ios::binary).read(reinterpret_cast<char*>(poses.data()),
+                                                             static_cast<std::streamsize>(poses.size() * sizeof(float)));
+  return poses;
+}
+
 class ReplayRecorderTest : public testing::Test {
  protected:
   void SetUp() override {
@@ -244,9 +252,7 @@ TEST_F(ReplayRecorderTest, FreeObjectsMoveInTheFrames) {
   const std::size_t stride = manifest["poses"]["stride"];
   ASSERT_EQ(stride, 1u + 7u * (2u + 1u));
   const std::size_t frames = manifest["frames"];
-  std::vector<float> poses(frames * stride);
-  std::ifstream(replay / "poses.bin", std::ios::binary).read(reinterpret_cast<char*>(poses.data()),
-                                                             static_cast<std::streamsize>(poses.size() * sizeof(float)));
+  const std::vector<float> poses = read_poses(replay, frames, stride);
   const auto crate_z = [&](std::size_t k) { return poses[k * stride + 1 + 7 * 2 + 2]; };
   const auto crate_x = [&](std::size_t k) { return poses[k * stride + 1 + 7 * 2]; };
   EXPECT_NEAR(crate_z(0), 1.5 - 0.5 * 9.81 * poses[0] * poses[0], 1e-3) << "falling from where it starts";
@@ -255,41 +261,40 @@ TEST_F(ReplayRecorderTest, FreeObjectsMoveInTheFrames) {
   EXPECT_NEAR(crate_x(frames - 1), 2.0, 1e-3);
 }
 
-// A passive model of an SDF world (a dumbbell: two spheres on a fixed joint, a body each, welded)
-// is drawn from world.json's bodies and moved by the frames: each body starts where the file puts
-// it and lands (the spheres' centres 0.1 m up, 0.5 m apart).
+// A passive model of an SDF world (a box and an upright cylinder 0.5 m apart on a fixed joint, a
+// body each, welded) is drawn from world.json's bodies and moved by the frames: each body starts
+// where the file puts it and lands (both 0.2 m tall: their centres 0.1 m up).
 TEST_F(ReplayRecorderTest, PassiveModelsBodiesAreDrawnAndMoveInTheFrames) {
-  std::ofstream(dir_ / "dumbbell.world") << R"(<?xml version="1.0"?><sdf version="1.6"><world name="w">
+  std::ofstream(dir_ / "pair.world") << R"(<?xml version="1.0"?><sdf version="1.6"><world name="w">
     <model name="ground"><static>true</static><link name="l"><collision name="c"><geometry><plane><normal>0 0 1</normal>
       <size>20 20</size></plane></geometry></collision></link></model>
-    <model name="dumbbell"><pose>2 0 0.8 0 0 0</pose>
-      <link name="a"><inertial><mass>1</mass><inertia><ixx>0.004</ixx><iyy>0.004</iyy><izz>0.004</izz><ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial>
-        <collision name="c"><geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link>
-      <link name="b"><pose>0 0.5 0 0 0 0</pose><inertial><mass>1</mass><inertia><ixx>0.004</ixx><iyy>0.004</iyy><izz>0.004</izz><ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial>
-        <collision name="c"><geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link>
-      <joint name="bar" type="fixed"><parent>a</parent><child>b</child></joint>
+    <model name="pair"><pose>2 0 0.8 0 0 0</pose>
+      <link name="a"><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz><ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial>
+        <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link>
+      <link name="b"><pose>0 0.5 0 0 0 0</pose><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz><ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial>
+        <collision name="c"><geometry><cylinder><radius>0.1</radius><length>0.2</length></cylinder></geometry></collision></link>
+      <joint name="weld" type="fixed"><parent>a</parent><child>b</child></joint>
     </model>
   </world></sdf>)";
-  const ScenarioResult r = run("world: {name: dumbbell.world}\n");
+  const ScenarioResult r = run("world: {name: pair.world}\n");
   ASSERT_TRUE(r.completed) << r.error;
   const fs::path replay = dir_ / "out" / "replay";
   const nlohmann::json world = read_json(replay / "world.json");
   ASSERT_EQ(world["bodies"].size(), 2u) << world.dump();
-  for (std::size_t i = 0; i < 2; ++i) {
-    const nlohmann::json& body = world["bodies"][i];
-    EXPECT_EQ(body["name"], i == 0 ? "dumbbell::a" : "dumbbell::b");
-    ASSERT_EQ(body["shapes"].size(), 1u);
-    EXPECT_EQ(body["shapes"][0]["shape"], "sphere");
-    EXPECT_NEAR(body["shapes"][0]["size"][0].get<double>(), 0.2, 1e-12);
-  }
+  EXPECT_EQ(world["bodies"][0]["name"], "pair::a");
+  EXPECT_EQ(world["bodies"][1]["name"], "pair::b");
+  ASSERT_EQ(world["bodies"][0]["shapes"].size(), 1u);
+  ASSERT_EQ(world["bodies"][1]["shapes"].size(), 1u);
+  EXPECT_EQ(world["bodies"][0]["shapes"][0]["shape"], "box");
+  EXPECT_EQ(world["bodies"][0]["shapes"][0]["size"], (nlohmann::json{0.2, 0.2, 0.2}));
+  EXPECT_EQ(world["bodies"][1]["shapes"][0]["shape"], "cylinder");
+  EXPECT_EQ(world["bodies"][1]["shapes"][0]["size"], (nlohmann::json{0.2, 0.2, 0.2}));
   const nlohmann::json manifest = read_json(replay / "manifest.json");
-  ASSERT_EQ(manifest["objects"], (nlohmann::json{"dumbbell::a", "dumbbell::b"}));
+  ASSERT_EQ(manifest["objects"], (nlohmann::json{"pair::a", "pair::b"}));
   const std::size_t stride = manifest["poses"]["stride"];
   ASSERT_EQ(stride, 1u + 7u * (2u + 2u));
   const std::size_t frames = manifest["frames"];
-  std::vector<float> poses(frames * stride);
-  std::ifstream(replay / "poses.bin", std::ios::binary).read(reinterpret_cast<char*>(poses.data()),
-                                                             static_cast<std::streamsize>(poses.size() * sizeof(float)));
+  const std::vector<float> poses = read_poses(replay, frames, stride);
   for (std::size_t i = 0; i < 2; ++i) {
     const float* first = &poses[1 + 7 * (2 + i)];
     const float* last = &poses[(frames - 1) * stride + 1 + 7 * (2 + i)];
