@@ -362,27 +362,12 @@ void Physics::refresh_kinematics() const {
 }
 
 Pose Physics::link_pose(std::size_t link) const {
-  refresh_kinematics();
   const LinkInfo& info = model_->links()[link];
-  const mjData* d = data_->d;
-  const int b = info.body;
-  const Pose X_WB{{d->xpos[3 * b], d->xpos[3 * b + 1], d->xpos[3 * b + 2]},
-                  {d->xquat[4 * b], d->xquat[4 * b + 1], d->xquat[4 * b + 2], d->xquat[4 * b + 3]}};
-  return compose(X_WB, info.X_BL);
+  return compose(body_pose(info.body), info.X_BL);
 }
 
 Twist Physics::link_twist(std::size_t link) const {
-  refresh_kinematics();
-  const LinkInfo& info = model_->links()[link];
-  const mjData* d = data_->d;
-  mjtNum v[6];  // [angular; linear] at the body's centre of mass, world orientation
-  mj_objectVelocity(data_->m, d, mjOBJ_BODY, info.body, v, 0);
-  const Vec3 w{v[0], v[1], v[2]};
-  const Pose X_WL = link_pose(link);
-  const int b = info.body;
-  const Vec3 r{X_WL.position.x - d->xipos[3 * b], X_WL.position.y - d->xipos[3 * b + 1],
-               X_WL.position.z - d->xipos[3 * b + 2]};  // centre of mass -> link origin, world frame
-  return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
+  return point_twist(model_->links()[link].body, link_pose(link).position);
 }
 
 Pose Physics::body_pose(int b) const {
@@ -392,14 +377,15 @@ Pose Physics::body_pose(int b) const {
           {d->xquat[4 * b], d->xquat[4 * b + 1], d->xquat[4 * b + 2], d->xquat[4 * b + 3]}};
 }
 
-Twist Physics::body_twist(int b) const {
+Twist Physics::body_twist(int b) const { return point_twist(b, body_pose(b).position); }
+
+Twist Physics::point_twist(int b, const Vec3& p_W) const {
   refresh_kinematics();
   const mjData* d = data_->d;
   mjtNum v[6];  // [angular; linear] at the body's centre of mass, world orientation
   mj_objectVelocity(data_->m, d, mjOBJ_BODY, b, v, 0);
   const Vec3 w{v[0], v[1], v[2]};
-  const Vec3 r{d->xpos[3 * b] - d->xipos[3 * b], d->xpos[3 * b + 1] - d->xipos[3 * b + 1],
-               d->xpos[3 * b + 2] - d->xipos[3 * b + 2]};  // centre of mass -> body origin
+  const Vec3 r{p_W.x - d->xipos[3 * b], p_W.y - d->xipos[3 * b + 1], p_W.z - d->xipos[3 * b + 2]};  // centre of mass -> point
   return {{v[3] + w.y * r.z - w.z * r.y, v[4] + w.z * r.x - w.x * r.z, v[5] + w.x * r.y - w.y * r.x}, w};
 }
 

@@ -305,6 +305,8 @@ class Physics {
 
  private:
   void refresh_kinematics() const;
+  // The twist of the point p_W (world frame) moving with body b.
+  Twist point_twist(int b, const description::Vec3& p_W) const;
   void ensure_constants();
   void save_state();
   void restore_saved_state();

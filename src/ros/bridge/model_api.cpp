@@ -94,6 +94,11 @@ void SimBridge::link_states_now(std::vector<EntityState>& out) const {
 
 namespace {
 
+// The velocity of a point at r from a point moving at v, on a body turning at w: v + w x r.
+description::Vec3 carried(const description::Vec3& v, const description::Vec3& w, const description::Vec3& r) {
+  return {v.x + w.y * r.z - w.z * r.y, v.y + w.z * r.x - w.x * r.z, v.z + w.x * r.y - w.y * r.x};
+}
+
 EntityState world_model_state_of(const sim::Simulation& s, const std::vector<int>& bodies, std::size_t i) {
   const sim::World::ModelFrame& f = s.world().sdf_model_frames[i];
   EntityState out;
@@ -109,11 +114,26 @@ EntityState world_model_state_of(const sim::Simulation& s, const std::vector<int
   // The model frame's origin moves with the body: v_M = v_B + w x (p_M - p_B).
   const description::Vec3 r{out.pose.position.x - X_WB.position.x, out.pose.position.y - X_WB.position.y,
                              out.pose.position.z - X_WB.position.z};
-  const description::Vec3& w = v.angular;
-  out.linear = {v.linear.x + w.y * r.z - w.z * r.y, v.linear.y + w.z * r.x - w.x * r.z, v.linear.z + w.x * r.y - w.y * r.x};
-  out.angular = w;
+  out.linear = carried(v.linear, v.angular, r);
+  out.angular = v.angular;
   return out;
 }
+
+// A state the physics can take: finite, bounded, a nonzero quaternion (normalised into `unit`);
+// else why not.
+std::string unusable(const EntityState& state, EntityState& unit) {
+  if (!finite(state.pose) || !finite(state.linear) || !finite(state.angular)) return "the pose and twist must be finite";
+  if (!bounded(state.pose.position) || !bounded(state.linear) || !bounded(state.angular)) {
+    return "the pose and twist must be below 1e10 (m, m/s, rad/s) in magnitude";
+  }
+  const description::Quat& q = state.pose.orientation;
+  const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  if (norm < 1e-9) return "the orientation quaternion is zero";
+  unit = state;
+  unit.pose.orientation = {q.w / norm, q.x / norm, q.y / norm, q.z / norm};
+  return "";
+}
+
 
 }  // namespace
 
@@ -146,24 +166,6 @@ std::vector<std::string> SimBridge::stop_all_controllers_now() {
   return loaded;
 }
 
-namespace {
-
-// A state the physics can take: finite, bounded, a nonzero quaternion (normalised into `unit`);
-// else why not.
-std::string unusable(const EntityState& state, EntityState& unit) {
-  if (!finite(state.pose) || !finite(state.linear) || !finite(state.angular)) return "the pose and twist must be finite";
-  if (!bounded(state.pose.position) || !bounded(state.linear) || !bounded(state.angular)) {
-    return "the pose and twist must be below 1e10 (m, m/s, rad/s) in magnitude";
-  }
-  const description::Quat& q = state.pose.orientation;
-  const double norm = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-  if (norm < 1e-9) return "the orientation quaternion is zero";
-  unit = state;
-  unit.pose.orientation = {q.w / norm, q.x / norm, q.y / norm, q.z / norm};
-  return "";
-}
-
-}  // namespace
 
 BridgeResult SimBridge::set_world_model_state(std::size_t index, const EntityState& state) {
   EntityState unit;
@@ -177,10 +179,7 @@ BridgeResult SimBridge::set_world_model_state(std::size_t index, const EntitySta
     const description::Pose X_WB = physics::compose(unit.pose, physics::inverse(f.X_BM));
     const description::Vec3 r{X_WB.position.x - unit.pose.position.x, X_WB.position.y - unit.pose.position.y,
                               X_WB.position.z - unit.pose.position.z};
-    const description::Vec3& w = unit.angular;
-    const physics::Twist V{{unit.linear.x + w.y * r.z - w.z * r.y, unit.linear.y + w.z * r.x - w.x * r.z,
-                            unit.linear.z + w.x * r.y - w.y * r.x},
-                           w};
+    const physics::Twist V{carried(unit.linear, unit.angular, r), unit.angular};
     if (!s.physics().set_free_body_state(body, X_WB, V)) {
       return refuse("model '" + f.name + "' does not float freely (its root is jointed to the world)");
     }
