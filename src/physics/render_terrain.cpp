@@ -50,17 +50,15 @@ TerrainLod::TerrainLod(const mjModel* m) {
   }
 }
 
-std::vector<int> TerrainLod::choose(const CameraView& v, double pixels_per_cell, RenderStats& stats) const {
-  std::vector<int> out(tiles_.size(), -1);
+ViewFrustum::ViewFrustum(const CameraView& v) {
   const description::Quat& q = v.X_WC.orientation;
   const description::Vec3 ax[3] = {rotate(q, {1, 0, 0}), rotate(q, {0, 1, 0}), rotate(q, {0, 0, 1})};
   const double o[3] = {v.X_WC.position.x, v.X_WC.position.y, v.X_WC.position.z};
-  // Frustum planes in the camera frame, normals pointing inside: n . p + d >= 0.
+  // The planes in the camera's optical frame (x right, y down, z forward).
   const double xl = (-0.5 - v.cx) / v.fx, xr = (v.width - 0.5 - v.cx) / v.fx;
   const double yt = (-0.5 - v.cy) / v.fy, yb = (v.height - 0.5 - v.cy) / v.fy;
   const double planes_c[6][4] = {{1, 0, -xl, 0}, {-1, 0, xr, 0}, {0, 1, -yt, 0},
                                  {0, -1, yb, 0}, {0, 0, 1, -v.near}, {0, 0, -1, v.far}};
-  double planes[6][4];
   for (int p = 0; p < 6; ++p) {
     double nw[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a) {
@@ -69,22 +67,37 @@ std::vector<int> TerrainLod::choose(const CameraView& v, double pixels_per_cell,
       nw[1] += c * ax[a].y;
       nw[2] += c * ax[a].z;
     }
-    planes[p][0] = nw[0];
-    planes[p][1] = nw[1];
-    planes[p][2] = nw[2];
-    planes[p][3] = planes_c[p][3] - (nw[0] * o[0] + nw[1] * o[1] + nw[2] * o[2]);
+    // Unit normals, so that a plane's value at a point is its distance.
+    const double len = std::sqrt(nw[0] * nw[0] + nw[1] * nw[1] + nw[2] * nw[2]);
+    for (int a = 0; a < 3; ++a) planes_[p][a] = nw[a] / len;
+    planes_[p][3] = planes_c[p][3] / len - (planes_[p][0] * o[0] + planes_[p][1] * o[1] + planes_[p][2] * o[2]);
   }
+}
+
+bool ViewFrustum::outside_box(const double lo[3], const double hi[3]) const {
+  for (const auto& pl : planes_) {
+    // The box corner farthest along the plane's normal.
+    double best = pl[3];
+    for (int a = 0; a < 3; ++a) best += pl[a] * (pl[a] >= 0 ? hi[a] : lo[a]);
+    if (best < 0.0) return true;
+  }
+  return false;
+}
+
+bool ViewFrustum::outside_sphere(const float c[3], double r) const {
+  for (const auto& pl : planes_)
+    if (pl[0] * c[0] + pl[1] * c[1] + pl[2] * c[2] + pl[3] < -r) return true;
+  return false;
+}
+
+std::vector<int> TerrainLod::choose(const CameraView& v, double pixels_per_cell, RenderStats& stats) const {
+  std::vector<int> out(tiles_.size(), -1);
+  const ViewFrustum frustum(v);
+  const double o[3] = {v.X_WC.position.x, v.X_WC.position.y, v.X_WC.position.z};
   const double focal = std::max(v.fx, v.fy);
   for (std::size_t i = 0; i < tiles_.size(); ++i) {
     const Tile& t = tiles_[i];
-    bool outside = false;
-    for (int p = 0; p < 6 && !outside; ++p) {
-      // The box corner farthest along the plane's normal.
-      double best = planes[p][3];
-      for (int a = 0; a < 3; ++a) best += planes[p][a] * (planes[p][a] >= 0 ? t.hi[a] : t.lo[a]);
-      outside = best < 0.0;
-    }
-    if (outside) continue;
+    if (frustum.outside_box(t.lo, t.hi)) continue;
     double d2 = 0.0;
     for (int a = 0; a < 3; ++a) {
       const double c = std::clamp(o[a], t.lo[a], t.hi[a]);

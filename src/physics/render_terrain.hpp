@@ -12,6 +12,20 @@
 
 namespace mechsim::physics {
 
+// A view's frustum as six planes in the world frame (normals inside: n . p + d >= 0), from the
+// image's edges (u in [-0.5, w - 0.5], v in [-0.5, h - 0.5]) and the clip distances.
+class ViewFrustum {
+ public:
+  explicit ViewFrustum(const CameraView& view);
+  // Whether the world box [lo, hi] lies wholly outside (conservative: true means not seen).
+  bool outside_box(const double lo[3], const double hi[3]) const;
+  // Whether the sphere of radius r (m) about c (world frame) lies wholly outside one plane.
+  bool outside_sphere(const float c[3], double r) const;
+
+ private:
+  double planes_[6][4];
+};
+
 class TerrainLod {
  public:
   TerrainLod() = default;

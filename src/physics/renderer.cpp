@@ -156,9 +156,16 @@ RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb
   const std::vector<int> levels = r.lod.choose(view, settings_.terrain_pixels_per_cell, stats);
 
   // This view's geoms: ground colour, the terrain at the chosen levels (the collision height field
-  // only when there are no render tiles).
+  // only when there are no render tiles), none whose bounding sphere lies outside the frustum
+  // (Mesa transforms and clips every vertex it is given on the CPU: the CC8's meshes alone are
+  // 330 000 triangles, and a camera sees a few of its links at most).
+  const ViewFrustum frustum(view);
   int k = 0;
   for (const mjvGeom& g : r.geoms) {
+    if (g.modelrbound > 0.0f && frustum.outside_sphere(g.pos, g.modelrbound)) {
+      ++stats.culled;
+      continue;
+    }
     const int id = g.objtype == mjOBJ_GEOM ? g.objid : -1;
     if (id >= 0 && !r.lod.empty()) {
       if (id == r.terrain_geom) continue;

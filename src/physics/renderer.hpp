@@ -57,6 +57,7 @@ struct Frame {
 // What a render cost (for benchmarks and `mechsim bench`).
 struct RenderStats {
   int geoms = 0;          // geoms drawn
+  int culled = 0;         // geoms not drawn: their bounding spheres lie outside the view
   int terrain_tiles = 0;  // terrain tiles drawn (after culling)
   long terrain_cells = 0; // height field cells drawn (two triangles each)
 };

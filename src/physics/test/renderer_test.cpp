@@ -236,6 +236,41 @@ TEST_F(RendererTest, StereoDisparityMatchesTheBaseline) {
   RecordProperty("expected_px", std::to_string(expected));
 }
 
+// Geoms whose bounding spheres lie outside the view are not drawn (one behind the camera, one far
+// to its left), one straddling the image's edge is, and the image is the one of a world without
+// the two left out, pixel for pixel.
+TEST_F(RendererTest, GeomsOutsideTheViewAreLeftOutAndTheImageIsTheSame) {
+  const CameraView v = view({0, 0, 0}, 160, 120, 1.0);
+  const std::vector<WorldBox> seen = {box("front", {3, 0, 0}, {0.5, 0.5, 0.5}),
+                                      box("edge", {3, -1.5, 0}, {0.6, 0.6, 0.6})};
+  std::vector<WorldBox> all = seen;
+  all.push_back(box("behind", {-3, 0, 0}, {0.5, 0.5, 0.5}));
+  all.push_back(box("left", {3, 6, 0}, {0.5, 0.5, 0.5}));
+  auto draw = [&](const std::vector<WorldBox>& boxes, Frame& f) {
+    auto model = world(boxes);
+    RenderSettings s;
+    s.max_width = v.width;
+    s.max_height = v.height;
+    Renderer r(model, s);
+    Physics p(model);
+    r.update_scene(p);
+    return r.render(v, f, true, true);
+  };
+  Frame with_all, with_seen;
+  const RenderStats a = draw(all, with_all);
+  const RenderStats b = draw(seen, with_seen);
+  EXPECT_EQ(a.culled - b.culled, 2);
+  EXPECT_EQ(a.geoms, b.geoms);
+  EXPECT_TRUE(with_all.rgb == with_seen.rgb);
+  EXPECT_TRUE(with_all.depth == with_seen.depth);
+  // The edge box is drawn: its near face (x = 2.7) fills the rightmost column (world -y) somewhere.
+  const std::size_t w = static_cast<std::size_t>(v.width);
+  int edge_pixels = 0;
+  for (std::size_t row = 0; row < static_cast<std::size_t>(v.height); ++row)
+    edge_pixels += std::abs(with_all.depth[row * w + w - 1] - 2.7f) < 0.05f;
+  EXPECT_GT(edge_pixels, 10);
+}
+
 TEST_F(RendererTest, ImpossibleViewsAreErrors) {
   auto model = world({box("b", {3, 0, 0}, {1, 1, 1})});
   CameraView v = view({0, 0, 0}, 64, 48, 1.0);
