@@ -416,19 +416,22 @@ BodyPlan plan_passive(const WorldModel& model, const BuildOptions& options) {
     for (PlannedJoint& j : b.joints) {
       j.name = prefix + j.name;
       j.urdf_joint = prefix + j.urdf_joint;
-      j.one_dof_urdf = false;  // nothing drives it: no actuator
+      j.one_dof_urdf = j.one_dof_urdf && model.actuated;  // an object's: nothing drives it
     }
     for (PlannedGeom& g : b.geoms) {
       g.name = prefix + g.name;
       g.link = prefix + g.link;
-      g.wheel = g.narrow_wheel = false;  // the soil model acts on the robot's wheels only
+      // The soil model acts on the robot's wheels only; another robot's keep their shapes.
+      g.wheel = false;
+      g.narrow_wheel = g.narrow_wheel && model.actuated;
     }
   }
   for (PlannedGeom& g : p.world_geoms) {
     g.name = prefix + g.name;
     g.link = prefix + g.link;
     g.X_BG = compose(model.pose, g.X_BG);
-    g.wheel = g.narrow_wheel = false;
+    g.wheel = false;
+    g.narrow_wheel = g.narrow_wheel && model.actuated;
   }
   for (LinkFrame& f : p.link_frames) f.link = prefix + f.link;
   for (PlannedMimic& m : p.mimics) {
@@ -441,7 +444,10 @@ BodyPlan plan_passive(const WorldModel& model, const BuildOptions& options) {
   }
   for (std::string& w : p.warnings) w = "world model '" + model.name + "': " + w;
   p.differential.reset();
-  p.gravity_off_links.clear();
+  if (model.actuated)
+    for (std::string& link : p.gravity_off_links) link = prefix + link;
+  else
+    p.gravity_off_links.clear();
   return p;
 }
 
@@ -450,9 +456,14 @@ BodyPlan plan_passive(const WorldModel& model, const BuildOptions& options) {
 BodyPlan plan_bodies(const description::RobotModel& robot, const BuildOptions& options) {
   BodyPlan plan = Planner(robot, options).run();
   std::set<std::string> names;
+  int robots = 0;
   for (const WorldModel& model : options.world.models) {
     if (!names.insert(model.name).second) throw PhysicsError("world model '" + model.name + "': the name is used twice");
+    if (model.actuated && robots == kMaxActuatedModels)
+      throw PhysicsError("world model '" + model.name + "': one world holds at most " +
+                         std::to_string(kMaxActuatedModels + 1) + " robots");
     BodyPlan p = plan_passive(model, options);
+    if (model.actuated) p.robot_bit = 1 << (2 + robots++);
     plan.warnings.insert(plan.warnings.end(), p.warnings.begin(), p.warnings.end());
     p.warnings.clear();
     plan.passive.push_back(std::move(p));

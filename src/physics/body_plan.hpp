@@ -92,6 +92,9 @@ struct BodyPlan {
   // prefixed "<model>::" and their roots placed at the model's pose. No actuators are written
   // for their joints.
   std::vector<BodyPlan> passive;
+  // Set on a plan in `passive` of an actuated world model (another robot): its contact bit,
+  // 2^(2 + its index among the actuated models), and its one-DOF URDF joints keep their actuators.
+  int robot_bit = 0;
 };
 
 // Throws PhysicsError (physics/physics_error.hpp) on descriptions MuJoCo cannot represent.

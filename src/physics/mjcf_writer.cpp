@@ -134,13 +134,16 @@ class Writer {
       if (plan_.bodies[i].parent < 0) write_body(plan_, children_, i, 2);
     // The world's passive models after the robot (its root joint stays the model's first), their
     // geoms colliding as world objects do.
+    for (const BodyPlan& p : plan_.passive) other_robot_bits_ |= p.robot_bit;
     for (const BodyPlan& p : plan_.passive) {
       passive_ = true;
+      robot_bit_ = p.robot_bit;
       for (const PlannedGeom& g : p.world_geoms) write_geom(g, 2);
       const auto children = children_of(p);
       for (std::size_t i = 0; i < p.bodies.size(); ++i)
         if (p.bodies[i].parent < 0) write_body(p, children, i, 2);
       passive_ = false;
+      robot_bit_ = 0;
     }
     write_boxes();
     x_ << "  </worldbody>\n";
@@ -362,6 +365,13 @@ class Writer {
     if (g.visual) {
       x_ << " contype=\"0\" conaffinity=\"0\" group=\"1\"";
       if (g.rgba) x_ << " rgba=\"" << num((*g.rgba)[0]) << " " << num((*g.rgba)[1]) << " " << num((*g.rgba)[2]) << " " << num((*g.rgba)[3]) << "\"";
+    } else if (passive_ && robot_bit_ != 0) {
+      // Another robot's geoms (an actuated world model): its own bit, touching the world (bit 0),
+      // the first robot (bit 1) and the other robots; its own links as the first robot's do.
+      const int affinity = 1 | 2 | (other_robot_bits_ & ~robot_bit_) | (g.self_collide ? robot_bit_ : 0);
+      x_ << " contype=\"" << robot_bit_ << "\" conaffinity=\"" << affinity << "\" group=\"0\" priority=\"1\" friction=\""
+         << num(g.friction) << " " << num(options_.contact.torsional_friction) << " "
+         << num(options_.contact.rolling_friction) << "\"";
     } else if (passive_) {
       // A passive model's geoms are world objects (bit 0): they touch the ground, the robot,
       // other objects and each other (MuJoCo skips a body and its parent).
@@ -379,8 +389,13 @@ class Writer {
 
   void write_actuators() {
     bool any = false;
-    for (const PlannedBody& b : plan_.bodies)
-      for (const PlannedJoint& j : b.joints) {
+    std::vector<const PlannedBody*> bodies;
+    for (const PlannedBody& b : plan_.bodies) bodies.push_back(&b);
+    for (const BodyPlan& p : plan_.passive)
+      if (p.robot_bit != 0)
+        for (const PlannedBody& b : p.bodies) bodies.push_back(&b);
+    for (const PlannedBody* b : bodies)
+      for (const PlannedJoint& j : b->joints) {
         if (!j.one_dof_urdf) continue;
         if (!any) x_ << "  <actuator>\n";
         any = true;
@@ -401,6 +416,8 @@ class Writer {
   std::map<std::string, const MeshAsset*> usable_, all_;
   std::vector<std::vector<std::size_t>> children_;
   bool passive_ = false;  // writing a passive model's geoms
+  int robot_bit_ = 0;        // of the actuated model being written (BodyPlan::robot_bit), 0: none
+  int other_robot_bits_ = 0;  // every actuated model's bit
   std::ostringstream x_;
   MjcfDocument doc_;
 };

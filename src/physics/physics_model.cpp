@@ -223,15 +223,19 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     if (options.render_terrain) fill_terrain_tiles(*m, *options.world.terrain);
   }
 
-  // Joint table: every 1-DOF MuJoCo joint of the robot, in MuJoCo order (the world's passive
-  // models' joints are the world's, as its free objects' are).
+  // Joint table: every 1-DOF MuJoCo joint of the robot and of the other robots (actuated world
+  // models), in MuJoCo order (the passive models' joints are the world's, as its free objects'
+  // are).
   std::set<std::string> one_dof, passive;
   for (const PlannedBody& b : plan.bodies)
     for (const PlannedJoint& j : b.joints)
       if (j.one_dof_urdf) one_dof.insert(j.name);
   for (const BodyPlan& p : plan.passive)
     for (const PlannedBody& b : p.bodies)
-      for (const PlannedJoint& j : b.joints) passive.insert(j.name);
+      for (const PlannedJoint& j : b.joints) {
+        if (p.robot_bit == 0) passive.insert(j.name);
+        else if (j.one_dof_urdf) one_dof.insert(j.name);
+      }
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) continue;
     if (passive.count(mj_id2name(m, mjOBJ_JOINT, j))) continue;
@@ -255,14 +259,20 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
       }
     pm->joints_.push_back(std::move(info));
   }
-  for (const LinkFrame& f : plan.link_frames) {
-    LinkInfo info;
-    info.name = f.link;
-    info.body = f.body < 0 ? 0 : mj_name2id(m, mjOBJ_BODY, plan.bodies[f.body].name.c_str());
-    info.X_BL = f.X_BL;
-    if (f.body >= 0 && info.body < 0) throw PhysicsError("internal: body '" + plan.bodies[f.body].name + "' not compiled");
-    pm->links_.push_back(std::move(info));
-  }
+  // Link table: the robot's links, then the other robots' ("<model>::<link>").
+  const auto add_links = [&](const BodyPlan& p) {
+    for (const LinkFrame& f : p.link_frames) {
+      LinkInfo info;
+      info.name = f.link;
+      info.body = f.body < 0 ? 0 : mj_name2id(m, mjOBJ_BODY, p.bodies[f.body].name.c_str());
+      info.X_BL = f.X_BL;
+      if (f.body >= 0 && info.body < 0) throw PhysicsError("internal: body '" + p.bodies[f.body].name + "' not compiled");
+      pm->links_.push_back(std::move(info));
+    }
+  };
+  add_links(plan);
+  for (const BodyPlan& p : plan.passive)
+    if (p.robot_bit != 0) add_links(p);
   for (const PlannedBody& b : plan.bodies)
     for (const PlannedGeom& g : b.geoms) {
       const int geom = g.wheel ? mj_name2id(m, mjOBJ_GEOM, g.name.c_str()) : -1;
@@ -298,7 +308,9 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
       for (const PlannedGeom& g : b.geoms)
         if (!g.visual) add_shape(mj_name2id(m, mjOBJ_GEOM, g.name.c_str()));
   }
-  for (const std::string& link : plan.gravity_off_links) {
+  std::vector<std::string> gravity_off = plan.gravity_off_links;
+  for (const BodyPlan& p : plan.passive) gravity_off.insert(gravity_off.end(), p.gravity_off_links.begin(), p.gravity_off_links.end());
+  for (const std::string& link : gravity_off) {
     const int body = mj_name2id(m, mjOBJ_BODY, link.c_str());
     if (body <= 0) continue;
     pm->gravity_off_links_.push_back(link);

@@ -72,11 +72,24 @@ struct WorldBox {
 // no controllers); its joints keep their damping, friction and limits; its names in the MuJoCo
 // model are prefixed "<name>::". It collides with the world, the robot and its own links as a
 // world object does.
+//
+// `actuated`: another robot in the same world (Gazebo's second spawned model) rather than an
+// object. Its URDF joints get actuators and appear in PhysicsModel::joints() as
+// "<name>::<joint>" (effort, servo and motor commands as the robot's), its links in links() as
+// "<name>::<link>"; it collides with the world, the robot and the other robots, and its own links
+// touch each other only where the description's selfCollide says (as the robot's do). Its mimic
+// joints are constraints; the differential plugin's law and the soil model act on the first
+// robot only (an actuated model's wheels meet soil as rigid ground).
 struct WorldModel {
   std::string name;
   std::shared_ptr<const description::RobotModel> robot;
   description::Pose pose;  // X_W<root link> (for a root link `world`: of the description's world frame)
+  bool actuated = false;
 };
+
+// The most actuated world models one physics holds (one contact bit each, MuJoCo's masks are 32
+// bits, signed: the world's and the first robot's come first).
+inline constexpr int kMaxActuatedModels = 29;
 
 // The world the robot is placed in.
 struct WorldSpec {
@@ -86,7 +99,7 @@ struct WorldSpec {
   double gravity = 9.81;           // m/s^2 along -z of the world
   bool ground_plane = true;        // an infinite plane at z = 0 (Empty only)
   std::vector<WorldBox> boxes;     // objects in the world (any kind of world)
-  std::vector<WorldModel> models;  // passive articulated objects
+  std::vector<WorldModel> models;  // passive articulated objects and other robots (WorldModel)
 };
 
 // Where the robot starts: X_W<root> for a floating robot; for a robot whose root link is

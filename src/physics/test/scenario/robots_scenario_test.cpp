@@ -148,6 +148,115 @@ TEST(RobotsScenario, Cc8TrajectoriesAreBitIdentical) {
   EXPECT_GT(std::fabs(a.base_pose().position.x) + std::fabs(a.base_pose().position.y), 0.05);  // it drove
 }
 
+// Two CC8s in one MuJoCo model: the first as the robot, the second an actuated world model
+// "rover2" 4 m to its left (physics_options.hpp, WorldModel::actuated).
+std::shared_ptr<const PhysicsModel> two_cc8s(const description::Pose& X_W_rover2) {
+  BuildOptions o;
+  o.spawn.z = 0.05;
+  WorldModel second;
+  second.name = "rover2";
+  second.robot = std::make_shared<const description::RobotModel>(load("cc8.urdf"));
+  second.pose = X_W_rover2;
+  second.actuated = true;
+  o.world.models.push_back(second);
+  return PhysicsModel::build(load("cc8.urdf"), o);
+}
+
+const char* const kCc8Wheels[] = {"wheel_joint_FL", "wheel_joint_FR", "wheel_joint_ML",
+                                  "wheel_joint_MR", "wheel_joint_RL", "wheel_joint_RR"};
+
+// Each rover's wheels as velocity motors (Gazebo's joint motors) at `speed` rad/s, its steering
+// held straight.
+void drive(Physics& p, const std::string& prefix, double speed) {
+  for (const char* s : {"steering_FL", "steering_FR", "steering_RL", "steering_RR"}) {
+    const std::size_t j = *p.model().joint_index(prefix + s);
+    if (p.mode(j) != JointMode::Position) p.set_mode(j, JointMode::Position, {200.0, 10.0});
+    p.set_position_command(j, 0.0);
+  }
+  for (const char* w : kCc8Wheels) {
+    const std::size_t j = *p.model().joint_index(prefix + w);
+    if (p.mode(j) != JointMode::Velocity) p.set_mode(j, JointMode::Velocity, {0.0, 0.0, true});
+    p.set_velocity_command(j, speed);
+  }
+}
+
+// The second rover is built as the first: its joints and links are in the tables under its
+// prefix, with actuators; it comes to rest on its own six wheels as the first does (its links do
+// not collide with each other), and the two drive apart as their own commands say.
+TEST(RobotsScenario, TwoCc8sInOneModelRestAndDriveAsTheirOwnCommandsSay) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  auto model = two_cc8s({{0.0, 4.0, 0.05}, {1, 0, 0, 0}});
+  ASSERT_EQ(model->joints().size(), 28u);
+  for (const char* w : kCc8Wheels) {
+    const auto j = model->joint_index(std::string("rover2::") + w);
+    ASSERT_TRUE(j.has_value()) << w;
+    EXPECT_TRUE(model->joints()[*j].actuated);
+    EXPECT_TRUE(model->joints()[*j].urdf_one_dof);
+  }
+  const auto base1 = model->link_index("base_link"), base2 = model->link_index("rover2::base_link");
+  ASSERT_TRUE(base1 && base2);
+  EXPECT_THAT(model->mjcf(), ::testing::HasSubstr("joint1=\"rover2::rocker_joint_R\" joint2=\"rover2::rocker_joint_L\""));
+
+  Physics p(model);
+  drive(p, "", 0.0);
+  drive(p, "rover2::", 0.0);
+  while (p.time() < 3.0) ASSERT_TRUE(p.step().ok()) << "t = " << p.time();
+  std::vector<Contact> contacts;
+  p.contacts(contacts);
+  std::set<std::string> on_ground;
+  for (const Contact& c : contacts) {
+    EXPECT_TRUE(c.link_a == "ground" || c.link_b == "ground") << c.link_a << " touches " << c.link_b;
+    on_ground.insert(std::string(c.link_a == "ground" ? c.link_b : c.link_a));
+  }
+  std::set<std::string> wheels;
+  for (const char* prefix : {"", "rover2::"})
+    for (const char* w : {"wheel_FL_1", "wheel_FR_1", "wheel_ML_1", "wheel_MR_1", "wheel_RL_1", "wheel_RR_1"})
+      wheels.insert(std::string(prefix) + w);
+  EXPECT_EQ(on_ground, wheels);
+  const description::Pose rest1 = p.link_pose(*base1), rest2 = p.link_pose(*base2);
+  EXPECT_NEAR(rest1.position.z, rest2.position.z, 1e-4);
+  EXPECT_NEAR(rest2.position.y - rest1.position.y, 4.0, 1e-3);
+  EXPECT_LT(std::hypot(p.link_twist(*base2).linear.x, p.link_twist(*base2).linear.y), 0.01);
+
+  drive(p, "", 3.0);
+  drive(p, "rover2::", -3.0);
+  while (p.time() < 6.0) ASSERT_TRUE(p.step().ok()) << "t = " << p.time();
+  const double d1 = p.link_pose(*base1).position.x - rest1.position.x;
+  const double d2 = p.link_pose(*base2).position.x - rest2.position.x;
+  std::printf("two CC8s: first %.3f m, second %.3f m along x in 3 s\n", d1, d2);
+  EXPECT_GT(std::fabs(d1), 0.3);
+  EXPECT_NEAR(d2, -d1, 0.05 * std::fabs(d1));
+  EXPECT_NEAR(p.link_pose(*base2).position.y - p.link_pose(*base1).position.y, 4.0, 0.05);
+}
+
+// The second rover dropped onto the first from 30 cm lands on it (the CC8's collision shapes are
+// its wheels and its camera: on the first rover's wheels) and stays there, instead of falling
+// through to the ground; the first carries it on its own wheels.
+TEST(RobotsScenario, TwoCc8sInOneModelCollideWithEachOther) {
+  if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
+  auto model = two_cc8s({{0.0, 0.0, 0.35}, {1, 0, 0, 0}});
+  Physics p(model);
+  const std::size_t base1 = *model->link_index("base_link"), base2 = *model->link_index("rover2::base_link");
+  drive(p, "", 0.0);
+  drive(p, "rover2::", 0.0);
+  while (p.time() < 2.0) ASSERT_TRUE(p.step().ok()) << "t = " << p.time();
+  std::vector<Contact> contacts;
+  p.contacts(contacts);
+  std::set<std::string> first_touches_second, second_on_ground;
+  for (const Contact& c : contacts) {
+    const bool a2 = c.link_a.rfind("rover2::", 0) == 0, b2 = c.link_b.rfind("rover2::", 0) == 0;
+    if (a2 != b2 && c.link_a != "ground" && c.link_b != "ground")
+      first_touches_second.insert(std::string(a2 ? c.link_b : c.link_a));
+    if ((a2 && c.link_b == "ground") || (b2 && c.link_a == "ground")) second_on_ground.insert("x");
+  }
+  const double z1 = p.link_pose(base1).position.z, z2 = p.link_pose(base2).position.z;
+  std::printf("second CC8 dropped on the first: bases at z %.3f and %.3f m, %zu links of the first touch it\n", z1,
+              z2, first_touches_second.size());
+  EXPECT_FALSE(first_touches_second.empty());
+  EXPECT_TRUE(second_on_ground.empty());
+  EXPECT_GT(z2 - z1, 0.1);
+}
+
 TEST(RobotsScenario, Pr2BuildsWithItsDaeMeshesAndSteps) {
   if (!shared_present()) GTEST_SKIP() << "shared data folder absent: " << kShared;
   BuildOptions o;
