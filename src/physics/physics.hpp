@@ -203,6 +203,9 @@ class Physics {
   // the state (no kinematics pass: cheap enough for every tick). False when the robot is fixed to
   // the world.
   bool root_state(description::Pose& X_WB, Twist& V_WB) const noexcept;
+  // The same for any link whose body floats on a free joint of its own (another robot's root,
+  // "<model>::<root>"): false, changing nothing, for one that does not. Hot path.
+  bool free_link_state(std::size_t link, description::Pose& X_WL, Twist& V_WL) const noexcept;
   // Sets the floating root link's velocity (world frame, at B's origin) for the next step, as
   // Gazebo's Model::SetLinearVel/SetAngularVel: gravity, contacts and joints act from there within
   // the step. Hot path (no allocation); ignored when the robot is fixed to the world.

@@ -34,22 +34,40 @@ void Physics::set_effort_limit(std::size_t j, double limit) noexcept {
   m->actuator_forcerange[2 * info.actuator + 1] = bound;
 }
 
-bool Physics::root_state(Pose& X_WB, Twist& V_WB) const noexcept {
-  find_root(*model_, *data_);
-  const mjModel* m = data_->m;
-  const int j = data_->root_free_joint;
-  if (j < 0) return false;
-  const mjtNum* q = data_->d->qpos + m->jnt_qposadr[j];
-  const mjtNum* v = data_->d->qvel + m->jnt_dofadr[j];
+namespace {
+
+// The state of the link at X_BodyL in a body floating on free joint j.
+void free_joint_state(const mjModel* m, const mjData* d, int j, const Pose& X_BodyL, Pose& X_WL, Twist& V_WL) {
+  const mjtNum* q = d->qpos + m->jnt_qposadr[j];
+  const mjtNum* v = d->qvel + m->jnt_dofadr[j];
   const Pose X_WBody{{q[0], q[1], q[2]}, quat_normalized(Quat{q[3], q[4], q[5], q[6]})};
-  const Pose& X_BodyL = data_->X_BodyRoot;
-  X_WB = compose(X_WBody, X_BodyL);
+  X_WL = compose(X_WBody, X_BodyL);
   // MuJoCo's free joint: the body origin's velocity in W, the angular velocity in the body frame.
   const Vec3 w = rotate(X_WBody.orientation, Vec3{v[3], v[4], v[5]});
   const Vec3 r = rotate(X_WBody.orientation, X_BodyL.position);  // body origin -> link origin, W
   const Vec3 wr = cross(w, r);
-  V_WB.linear = {v[0] + wr.x, v[1] + wr.y, v[2] + wr.z};
-  V_WB.angular = w;
+  V_WL.linear = {v[0] + wr.x, v[1] + wr.y, v[2] + wr.z};
+  V_WL.angular = w;
+}
+
+}  // namespace
+
+bool Physics::root_state(Pose& X_WB, Twist& V_WB) const noexcept {
+  find_root(*model_, *data_);
+  const int j = data_->root_free_joint;
+  if (j < 0) return false;
+  free_joint_state(data_->m, data_->d, j, data_->X_BodyRoot, X_WB, V_WB);
+  return true;
+}
+
+bool Physics::free_link_state(std::size_t link, Pose& X_WL, Twist& V_WL) const noexcept {
+  const mjModel* m = data_->m;
+  if (link >= model_->links().size()) return false;
+  const LinkInfo& info = model_->links()[link];
+  if (info.body < 1 || m->body_jntnum[info.body] < 1) return false;
+  const int j = m->body_jntadr[info.body];
+  if (m->jnt_type[j] != mjJNT_FREE) return false;
+  free_joint_state(m, data_->d, j, info.X_BL, X_WL, V_WL);
   return true;
 }
 

@@ -27,7 +27,8 @@ namespace {
 
 using mechanism::HardwareInterface;
 
-physics::BuildOptions build_options(const World& world, const SimulationOptions& options) {
+physics::BuildOptions build_options(const World& world, const SimulationOptions& options,
+                                    const std::vector<OtherRobot>& others) {
   physics::BuildOptions b;
   b.timestep = options.period;
   b.integrator = options.integrator;
@@ -37,6 +38,18 @@ physics::BuildOptions build_options(const World& world, const SimulationOptions&
   b.arena = options.arena;
   b.arena_overflow = options.arena_overflow;
   if (world.spec.terrain) b.spawn.z += physics::height_at(*world.spec.terrain, b.spawn.x, b.spawn.y);
+  for (const OtherRobot& o : others) {
+    if (o.name.empty() || o.name.find("::") != std::string::npos)
+      throw std::invalid_argument("other robot '" + o.name + "': a robot's name must be non-empty, without '::'");
+    physics::WorldModel m;
+    m.name = o.name;
+    m.robot = std::make_shared<const description::RobotModel>(o.robot);
+    const physics::SpawnPose& at = o.spawn;
+    const double ground = world.spec.terrain ? physics::height_at(*world.spec.terrain, at.x, at.y) : 0.0;
+    m.pose = {{at.x, at.y, at.z + ground}, physics::quat_from_rpy(at.roll, at.pitch, at.yaw)};
+    m.actuated = true;
+    b.world.models.push_back(std::move(m));
+  }
   return b;
 }
 
@@ -73,7 +86,7 @@ control::ControlResult Simulation::load_controller(const std::string& name) {
 }
 
 Simulation::Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
-                       SimulationOptions options)
+                       SimulationOptions options, std::vector<OtherRobot> others)
     : robot_(std::move(robot)), world_(world), options_(std::move(options)) {
   if (!(options_.period > 0.0) || options_.period > 0.1) {
     throw std::invalid_argument("simulation period must be in (0, 0.1] s, got " + std::to_string(options_.period));
@@ -85,15 +98,59 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   if (!(options_.real_time_factor >= 0.0)) {
     throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
   }
-  physics_model_ = physics::PhysicsModel::build(robot_, build_options(world_, options_));
+  const physics::BuildOptions build = build_options(world_, options_, others);
+  physics_model_ = physics::PhysicsModel::build(robot_, build);
   startup_times_.mjcf = physics_model_->build_times().mjcf;
   startup_times_.compile = physics_model_->build_times().compile;
   physics::StageTimer timer;
-  physics_ = std::make_unique<physics::Physics>(physics_model_);
+  physics_ = std::make_shared<physics::Physics>(physics_model_);
   physics_->set_soil(world_.soil);
   startup_times_.data = timer.lap();
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
+  floating_ = !physics_model_->fixed_to_world();
   spawn_pose_ = physics_->base_pose();
+  startup_times_.mechanism = timer.lap();
+  build_robot(std::move(controller_params), build);
+  for (OtherRobot& o : others) others_.push_back(std::unique_ptr<Simulation>(new Simulation(*this, std::move(o))));
+}
+
+Simulation::Simulation(Simulation& host, OtherRobot other)
+    : robot_(std::move(other.robot)),
+      name_(std::move(other.name)),
+      prefix_(name_ + "::"),
+      host_(&host),
+      world_(host.world_),
+      options_(host.options_) {
+  options_.spawn = other.spawn;
+  options_.initial_joints = std::move(other.initial_joints);
+  options_.parameter_root = std::move(other.parameter_root);
+  options_.settle_on_ground = false;
+  options_.sensors = false;
+  ticks_ = host.ticks_;
+  physics_model_ = host.physics_model_;
+  physics_ = host.physics_;
+  root_link_ = physics_model_->link_index(prefix_ + robot_.root_link);
+  if (!root_link_) throw std::logic_error("other robot '" + name_ + "': its root link is not in the physics");
+  physics::Twist V;
+  floating_ = physics_->free_link_state(*root_link_, spawn_pose_, V);
+  spawn_pose_ = physics_->link_pose(*root_link_);
+  physics::StageTimer timer;
+  startup_times_.mechanism = timer.lap();
+  build_robot(std::move(other.controllers), {});
+}
+
+description::Pose Simulation::base_pose() const {
+  return root_link_ ? physics_->link_pose(*root_link_) : physics_->base_pose();
+}
+
+Simulation* Simulation::find_other(const std::string& name) {
+  for (const auto& o : others_)
+    if (o->name_ == name) return o.get();
+  return nullptr;
+}
+
+void Simulation::build_robot(control::Params controller_params, const physics::BuildOptions& build) {
+  physics::StageTimer timer;
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
   // The model plugins' controllers; the joints they drive or read join the mechanism.
   std::vector<control::ModelPluginBuild> plugins =
@@ -103,7 +160,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     if (!status.simulated()) plugin_notes_.push_back(control::describe(status));
   }
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
-  mechanism_state_->base.floating = !physics_model_->fixed_to_world();
+  mechanism_state_->base.floating = floating_;
   fill_description_params(controller_params, robot_);
   // gazebo_ros_control's plugin element: its pid_gains (read now, as DefaultRobotHWSim reads them
   // at load) and a RobotHWSim mechsim cannot load.
@@ -144,7 +201,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   effort_scale_.assign(n, 1.0);
   for (std::size_t j = 0; j < n; ++j) {
     const std::string& name = mechanism_->joints[j].name;
-    if (auto p = physics_model_->joint_index(name); p && physics_model_->joints()[*p].actuated) {
+    if (auto p = physics_model_->joint_index(prefix_ + name); p && physics_model_->joints()[*p].actuated) {
       physics_joint_[j] = static_cast<int>(*p);
       commanded_[j] = mechanism::physics_applies_command(mechanism_->joints[j]);
     }
@@ -212,12 +269,12 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   read_physics();
   add_model_plugins(plugins);
   make_velocity_motors();
-  notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
-  startup_times_.mechanism = timer.lap();
+  if (host_ == nullptr) notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
+  startup_times_.mechanism += timer.lap();
   if (options_.sensors) {
     sensors::RenderModelFactory render_model;
     if (has_cameras(robot_) && world_.spec.terrain) {
-      render_model = [robot = robot_, b = build_options(world_, options_)]() mutable {
+      render_model = [robot = robot_, b = build]() mutable {
         b.render_terrain = true;
         return physics::PhysicsModel::build(robot, b);
       };
@@ -250,7 +307,7 @@ void Simulation::settle_on_ground() {
 
 void Simulation::apply_initial_joints() {
   for (const auto& [joint, position] : options_.initial_joints) {
-    const auto j = physics_model_->joint_index(joint);
+    const auto j = physics_model_->joint_index(prefix_ + joint);
     if (!j) throw std::invalid_argument("spawn/joints/" + joint + ": the robot's physics has no joint '" + joint + "'");
     if (!std::isfinite(position)) throw std::invalid_argument("spawn/joints/" + joint + ": position must be finite");
     physics_->set_joint_state(*j, position);
@@ -305,8 +362,12 @@ void Simulation::make_velocity_motors() {
 }
 
 void Simulation::apply_requests() {
-  if (reset_requested_.exchange(false)) reset();
+  bool reset_asked = reset_requested_.exchange(false);
+  for (const auto& o : others_) reset_asked = o->reset_requested_.exchange(false) || reset_asked;
+  if (reset_asked) reset();
   if (have_commands_.load(std::memory_order_acquire)) run_commands();
+  for (const auto& o : others_)
+    if (o->have_commands_.load(std::memory_order_acquire)) o->run_commands();
 }
 
 void Simulation::post(Command command) {
@@ -351,8 +412,7 @@ void Simulation::state_changed() {
   sensor_handles_.fill(sensors_);
 }
 
-TickResult Simulation::step() {
-  apply_requests();
+void Simulation::control_phase() {
   read_physics();
   const bool e_stop = e_stop_requested_.load(std::memory_order_acquire);
   if (e_stop && !e_stop_) {
@@ -365,10 +425,28 @@ TickResult Simulation::step() {
     restart_controllers_ = false;
   }
   write_physics();
+}
+
+void Simulation::sense_phase() {
+  // The mechanism state describes the new time() for observers and callers between ticks (the
+  // read at the start of the next tick repeats it, for writes to the physics in between).
+  read_physics();
+  sensors_.sample_due(*physics_, time());
+  sensor_handles_.fill(sensors_);
+}
+
+TickResult Simulation::step() {
+  if (host_ != nullptr) throw std::logic_error("robot '" + name_ + "' ticks with the simulation that holds it");
+  apply_requests();
+  control_phase();
+  for (const auto& o : others_) o->control_phase();
   if (external_.active()) external_.apply(*physics_, time());
   for (const Observer& observer : control_observers_) observer(*this);
+  for (const auto& o : others_)
+    for (const Observer& observer : o->control_observers_) observer(*o);
   const physics::StepStatus status = physics_->step();
   ++ticks_;
+  for (const auto& o : others_) o->ticks_ = ticks_;
   while (notice_ticks_.size() < physics_->notices().size()) notice_ticks_.push_back(ticks_);
   if (!status.ok()) {
     ++divergences_;
@@ -384,16 +462,16 @@ TickResult Simulation::step() {
     }
     return result;
   }
-  // The mechanism state describes the new time() for observers and callers between ticks (the
-  // read at the start of the next tick repeats it, for writes to the physics in between).
-  read_physics();
-  sensors_.sample_due(*physics_, time());
-  sensor_handles_.fill(sensors_);
+  sense_phase();
+  for (const auto& o : others_) o->sense_phase();
   for (const Observer& observer : observers_) observer(*this);
+  for (const auto& o : others_)
+    for (const Observer& observer : o->observers_) observer(*o);
   return {};
 }
 
 TickResult Simulation::run_for(double duration) {
+  if (host_ != nullptr) throw std::logic_error("robot '" + name_ + "' ticks with the simulation that holds it");
   using Clock = std::chrono::steady_clock;
   const std::uint64_t target = ticks_ + static_cast<std::uint64_t>(duration / options_.period + 0.5);
   const auto wall_start = Clock::now();
@@ -445,8 +523,17 @@ void Simulation::pace() {
 }
 
 void Simulation::reset() {
+  if (host_ != nullptr) {
+    host_->reset();
+    return;
+  }
   physics_->reset();
   external_.clear();
+  reset_robot();
+  for (const auto& o : others_) o->reset_robot();
+}
+
+void Simulation::reset_robot() {
   apply_initial_joints();
   for (std::size_t j = 0; j < physics_mode_.size(); ++j) physics_mode_[j] = HardwareInterface::Effort;
   pid_drive_.reset();
@@ -455,7 +542,7 @@ void Simulation::reset() {
   e_stop_ = false;
   restart_controllers_ = false;
   mechanism::MechanismState fresh = mechanism::make_state(*mechanism_);
-  fresh.base.floating = !physics_model_->fixed_to_world();
+  fresh.base.floating = floating_;
   *mechanism_state_ = fresh;
   // Every joint back to its own effort bound (the restarted plugins set theirs again).
   for (std::size_t j = 0; j < physics_joint_.size(); ++j) {

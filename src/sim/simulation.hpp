@@ -110,6 +110,21 @@ struct SimulationOptions {
   std::uint64_t sensor_seed = 1;
 };
 
+// Another robot in the same world (Gazebo's second spawned model): the simulation that holds it
+// ticks it with its own robot, around the one physics step (Simulation::other()). Its names in
+// the physics are "<name>::<joint>", "<name>::<link>" (physics::WorldModel::actuated).
+struct OtherRobot {
+  std::string name;  // unique in the world, the robot's namespace; no "::" in it
+  description::RobotModel robot;
+  // Its controllers' parameters (the namespace holding them, as for the first robot) and the
+  // tree gazebo_ros_control's pid_gains are looked up in (none: the controller parameters).
+  control::Params controllers;
+  std::optional<control::Params> parameter_root;
+  physics::SpawnPose spawn;  // X_W<root>; on terrain, z from the ground under (x, y)
+  // Initial joint positions by the robot's own joint names (spawn_model -J).
+  std::map<std::string, double> initial_joints;
+};
+
 // Wall-clock seconds the paced simulation may fall behind its anchor before it gives up
 // catching up (a stalled process, a debugger, a slower-than-real-time model).
 inline constexpr double kMaxPaceLag = 0.25;
@@ -132,8 +147,11 @@ class Simulation {
   // `controller_params` (the namespace holding the controllers, e.g. the `cc8` map of a YAML).
   // Throws on a description the physics, the mechanism or its model plugins cannot build (a model
   // plugin's error names its file, line and plugin).
+  // `others`: more robots in the same world, each with its own mechanism, controller manager and
+  // model plugins (other()); they collide with this robot and each other. Their sensors are not
+  // simulated, and they are not settled on a slope.
   Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
-             SimulationOptions options = {});
+             SimulationOptions options = {}, std::vector<OtherRobot> others = {});
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -184,6 +202,21 @@ class Simulation {
     options_.real_time_factor = factor;
     pace_anchored_ = false;
   }
+
+  // The other robots of the world (OtherRobot), in the order given. Each is a Simulation of its
+  // own robot over the shared physics: its mechanism, controllers, state_changed() and posted
+  // commands are its own; time, pause, reset and stepping are this simulation's (its step() and
+  // run_for() throw std::logic_error; its reset() and request_reset() reset the whole world).
+  std::size_t other_count() const { return others_.size(); }
+  Simulation& other(std::size_t i) { return *others_.at(i); }
+  const Simulation& other(std::size_t i) const { return *others_.at(i); }
+  Simulation* find_other(const std::string& name);
+  // "" for the first robot; an other robot's name.
+  const std::string& robot_name_in_world() const { return name_; }
+  // The physics' name of this robot's joint or link `name` ("<name>::<name>" for an other robot).
+  std::string physics_name(const std::string& name) const { return prefix_ + name; }
+  // X_W<root link> now.
+  description::Pose base_pose() const;
 
   const description::RobotModel& robot() const { return robot_; }
   const World& world() const { return world_; }
@@ -256,6 +289,17 @@ class Simulation {
   void load_and_start(const std::vector<std::string>& controllers);
 
  private:
+  // An other robot of `host`'s world (`host`'s physics already holds it).
+  Simulation(Simulation& host, OtherRobot other);
+  // The robot's mechanism, controller manager, model plugins and sensors over the physics.
+  // `build`: the physics' build options (a camera's render model is built from them).
+  void build_robot(control::Params controller_params, const physics::BuildOptions& build);
+  // The tick's steps 1-3 (state read, controllers, commands written) and step 5's state read and
+  // sensors, for this robot.
+  void control_phase();
+  void sense_phase();
+  // reset() for this robot, after the physics was reset.
+  void reset_robot();
   void read_physics();
   void write_physics();
   void add_model_plugins(std::vector<control::ModelPluginBuild>& plugins);
@@ -265,11 +309,16 @@ class Simulation {
   void settle_on_ground();
 
   description::RobotModel robot_;
+  std::string name_, prefix_;       // an other robot's name and "<name>::"; "" for the first
+  Simulation* host_ = nullptr;      // an other robot's: the simulation that ticks it
+  std::optional<std::size_t> root_link_;  // an other robot's root link in the physics
+  bool floating_ = false;           // the root floats (not fixed to the world)
+  std::vector<std::unique_ptr<Simulation>> others_;
   World world_;
   SimulationOptions options_;
   description::Pose spawn_pose_;
   std::shared_ptr<const physics::PhysicsModel> physics_model_;
-  std::unique_ptr<physics::Physics> physics_;
+  std::shared_ptr<physics::Physics> physics_;  // shared with the other robots
   std::unique_ptr<mechanism::MechanismModel> mechanism_;
   std::unique_ptr<mechanism::MechanismState> mechanism_state_;
   std::unique_ptr<control::ControllerManager> manager_;

@@ -27,7 +27,8 @@ void Simulation::read_physics() {
   mechanism::MechanismState& state = *mechanism_state_;
   if (state.base.floating) {
     physics::Twist V_WB;
-    state.base.floating = physics_->root_state(state.base.X_WB, V_WB);
+    state.base.floating = root_link_ ? physics_->free_link_state(*root_link_, state.base.X_WB, V_WB)
+                                     : physics_->root_state(state.base.X_WB, V_WB);
     state.base.linear = V_WB.linear;
     state.base.angular = V_WB.angular;
   }
@@ -107,7 +108,8 @@ void Simulation::write_physics() {
       case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
     }
   }
-  if (state.base_command.active) {
+  // (An other robot's base velocity plugins are not simulated yet: only the first robot's root.)
+  if (state.base_command.active && !root_link_) {
     const mechanism::BaseVelocityCommand& c = state.base_command;
     physics_->command_root_velocity(physics::Twist{{c.vx, c.vy, 0.0}, {0.0, 0.0, c.wz}});
   }

@@ -1,0 +1,198 @@
+// Several robots in one world (OtherRobot): two CC8s, each with its own controller manager and
+// rover drive, driven with different twists; each one's odometry follows its own motion, and the
+// first drives as it does alone.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "controllers/drive/rover_drive_ports.hpp"
+#include "control/ports.hpp"
+#include "sim/simulation.hpp"
+#include "sim/test/scenario/scenario_util.hpp"
+
+namespace mechsim::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kPi = 3.14159265358979323846;
+
+template <class P>
+P* port_of(Simulation& sim, const std::string& controller, control::PortKind kind) {
+  control::Controller* c = sim.controllers().controller(controller);
+  if (c == nullptr) return nullptr;
+  for (control::Port* p : c->ports())
+    if (p->kind() == kind) return dynamic_cast<P*>(p);
+  return nullptr;
+}
+
+double yaw_of(const description::Quat& q) {
+  return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+}
+
+struct Drive {
+  double distance = 0.0;       // m, path length of the base in the world
+  double odometry_error = 0.0; // m, odometry's position against the base's, in the start frame
+  double yaw_error = 0.0;      // rad
+  description::Pose final_pose;
+};
+
+// Runs `seconds` with `twist` held on `sim`'s rover drive (already started); the odometry against
+// the base's motion from where the drive started.
+struct Tracker {
+  Simulation* sim = nullptr;
+  description::Pose start, last;
+  double distance = 0.0;
+  void begin(Simulation& s) {
+    sim = &s;
+    start = last = s.base_pose();
+  }
+  void observe() {
+    const description::Pose now = sim->base_pose();
+    distance += std::hypot(now.position.x - last.position.x, now.position.y - last.position.y);
+    last = now;
+  }
+  Drive result() {
+    auto* odom = port_of<control::StatePort<control::OdometrySnapshot>>(*sim, "rover_drive_controller",
+                                                                      control::PortKind::Odometry);
+    Drive d;
+    d.distance = distance;
+    d.final_pose = last;
+    if (odom == nullptr) return d;
+    const control::OdometrySnapshot o = odom->read();
+    const double yaw0 = yaw_of(start.orientation);
+    const double dx = last.position.x - start.position.x, dy = last.position.y - start.position.y;
+    // The base's displacement in the start frame (the odometry's frame).
+    const double fx = std::cos(yaw0) * dx + std::sin(yaw0) * dy, fy = -std::sin(yaw0) * dx + std::cos(yaw0) * dy;
+    d.odometry_error = std::hypot(o.x - fx, o.y - fy);
+    d.yaw_error = std::remainder(o.yaw - (yaw_of(last.orientation) - yaw0), 2 * kPi);
+    return d;
+  }
+};
+
+// Holds a twist on the robot's rover drive: written again every tick, as a teleop node streams
+// cmd_vel within the drive's command timeout.
+void command(Simulation& sim, double vx, double wz) {
+  auto* port = port_of<control::TwistCommandPort>(sim, "rover_drive_controller", control::PortKind::TwistCommand);
+  ASSERT_NE(port, nullptr);
+  control::Twist t;
+  t.linear.x = vx;
+  t.angular.z = wz;
+  sim.add_control_observer([port, t](const Simulation&) { port->write(t); });
+}
+
+const std::vector<std::string> kDrive = {"joint_state_controller", "rover_drive_controller"};
+
+// mechsim's CC8 controllers (robots/cc8/config), which add the rover drive to the package's own.
+control::Params drive_params() {
+  return control::Params::from_yaml_file(std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/config/controllers.yaml").child("cc8");
+}
+
+TEST(SeveralRobots, TwoCc8sDriveTheirOwnTwistsAndTheirOdometriesFollow) {
+  const fs::path shared = MECHSIM_SHARED_DIR;
+  if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
+  SimulationOptions options;
+  options.integrator = cc8_test_integrator();
+  options.spawn.z = 0.02;
+
+  // The first CC8 alone, for its figures undisturbed.
+  Drive alone;
+  {
+    Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options);
+    sim.load_and_start(kDrive);
+    ASSERT_TRUE(sim.run_for(1.0));
+    Tracker t;
+    t.begin(sim);
+    sim.add_observer([&](const Simulation&) { t.observe(); });
+    command(sim, 0.3, 0.0);
+    ASSERT_TRUE(sim.run_for(10.0));
+    alone = t.result();
+  }
+
+  OtherRobot second;
+  second.name = "cc8_2";
+  second.robot = load_shared_cc8(shared);
+  second.controllers = drive_params();
+  second.spawn.y = 4.0;
+  second.spawn.z = 0.02;
+  second.spawn.yaw = kPi / 2;
+  Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options, {second});
+  ASSERT_EQ(sim.other_count(), 1u);
+  Simulation* two = sim.find_other("cc8_2");
+  ASSERT_NE(two, nullptr);
+  EXPECT_EQ(two->robot_name_in_world(), "cc8_2");
+  EXPECT_EQ(two->mechanism().joints.size(), sim.mechanism().joints.size());
+  EXPECT_THROW(two->run_for(0.1), std::logic_error);
+  sim.load_and_start(kDrive);
+  two->load_and_start(kDrive);
+  ASSERT_TRUE(sim.run_for(1.0));
+  EXPECT_NEAR(two->time(), sim.time(), 1e-12);
+  const description::Pose spawned2 = two->base_pose();
+  EXPECT_NEAR(spawned2.position.x, 0.0, 0.02);
+  EXPECT_NEAR(spawned2.position.y, 4.0, 0.02);
+  EXPECT_NEAR(yaw_of(spawned2.orientation), kPi / 2, 0.02);
+
+  Tracker t1, t2;
+  t1.begin(sim);
+  t2.begin(*two);
+  sim.add_observer([&](const Simulation&) { t1.observe(); });
+  two->add_observer([&](const Simulation&) { t2.observe(); });
+  command(sim, 0.3, 0.0);    // straight on along world +x
+  command(*two, 0.2, 0.1);   // an arc to its left, starting along world +y
+  ASSERT_TRUE(sim.run_for(10.0));
+  const Drive d1 = t1.result(), d2 = t2.result();
+  std::cout << "[ figures  ] first CC8: " << d1.distance << " m (alone " << alone.distance << " m), odometry error "
+            << d1.odometry_error << " m, yaw " << d1.yaw_error << " rad; second: " << d2.distance
+            << " m, odometry error " << d2.odometry_error << " m, yaw " << d2.yaw_error << " rad, heading turned "
+            << std::remainder(yaw_of(d2.final_pose.orientation) - kPi / 2, 2 * kPi) << " rad\n";
+  // Each drove what it was told: ~3 m straight; ~2 m turning ~1 rad to the left.
+  EXPECT_NEAR(d1.distance, 3.0, 0.3);
+  EXPECT_NEAR(d2.distance, 2.0, 0.3);
+  EXPECT_NEAR(std::remainder(yaw_of(d2.final_pose.orientation) - kPi / 2, 2 * kPi), 1.0, 0.2);
+  EXPECT_LT(std::abs(yaw_of(d1.final_pose.orientation)), 0.05);
+  // Each odometry follows its own robot within 3 % of the distance (the CC8's crab tolerance).
+  EXPECT_LT(d1.odometry_error, 0.03 * d1.distance);
+  EXPECT_LT(d2.odometry_error, 0.03 * d2.distance);
+  EXPECT_LT(std::abs(d1.yaw_error), 0.05);
+  EXPECT_LT(std::abs(d2.yaw_error), 0.05);
+  // The first drove as it does alone.
+  EXPECT_NEAR(d1.final_pose.position.x, alone.final_pose.position.x, 0.01);
+  EXPECT_NEAR(d1.final_pose.position.y, alone.final_pose.position.y, 0.01);
+
+  // A world reset puts both back where they spawned; time goes on.
+  const double before = sim.time();
+  sim.reset();
+  EXPECT_NEAR(sim.time(), before, 1e-12);
+  EXPECT_NEAR(two->base_pose().position.y, 4.0, 0.05);
+  EXPECT_NEAR(two->base_pose().position.x, 0.0, 0.05);
+  EXPECT_NEAR(sim.base_pose().position.x, 0.0, 0.05);
+}
+
+// A second robot whose name cannot be a namespace, or clashes with another's, is an error naming it.
+TEST(SeveralRobots, BadNamesAreErrors) {
+  const fs::path shared = MECHSIM_SHARED_DIR;
+  if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
+  for (const std::vector<std::string>& names : std::vector<std::vector<std::string>>{{""}, {"a::b"}, {"r", "r"}}) {
+    std::vector<OtherRobot> others;
+    for (const std::string& n : names) {
+      OtherRobot o;
+      o.name = n;
+      o.robot = load_shared_cc8(shared);
+      o.controllers = cc8_controller_params(shared);
+      o.spawn.y = 3.0 * static_cast<double>(others.size() + 1);
+      others.push_back(std::move(o));
+    }
+    try {
+      Simulation sim(load_shared_cc8(shared), make_world({}), cc8_controller_params(shared), {}, others);
+      ADD_FAILURE() << "accepted other robots named '" << names.front() << "'";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find("'" + names.back() + "'"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mechsim::sim
