@@ -134,18 +134,25 @@ class Writer {
       if (plan_.bodies[i].parent < 0) write_body(plan_, children_, i, 2);
     // The world's passive models after the robot (its root joint stays the model's first), their
     // geoms colliding as world objects do.
+    // The other robots (actuated models) last, after the objects: the bodies, joints and geoms
+    // of everything else keep their indices when robots are spawned or deleted.
     for (const BodyPlan& p : plan_.passive) other_robot_bits_ |= p.robot_bit;
-    for (const BodyPlan& p : plan_.passive) {
-      passive_ = true;
-      robot_bit_ = p.robot_bit;
-      for (const PlannedGeom& g : p.world_geoms) write_geom(g, 2);
-      const auto children = children_of(p);
-      for (std::size_t i = 0; i < p.bodies.size(); ++i)
-        if (p.bodies[i].parent < 0) write_body(p, children, i, 2);
-      passive_ = false;
-      robot_bit_ = 0;
-    }
+    const auto write_models = [&](bool robots) {
+      for (const BodyPlan& p : plan_.passive) {
+        if ((p.robot_bit != 0) != robots) continue;
+        passive_ = true;
+        robot_bit_ = p.robot_bit;
+        for (const PlannedGeom& g : p.world_geoms) write_geom(g, 2);
+        const auto children = children_of(p);
+        for (std::size_t i = 0; i < p.bodies.size(); ++i)
+          if (p.bodies[i].parent < 0) write_body(p, children, i, 2);
+        passive_ = false;
+        robot_bit_ = 0;
+      }
+    };
+    write_models(false);
     write_boxes();
+    write_models(true);
     x_ << "  </worldbody>\n";
     std::vector<std::pair<std::string, std::string>> excludes = plan_.excludes;
     std::vector<PlannedMimic> mimics = plan_.mimics;

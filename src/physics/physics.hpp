@@ -211,6 +211,13 @@ class Physics {
   // the step. Hot path (no allocation); ignored when the robot is fixed to the world.
   void command_root_velocity(const Twist& V_WB) noexcept;
 
+  // A world rebuilt with more or fewer robots or objects goes on from `old`'s state: time,
+  // gravity, soil (and the first robot's wheels' soil state and ruts); for every body of both
+  // models (by name) its joints' positions, velocities and spawn positions; for every joint of both (by name) its
+  // mode, servo gains, command, motor integral, effort bound and armature. What is new keeps its
+  // spawn state. Not for a loop (allocates).
+  void take_state_from(const Physics& old);
+
   // Initial conditions (not for use inside a control loop): sets a joint's state directly.
   void set_joint_state(std::size_t joint, double position, double velocity = 0.0);
 

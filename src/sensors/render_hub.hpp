@@ -45,6 +45,15 @@ class RenderHub {
   // made (error()). Frames are kept and reused across instants: no allocation once warm.
   const physics::Frame* frame(const physics::Physics& physics, const physics::CameraView& view, bool depth);
 
+  // The simulation's physics was rebuilt (a robot spawned or deleted): the renderer is made anew
+  // over `model` (through `render_model` when given) at the next frame.
+  void set_model(std::shared_ptr<const physics::PhysicsModel> model, RenderModelFactory render_model) {
+    model_ = std::move(model);
+    render_model_ = std::move(render_model);
+    renderer_.reset();
+    fresh_ = false;
+  }
+
   const std::string& error() const { return error_; }
   long scene_updates() const { return updates_; }
   long renders() const { return renders_; }

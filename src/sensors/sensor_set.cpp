@@ -79,6 +79,11 @@ void SensorSet::share_camera_renders() {
     for (const CameraSensor* b : cameras) a->share_renders_with(*b);
 }
 
+void SensorSet::set_model(std::shared_ptr<const physics::PhysicsModel> model, RenderModelFactory render_model) {
+  model_ = std::move(model);
+  if (hub_) hub_->set_model(model_, std::move(render_model));
+}
+
 std::optional<std::size_t> SensorSet::find(std::string_view name) const {
   for (std::size_t i = 0; i < sensors_.size(); ++i)
     if (sensors_[i]->spec().name == name) return i;

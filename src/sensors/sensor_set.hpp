@@ -54,6 +54,11 @@ class SensorSet {
   // The cameras' shared renderer (null without cameras): its error, scene updates, renders.
   const RenderHub* render_hub() const { return hub_.get(); }
 
+  // The physics was rebuilt with more or fewer robots or objects after this robot's (its links,
+  // joints and geoms keep their indices): the cameras render the new model from their next frame.
+  // Readings, schedules and noise go on.
+  void set_model(std::shared_ptr<const physics::PhysicsModel> model, RenderModelFactory render_model = {});
+
   // Samples every enabled sensor that is due at `time` (s). Returns how many were sampled.
   std::size_t sample_due(const physics::Physics& physics, double time);
   // Samples every enabled sensor now, and restarts the schedules from `time` (after a reset: the

@@ -110,7 +110,8 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   floating_ = !physics_model_->fixed_to_world();
   spawn_pose_ = physics_->base_pose();
   startup_times_.mechanism = timer.lap();
-  build_robot(std::move(controller_params), build);
+  build_ = build;
+  build_robot(std::move(controller_params));
   for (OtherRobot& o : others) others_.push_back(std::unique_ptr<Simulation>(new Simulation(*this, std::move(o))));
 }
 
@@ -136,11 +137,113 @@ Simulation::Simulation(Simulation& host, OtherRobot other)
   spawn_pose_ = physics_->link_pose(*root_link_);
   physics::StageTimer timer;
   startup_times_.mechanism = timer.lap();
-  build_robot(std::move(other.controllers), {});
+  build_robot(std::move(other.controllers));
 }
 
 description::Pose Simulation::base_pose() const {
   return root_link_ ? physics_->link_pose(*root_link_) : physics_->base_pose();
+}
+
+std::vector<OtherRobot> Simulation::other_specs() const {
+  std::vector<OtherRobot> out;
+  for (const auto& o : others_) {
+    OtherRobot spec;
+    spec.name = o->name_;
+    spec.robot = o->robot_;
+    spec.spawn = o->options_.spawn;
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+void Simulation::bind_physics() {
+  physics_model_ = host_ != nullptr ? host_->physics_model_ : physics_model_;
+  physics_ = host_ != nullptr ? host_->physics_ : physics_;
+  if (host_ != nullptr) {
+    root_link_ = physics_model_->link_index(prefix_ + robot_.root_link);
+    if (!root_link_) throw std::logic_error("other robot '" + name_ + "': its root link is not in the physics");
+  }
+  for (std::size_t j = 0; j < physics_joint_.size(); ++j) {
+    const auto p = physics_model_->joint_index(prefix_ + mechanism_->joints[j].name);
+    physics_joint_[j] = p && physics_model_->joints()[*p].actuated ? static_cast<int>(*p) : -1;
+  }
+  sensors_.set_model(physics_model_, render_factory());
+}
+
+void Simulation::rebuild_physics(const std::vector<OtherRobot>& others) {
+  const physics::BuildOptions build = build_options(world_, options_, others);
+  auto model = physics::PhysicsModel::build(robot_, build);
+  auto physics = std::make_shared<physics::Physics>(model);
+  physics->take_state_from(*physics_);
+  // Nothing below throws: the world changes as a whole or not at all.
+  for (const std::string& w : physics_warnings_of_physics()) earlier_notices_.push_back(w);
+  notice_ticks_.clear();
+  physics_model_ = std::move(model);
+  physics_ = std::move(physics);
+  build_ = build;
+  bind_physics();
+  for (const auto& o : others_) o->bind_physics();
+}
+
+Simulation& Simulation::add_other(OtherRobot other) {
+  if (host_ != nullptr) return host_->add_other(std::move(other));
+  if (find_other(other.name) != nullptr)
+    throw std::invalid_argument("other robot '" + other.name + "': a robot of that name is in the world already");
+  std::vector<OtherRobot> specs = other_specs();
+  OtherRobot spec;
+  spec.name = other.name;
+  spec.robot = other.robot;
+  spec.spawn = other.spawn;
+  specs.push_back(std::move(spec));
+  const std::shared_ptr<physics::Physics> before = physics_;
+  const std::shared_ptr<const physics::PhysicsModel> model_before = physics_model_;
+  rebuild_physics(specs);
+  try {
+    others_.push_back(std::unique_ptr<Simulation>(new Simulation(*this, std::move(other))));
+  } catch (...) {
+    // Its controllers or plugins could not be built: the world goes back to the physics it had.
+    physics_model_ = model_before;
+    physics_ = before;
+    bind_physics();
+    for (const auto& o : others_) o->bind_physics();
+    throw;
+  }
+  return *others_.back();
+}
+
+bool Simulation::remove_other(const std::string& name) {
+  if (host_ != nullptr) return host_->remove_other(name);
+  const auto it = std::find_if(others_.begin(), others_.end(), [&](const auto& o) { return o->name_ == name; });
+  if (it == others_.end()) return false;
+  Simulation& gone = **it;
+  // Its controllers first: stopped (their stopping() runs), then unloaded.
+  std::vector<std::string> running, loaded;
+  for (const control::ControllerInfo& info : gone.manager_->list_controllers()) {
+    loaded.push_back(info.name);
+    if (info.state == control::ControllerLifecycle::Running) running.push_back(info.name);
+  }
+  if (!running.empty()) {
+    gone.manager_->switch_controllers({}, running, control::SwitchStrictness::BestEffort);
+    gone.manager_->apply_pending_switch(time());
+  }
+  for (const std::string& c : loaded) gone.manager_->unload_controller(c);
+  std::vector<OtherRobot> specs;
+  for (OtherRobot& spec : other_specs())
+    if (spec.name != name) specs.push_back(std::move(spec));
+  others_.erase(it);
+  // Wrenches and efforts from outside are held by link and joint index, which the robots after
+  // the deleted one no longer have: they end with it.
+  external_.clear();
+  rebuild_physics(specs);
+  return true;
+}
+
+sensors::RenderModelFactory Simulation::render_factory() const {
+  if (!has_cameras(robot_) || !world_.spec.terrain) return {};
+  return [robot = robot_, b = build_]() mutable {
+    b.render_terrain = true;
+    return physics::PhysicsModel::build(robot, b);
+  };
 }
 
 Simulation* Simulation::find_other(const std::string& name) {
@@ -149,7 +252,7 @@ Simulation* Simulation::find_other(const std::string& name) {
   return nullptr;
 }
 
-void Simulation::build_robot(control::Params controller_params, const physics::BuildOptions& build) {
+void Simulation::build_robot(control::Params controller_params) {
   physics::StageTimer timer;
   mechanism_ = std::make_unique<mechanism::MechanismModel>(mechanism::build_mechanism(robot_));
   // The model plugins' controllers; the joints they drive or read join the mechanism.
@@ -272,14 +375,7 @@ void Simulation::build_robot(control::Params controller_params, const physics::B
   if (host_ == nullptr) notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
   startup_times_.mechanism += timer.lap();
   if (options_.sensors) {
-    sensors::RenderModelFactory render_model;
-    if (has_cameras(robot_) && world_.spec.terrain) {
-      render_model = [robot = robot_, b = build]() mutable {
-        b.render_terrain = true;
-        return physics::PhysicsModel::build(robot, b);
-      };
-    }
-    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, std::move(render_model));
+    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, render_factory());
     sensors_.sample_all(*physics_, time());
     sensor_handles_ = SensorHandles(sensors_);
     sensor_handles_.fill(sensors_);
@@ -560,6 +656,17 @@ void Simulation::reset_robot() {
 }
 
 std::vector<std::string> Simulation::physics_warnings() const {
+  std::vector<std::string> out = earlier_notices_;
+  const std::vector<std::string> now = physics_warnings_of_physics();
+  out.insert(out.end(), now.begin(), now.end());
+  for (const sensors::SkippedSensor& s : sensors_.skipped()) {
+    if (s.left_out) out.push_back(s.reason);
+  }
+  out.insert(out.end(), plugin_notes_.begin(), plugin_notes_.end());
+  return out;
+}
+
+std::vector<std::string> Simulation::physics_warnings_of_physics() const {
   std::vector<std::string> out;
   const std::vector<physics::PhysicsNotice>& notices = physics_->notices();
   for (std::size_t i = 0; i < notices.size() && i < notice_ticks_.size(); ++i) {
@@ -572,10 +679,6 @@ std::vector<std::string> Simulation::physics_warnings() const {
     if (notices[i].count > 1) text += " (in " + std::to_string(notices[i].count) + " steps in all)";
     out.push_back(std::move(text));
   }
-  for (const sensors::SkippedSensor& s : sensors_.skipped()) {
-    if (s.left_out) out.push_back(s.reason);
-  }
-  out.insert(out.end(), plugin_notes_.begin(), plugin_notes_.end());
   return out;
 }
 

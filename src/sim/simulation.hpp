@@ -207,6 +207,14 @@ class Simulation {
   // own robot over the shared physics: its mechanism, controllers, state_changed() and posted
   // commands are its own; time, pause, reset and stepping are this simulation's (its step() and
   // run_for() throw std::logic_error; its reset() and request_reset() reset the whole world).
+  // Spawns another robot into the running world (loop thread: between ticks or in a posted
+  // command): the physics is rebuilt with it, every robot and object going on from where it
+  // was, at the same time, its controllers untouched (Physics::take_state_from). Throws, changing
+  // nothing, on a robot that cannot be built or a name in use.
+  Simulation& add_other(OtherRobot other);
+  // Deletes an other robot (loop thread): its controllers are stopped and unloaded first, then
+  // the physics is rebuilt without it, the rest going on as above. False when there is none.
+  bool remove_other(const std::string& name);
   std::size_t other_count() const { return others_.size(); }
   Simulation& other(std::size_t i) { return *others_.at(i); }
   const Simulation& other(std::size_t i) const { return *others_.at(i); }
@@ -292,14 +300,24 @@ class Simulation {
   // An other robot of `host`'s world (`host`'s physics already holds it).
   Simulation(Simulation& host, OtherRobot other);
   // The robot's mechanism, controller manager, model plugins and sensors over the physics.
-  // `build`: the physics' build options (a camera's render model is built from them).
-  void build_robot(control::Params controller_params, const physics::BuildOptions& build);
+  void build_robot(control::Params controller_params);
   // The tick's steps 1-3 (state read, controllers, commands written) and step 5's state read and
   // sensors, for this robot.
   void control_phase();
   void sense_phase();
   // reset() for this robot, after the physics was reset.
   void reset_robot();
+  // The world's physics rebuilt with `others` (Physics::take_state_from), and every robot bound to it.
+  void rebuild_physics(const std::vector<OtherRobot>& others);
+  // This robot's joints and root looked up in the (new) physics.
+  void bind_physics();
+  std::vector<OtherRobot> other_specs() const;  // what rebuilds the others' part of the physics
+  std::vector<std::string> earlier_notices_;  // physics warnings of physics since rebuilt
+  std::vector<std::string> physics_warnings_of_physics() const;  // the physics' notices, dated
+  physics::BuildOptions build_;  // the physics' build options (the first robot's)
+  // The cameras' render model: the physics model with the terrain's render tiles (none needed
+  // without cameras or terrain).
+  sensors::RenderModelFactory render_factory() const;
   void read_physics();
   void write_physics();
   void add_model_plugins(std::vector<control::ModelPluginBuild>& plugins);

@@ -171,6 +171,70 @@ TEST(SeveralRobots, TwoCc8sDriveTheirOwnTwistsAndTheirOdometriesFollow) {
   EXPECT_NEAR(sim.base_pose().position.x, 0.0, 0.05);
 }
 
+// Spawned into the running world, a second CC8 drives its own twist; deleted, it is gone. The
+// first drives on through both, its controllers never restarted, to where it gets alone.
+TEST(SeveralRobots, ASpawnAndADeleteDuringARunLeaveTheFirstDrivingUndisturbed) {
+  const fs::path shared = MECHSIM_SHARED_DIR;
+  if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
+  SimulationOptions options;
+  options.integrator = cc8_test_integrator();
+  options.spawn.z = 0.02;
+  const auto run_first = [&](bool with_second) {
+    Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options);
+    sim.load_and_start(kDrive);
+    EXPECT_TRUE(sim.run_for(1.0));
+    Tracker t;
+    t.begin(sim);
+    sim.add_observer([&](const Simulation&) { t.observe(); });
+    command(sim, 0.3, 0.0);
+    EXPECT_TRUE(sim.run_for(3.0));
+    if (with_second) {
+      const double before = sim.time();
+      OtherRobot second;
+      second.name = "cc8_2";
+      second.robot = load_shared_cc8(shared);
+      second.controllers = drive_params();
+      second.spawn.x = 0.0;
+      second.spawn.y = 4.0;
+      second.spawn.z = 0.02;
+      second.initial_joints["steering_FL"] = 0.2;
+      Simulation& two = sim.add_other(second);
+      EXPECT_EQ(sim.time(), before);
+      EXPECT_EQ(two.time(), before);
+      EXPECT_NEAR(two.physics().position(*two.physics().model().joint_index("cc8_2::steering_FL")), 0.2, 1e-12);
+      EXPECT_THROW(sim.add_other(second), std::invalid_argument);  // the name is taken
+      two.load_and_start(kDrive);
+      command(two, -0.2, 0.0);
+      const double y0 = two.base_pose().position.y, x0 = two.base_pose().position.x;
+      EXPECT_TRUE(sim.run_for(3.0));
+      const description::Pose p2 = two.base_pose();
+      std::cout << "[ figures  ] the spawned CC8 drove " << p2.position.x - x0 << " m along x, " << p2.position.y - y0
+                << " m along y in 3 s\n";
+      EXPECT_NEAR(p2.position.x - x0, -0.6, 0.1);
+      EXPECT_NEAR(p2.position.y - y0, 0.0, 0.05);
+      EXPECT_TRUE(sim.remove_other("cc8_2"));
+      EXPECT_FALSE(sim.remove_other("cc8_2"));
+      EXPECT_EQ(sim.other_count(), 0u);
+      EXPECT_EQ(sim.physics().model().joints().size(), 14u);
+    } else {
+      EXPECT_TRUE(sim.run_for(3.0));
+    }
+    EXPECT_TRUE(sim.run_for(3.0));
+    for (const control::ControllerInfo& info : sim.controllers().list_controllers())
+      EXPECT_EQ(info.state, control::ControllerLifecycle::Running) << info.name;
+    return t.result();
+  };
+  const Drive alone = run_first(false), with = run_first(true);
+  std::cout << "[ figures  ] the first CC8 alone " << alone.final_pose.position.x << ", " << alone.final_pose.position.y
+            << " m; with a CC8 spawned and deleted on the way " << with.final_pose.position.x << ", "
+            << with.final_pose.position.y << " m; odometry error " << with.odometry_error << " m of " << with.distance
+            << " m\n";
+  EXPECT_NEAR(with.final_pose.position.x, alone.final_pose.position.x, 0.01);
+  EXPECT_NEAR(with.final_pose.position.y, alone.final_pose.position.y, 0.01);
+  // Its odometry went on (a restarted drive would count from the spawn instant).
+  EXPECT_LT(with.odometry_error, 0.03 * with.distance);
+}
+
 // A second robot whose name cannot be a namespace, or clashes with another's, is an error naming it.
 TEST(SeveralRobots, BadNamesAreErrors) {
   const fs::path shared = MECHSIM_SHARED_DIR;
