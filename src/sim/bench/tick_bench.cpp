@@ -13,6 +13,11 @@
 // are subscribed), one without sensors, stepped in alternating blocks of 50 ticks and timed by
 // the thread's CPU clock, so that the load of the machine falls on both alike; counters: CPU us
 // per tick of each and their ratio.
+// CC8/TwoInOneWorld/FullTick: two CC8s in one world (sim::OtherRobot), both controller sets
+// running: against CC8/FullTick, what a second robot costs a tick. CC8/SpawnAndDelete: a second
+// CC8 spawned beside a running one and deleted again (Simulation::add_other, remove_other: two
+// physics rebuilds with the state carried over, its controllers loaded and started): the pause a
+// /gazebo/spawn_urdf_model plus delete_model puts in the loop.
 
 #include <benchmark/benchmark.h>
 
@@ -33,17 +38,59 @@ using namespace mechsim;
 
 const fs::path kShared = MECHSIM_SHARED_DIR;
 
+std::vector<std::string> cc8_controllers() {
+  std::vector<std::string> names{"joint_state_controller"};
+  for (const char* c : {"FL", "FR", "RL", "RR"}) names.push_back(std::string("steering_") + c + "_position_controller");
+  for (const char* c : {"FL", "FR", "ML", "MR", "RL", "RR"}) names.push_back(std::string("wheel_joint_") + c + "_position_controller");
+  return names;
+}
+
 std::unique_ptr<sim::Simulation> make_cc8() {
   description::UrdfOptions options;
   options.packages["cc8_description"] = (kShared / "robots/cc8_description").string();
   auto robot = description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
   auto params = control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string());
   auto sim = std::make_unique<sim::Simulation>(std::move(robot), sim::make_world({}), params.child("cc8"));
-  std::vector<std::string> names{"joint_state_controller"};
-  for (const char* c : {"FL", "FR", "RL", "RR"}) names.push_back(std::string("steering_") + c + "_position_controller");
-  for (const char* c : {"FL", "FR", "ML", "MR", "RL", "RR"}) names.push_back(std::string("wheel_joint_") + c + "_position_controller");
-  sim->load_and_start(names);
+  sim->load_and_start(cc8_controllers());
   return sim;
+}
+
+sim::OtherRobot second_cc8(double y) {
+  description::UrdfOptions options;
+  options.packages["cc8_description"] = (kShared / "robots/cc8_description").string();
+  sim::OtherRobot o;
+  o.name = "cc8_2";
+  o.robot = description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
+  o.controllers = control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string()).child("cc8");
+  o.spawn.y = y;
+  return o;
+}
+
+std::unique_ptr<sim::Simulation> make_two_cc8s() {
+  description::UrdfOptions options;
+  options.packages["cc8_description"] = (kShared / "robots/cc8_description").string();
+  auto robot = description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
+  auto params = control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string());
+  auto sim = std::make_unique<sim::Simulation>(std::move(robot), sim::make_world({}), params.child("cc8"),
+                                               sim::SimulationOptions{}, std::vector<sim::OtherRobot>{second_cc8(3.0)});
+  sim->load_and_start(cc8_controllers());
+  sim->other(0).load_and_start(cc8_controllers());
+  return sim;
+}
+
+void BM_SpawnAndDelete(benchmark::State& state) {
+  if (!fs::exists(kShared)) {
+    state.SkipWithError("shared data absent");
+    return;
+  }
+  auto sim = make_cc8();
+  for (int i = 0; i < 200; ++i) sim->step();
+  const sim::OtherRobot other = second_cc8(3.0);
+  for (auto _ : state) {
+    sim->add_other(other).load_and_start(cc8_controllers());
+    sim->remove_other("cc8_2");
+    sim->step();
+  }
 }
 
 std::unique_ptr<sim::Simulation> make_pr2(bool sensors) {
@@ -142,6 +189,8 @@ void BM_LasersImuShare(benchmark::State& state) {
 
 BENCHMARK(BM_BareStep<make_cc8>)->Name("CC8/BareStep")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_cc8>)->Name("CC8/FullTick")->MinTime(2.0);
+BENCHMARK(BM_FullTick<make_two_cc8s>)->Name("CC8/TwoInOneWorld/FullTick")->MinTime(2.0);
+BENCHMARK(BM_SpawnAndDelete)->Name("CC8/SpawnAndDelete")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareStep<make_pr2_with_sensors>)->Name("PR2/BareStep")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_pr2_with_sensors>)->Name("PR2/FullTick")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_pr2_without_sensors>)->Name("PR2/FullTickNoSensors")->MinTime(2.0);

@@ -384,6 +384,14 @@ TEST_F(Pr2Node, BaseCommandTwistDrivesBaseOdometry) {
   });
   ::ros::Publisher cmd = nh_.advertise<geometry_msgs::Twist>("/pr2/base_controller/command", 1);
   ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0; }, 10.0));
+  // The odometry reaches us before the base moves (on a loaded machine the subscription can
+  // connect late, and the drive would be over before enough stamps arrived).
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(m);
+        return !stamps.empty();
+      },
+      10.0));
   geometry_msgs::Twist twist;
   twist.linear.x = 0.2;
   // Keep commanding (the base controller stops on a stale command) until x has grown.
