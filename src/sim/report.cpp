@@ -388,6 +388,20 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
     j["odometry_error_m"] = result.odometry_error;
     j["odometry_yaw_error_rad"] = result.odometry_yaw_error;
   }
+  if (!result.others.empty()) {
+    j["others"] = nlohmann::ordered_json::array();
+    for (const RobotMotion& o : result.others) {
+      nlohmann::ordered_json r = {{"name", o.name},
+                                  {"distance_m", o.distance},
+                                  {"final_pose", {{"x", o.final_x}, {"y", o.final_y}, {"z", o.final_z}, {"yaw_rad", o.final_yaw}}},
+                                  {"yaw_change_rad", o.yaw_change}};
+      if (o.has_odometry) {
+        r["odometry_error_m"] = o.odometry_error;
+        r["odometry_yaw_error_rad"] = o.odometry_yaw_error;
+      }
+      j["others"].push_back(std::move(r));
+    }
+  }
   if (sim.world().soil) {
     j["soil"] = {{"name", sim.world().soil->name}, {"source", sim.world().soil->source}, {"multi_pass", sim.world().soil->multi_pass}};
     j["wheels"] = nlohmann::ordered_json::array();

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <numbers>
+#include <set>
 #include <string_view>
 
 #include "control/params.hpp"
@@ -85,8 +86,9 @@ control::GripperCommand read_gripper(const Params& g) {
 TimelineEvent read_event(const Params& e) {
   TimelineEvent ev;
   ev.location = e.location().empty() ? e.path() : e.location();
-  only_keys(e, {"at", "controller", "command", "twist", "mode", "route", "trajectory", "gripper"});
+  only_keys(e, {"at", "robot", "controller", "command", "twist", "mode", "route", "trajectory", "gripper"});
   ev.at = e.get<double>("at");
+  ev.robot = e.get<std::string>("robot", "");
   if (!(ev.at >= 0.0)) fail(e.child("at"), "must be >= 0 s");
   ev.controller = e.get<std::string>("controller");
   int kinds = 0;
@@ -246,6 +248,63 @@ Scenario load_scenario(const Params& root, const std::string& path) {
       }
     }
 
+    if (auto others = root.find("others")) {
+      if (!others->is_list()) fail(*others, "expected a list of robots ({name, spawn, robot, controllers})");
+      std::set<std::string> names;
+      for (const Params& o : others->items()) {
+        only_keys(o, {"name", "spawn", "robot", "controllers"});
+        OtherRobotConfig c;
+        c.location = o.location().empty() ? o.path() : o.location();
+        c.name = o.get<std::string>("name");
+        if (c.name.empty() || c.name.find("::") != std::string::npos || c.name.find('/') != std::string::npos)
+          fail(o.child("name"), "a robot's name is its namespace: non-empty, without '::' or '/'");
+        if (!names.insert(c.name).second) fail(o.child("name"), "robot '" + c.name + "' is named twice");
+        c.description = s.description;
+        c.xacro_args = s.xacro_args;
+        c.packages = s.packages;
+        c.lenient = s.lenient;
+        if (auto own = o.find("robot")) {
+          only_keys(*own, {"description", "args", "packages", "lenient"});
+          if (own->has("description")) {
+            c.description = resolve_path(base, own->get<std::string>("description"));
+            if (!fs::exists(c.description)) fail(own->child("description"), "no such file: " + c.description);
+            c.xacro_args.clear();
+          }
+          if (auto args = own->find("args"))
+            for (const std::string& k : args->keys()) c.xacro_args[k] = scalar_text(args->child(k));
+          if (auto packages = own->find("packages"))
+            for (const std::string& k : packages->keys()) c.packages[k] = resolve_path(base, packages->get<std::string>(k));
+          c.lenient = own->get<bool>("lenient", c.lenient);
+        }
+        if (auto spawn = o.find("spawn")) {
+          only_keys(*spawn, {"x", "y", "z", "roll", "pitch", "yaw", "joints"});
+          c.spawn.x = finite(*spawn, "x", 0.0);
+          c.spawn.y = finite(*spawn, "y", 0.0);
+          c.spawn.z = finite(*spawn, "z", 0.0);
+          c.spawn.roll = finite(*spawn, "roll", 0.0);
+          c.spawn.pitch = finite(*spawn, "pitch", 0.0);
+          c.spawn.yaw = finite(*spawn, "yaw", 0.0);
+          if (auto joints = spawn->find("joints")) {
+            if (!joints->is_map()) fail(*joints, "expected a map of joint name -> position (rad or m)");
+            for (const std::string& j : joints->keys()) c.initial_joints[j] = finite(*joints, j, 0.0);
+          }
+        }
+        c.controllers_file = s.controllers_file;
+        c.controllers_namespace = s.controllers_namespace;
+        c.start = s.start;
+        if (auto controllers = o.find("controllers")) {
+          only_keys(*controllers, {"file", "namespace", "start"});
+          if (controllers->has("file")) {
+            c.controllers_file = resolve_path(base, controllers->get<std::string>("file"));
+            if (!fs::exists(c.controllers_file)) fail(controllers->child("file"), "no such file: " + c.controllers_file);
+          }
+          c.controllers_namespace = controllers->get<std::string>("namespace", c.controllers_namespace);
+          c.start = controllers->get<std::vector<std::string>>("start", c.start);
+        }
+        s.others.push_back(std::move(c));
+      }
+    }
+
     s.duration = root.get<double>("duration");
     if (!(s.duration > 0.0) || s.duration > 1e6) fail(root.child("duration"), "must be in (0, 1e6] s");
     s.period = root.get<double>("period", 0.001);
@@ -268,6 +327,23 @@ Scenario load_scenario(const Params& root, const std::string& path) {
                      [](const TimelineEvent& a, const TimelineEvent& b) { return a.at < b.at; });
     if (auto checks = root.find("checks")) {
       for (const Params& c : checks->items()) s.checks.push_back(read_check(c));
+    }
+    const auto known_robot = [&](const std::string& name) {
+      return name.empty() || std::any_of(s.others.begin(), s.others.end(), [&](const OtherRobotConfig& o) { return o.name == name; });
+    };
+    for (const TimelineEvent& e : s.timeline) {
+      if (!known_robot(e.robot))
+        throw ScenarioError(e.location + ": timeline: robot '" + e.robot + "' is none of the scenario's others");
+      if (!e.robot.empty() && (e.kind == TimelineEvent::Kind::Trajectory || e.kind == TimelineEvent::Kind::Gripper))
+        throw ScenarioError(e.location + ": timeline: trajectory and gripper goals go to the first robot only (robot '" +
+                            e.robot + "')");
+    }
+    if (auto checks = root.find("checks")) {
+      std::size_t k = 0;
+      for (const Params& c : checks->items()) {
+        if (!known_robot(s.checks[k].robot)) fail(c, "robot '" + s.checks[k].robot + "' is none of the scenario's others");
+        ++k;
+      }
     }
     if (auto sensors = root.find("sensors")) {
       if (!sensors->is_list()) fail(*sensors, "expected a list of Gazebo <gazebo reference=\"LINK\"> blocks (XML text)");

@@ -115,6 +115,19 @@
 //     # than travelling) over [from, to] s of a wheel (its link; default every wheel), sampled
 //     # every tick while the wheel is in the soil.
 //     - {slip: {wheel: wheel_FL_1, from: 2, to: 10, min_mean: 0.05, max_mean: 0.6}}
+//   # More robots in the world (sim::OtherRobot), each with its own controller manager; they
+//   # collide with the robot and each other. `robot` and `controllers` default to the first
+//   # robot's (its description, args and packages; its controllers file, namespace and start).
+//   # A timeline event or a final_pose, final_heading, distance or odometry check names one with
+//   # `robot:`; summary.json gives each one's distance, final pose and odometry error.
+//   others:
+//     - name: cc8_2                   # unique, no "::"
+//       spawn: {x: 0, y: 4, z: 0.02, yaw: 1.5708, joints: {steering_FL: 0.1}}
+//       robot: {description: ..., args: {...}, packages: {...}, lenient: false}
+//       controllers: {file: ..., namespace: cc8, start: [rover_drive_controller]}
+//   # e.g. timeline: - {at: 0, robot: cc8_2, controller: rover_drive_controller, twist: {vx: 0.2}}
+//   #      checks:   - {odometry: {robot: cc8_2, max_error_fraction: 0.03}}
+//   # Other robots' sensors are not simulated, nor their trajectory and gripper goals.
 //   # Sensors added to the robot, as Gazebo <gazebo reference="LINK"> blocks (the robot's own
 //   # <sensor> tags are simulated too; mechsim check lists them). Each entry is XML text.
 //   sensors:
@@ -174,6 +187,7 @@ struct RouteCommand {
 
 struct TimelineEvent {
   double at = 0.0;  // s
+  std::string robot;  // "": the first robot; else an `others:` entry's name
   std::string controller;
   enum class Kind { Scalar, Array, Twist, Route, Mode, Trajectory, Gripper } kind = Kind::Scalar;
   double scalar = 0.0;
@@ -192,6 +206,7 @@ struct Check {
   enum class Kind { Reach, FinalPose, FinalHeading, Direction, Upright, Odometry, Distance, Trajectory, Gripper, Joint,
                     Tracking, LaserRange, ImuTilt, Slip } kind = Kind::Reach;
   std::string text;  // as written, for the report
+  std::string robot;  // FinalPose, FinalHeading, Distance, Odometry: "" the first robot, else an other's name
   double x = 0.0, y = 0.0, within = 0.0, by = 0.0;  // Reach / FinalPose (m, s)
   std::optional<double> lateral_within;            // FinalPose: |y error| (m)
   double yaw = 0.0, within_angle = 0.0;            // FinalHeading, Direction (rad)
@@ -235,6 +250,21 @@ struct ControllerParam {
   control::Params value;
 };
 
+// One `others:` entry: another robot in the world.
+struct OtherRobotConfig {
+  std::string name;
+  std::string location;  // file:line of the entry
+  std::string description;  // absolute
+  std::map<std::string, std::string> xacro_args;
+  std::map<std::string, std::string> packages;
+  bool lenient = false;
+  physics::SpawnPose spawn;
+  std::map<std::string, double> initial_joints;
+  std::string controllers_file;  // absolute; empty: no controllers YAML
+  std::string controllers_namespace;
+  std::vector<std::string> start;
+};
+
 // What a run does when the robot leaves the usable ground.
 enum class LeavingTerrain { Stop, Continue };
 
@@ -256,6 +286,7 @@ struct Scenario {
   std::string controllers_namespace;
   std::vector<std::string> start;
   std::vector<ControllerParam> controller_params;  // controllers.params, in document order
+  std::vector<OtherRobotConfig> others;
   double duration = 10.0;
   double period = 0.001;
   physics::Integrator integrator = physics::BuildOptions{}.integrator;  // the project default

@@ -15,6 +15,7 @@ Check read_check(const Params& c) {
   const std::string& kind = keys.front();
   const Params p = c.child(kind);
   check.text = kind;
+  if (p.is_map()) check.robot = p.get<std::string>("robot", "");
   if (kind == "reach") {
     check.kind = Check::Kind::Reach;
     only_keys(p, {"x", "y", "within", "by"});
@@ -24,14 +25,14 @@ Check read_check(const Params& c) {
     check.by = p.get<double>("by");
   } else if (kind == "final_pose") {
     check.kind = Check::Kind::FinalPose;
-    only_keys(p, {"x", "y", "within", "lateral_within"});
+    only_keys(p, {"robot", "x", "y", "within", "lateral_within"});
     check.x = p.get<double>("x");
     check.y = p.get<double>("y");
     check.within = p.get<double>("within");
     if (p.has("lateral_within")) check.lateral_within = p.get<double>("lateral_within");
   } else if (kind == "final_heading") {
     check.kind = Check::Kind::FinalHeading;
-    only_keys(p, {"yaw_deg", "within_deg"});
+    only_keys(p, {"robot", "yaw_deg", "within_deg"});
     check.yaw = p.get<double>("yaw_deg") * kDeg;
     check.within_angle = p.get<double>("within_deg") * kDeg;
   } else if (kind == "direction") {
@@ -45,13 +46,13 @@ Check read_check(const Params& c) {
     check.max_tilt = p.get<double>("max_tilt_deg") * kDeg;
   } else if (kind == "odometry") {
     check.kind = Check::Kind::Odometry;
-    only_keys(p, {"max_error_fraction", "max_yaw_error_fraction"});
+    only_keys(p, {"robot", "max_error_fraction", "max_yaw_error_fraction"});
     if (p.has("max_error_fraction")) check.max_error_fraction = p.get<double>("max_error_fraction");
     if (p.has("max_yaw_error_fraction")) check.max_yaw_error_fraction = p.get<double>("max_yaw_error_fraction");
     if (!check.max_error_fraction && !check.max_yaw_error_fraction) fail(p, "needs max_error_fraction and/or max_yaw_error_fraction");
   } else if (kind == "distance") {
     check.kind = Check::Kind::Distance;
-    only_keys(p, {"min", "max"});
+    only_keys(p, {"robot", "min", "max"});
     check.min_distance = p.get<double>("min", 0.0);
     check.max_distance = p.get<double>("max", 1e300);
   } else if (kind == "trajectory" || kind == "gripper") {

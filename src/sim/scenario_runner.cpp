@@ -101,6 +101,58 @@ void apply(const BoundEvent& b, std::optional<RouteFollower>& route, control::Tw
   if (!ok) throw ScenarioError("t=" + std::to_string(e.at) + " s: controller '" + e.controller + "' rejected the command: " + error);
 }
 
+// A robot's base motion through a run (RobotMotion): path length and net turn per tick, and at
+// the end the odometry against the truth.
+struct MotionTracker {
+  const Simulation* sim = nullptr;
+  physics::SpawnPose spawn;
+  const control::StatePort<control::OdometrySnapshot>* odometry = nullptr;
+  RobotMotion m;
+  double last_x = 0.0, last_y = 0.0, last_yaw = 0.0;
+
+  MotionTracker(Simulation& robot, const physics::SpawnPose& spawn_pose) : sim(&robot), spawn(spawn_pose) {
+    m.name = robot.robot_name_in_world();
+    for (const control::ControllerInfo& info : robot.controllers().list_controllers()) {
+      if (auto* p = find_port<control::StatePort<control::OdometrySnapshot>>(robot.controllers().controller(info.name),
+                                                                           control::PortKind::Odometry)) {
+        odometry = p;
+      }
+    }
+    m.has_odometry = odometry != nullptr;
+    const description::Pose X = robot.base_pose();
+    last_x = X.position.x;
+    last_y = X.position.y;
+    last_yaw = yaw_of(X.orientation);
+  }
+  void update(const description::Pose& after) {
+    m.distance += std::hypot(after.position.x - last_x, after.position.y - last_y);
+    last_x = after.position.x;
+    last_y = after.position.y;
+    const double yaw_after = yaw_of(after.orientation);
+    m.yaw_change += wrap_angle(yaw_after - last_yaw);
+    last_yaw = yaw_after;
+  }
+  const RobotMotion& finish() {
+    const description::Pose X_WB = sim->base_pose();
+    m.final_x = X_WB.position.x;
+    m.final_y = X_WB.position.y;
+    m.final_z = X_WB.position.z;
+    m.final_yaw = yaw_of(X_WB.orientation);
+    if (odometry != nullptr) {
+      // Wheel odometry starts at the spawn pose's origin and heading: compare in the spawn frame.
+      // A Gazebo plugin's "world" odometry is the world pose itself.
+      const control::OdometrySnapshot odom = odometry->read();
+      const double c = std::cos(spawn.yaw), sn = std::sin(spawn.yaw);
+      const double ox = odom.in_world ? odom.x : spawn.x + c * odom.x - sn * odom.y;
+      const double oy = odom.in_world ? odom.y : spawn.y + sn * odom.x + c * odom.y;
+      m.odometry_error = std::hypot(ox - m.final_x, oy - m.final_y);
+      const double odom_turn = odom.in_world ? wrap_angle(odom.yaw - spawn.yaw) : odom.yaw;
+      m.odometry_yaw_error = std::abs(wrap_angle(odom_turn - m.yaw_change));
+    }
+    return m;
+  }
+};
+
 control::PortKind port_kind_for(TimelineEvent::Kind kind) {
   switch (kind) {
     case TimelineEvent::Kind::Scalar: return control::PortKind::ScalarCommand;
@@ -176,9 +228,41 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s, std::string& urd
   options.initial_joints = s.initial_joints;
   options.sensor_seed = s.seed;
   options.parameter_root = root;
+  std::vector<OtherRobot> others;
+  for (const OtherRobotConfig& c : s.others) {
+    const std::string where = s.file + ": others: " + c.name + ": ";
+    OtherRobot o;
+    o.name = c.name;
+    o.spawn = c.spawn;
+    o.initial_joints = c.initial_joints;
+    try {
+      description::LoadOptions other_load;
+      other_load.xacro_args = c.xacro_args;
+      other_load.packages = c.packages;
+      other_load.lenient = c.lenient;
+      o.robot = description::load_robot(c.description, other_load).model;
+    } catch (const std::exception& e) {
+      throw ScenarioError(where + "robot: " + e.what());
+    }
+    try {
+      if (!c.controllers_file.empty()) o.controllers = control::Params::from_yaml_file(c.controllers_file);
+      o.parameter_root = o.controllers;
+      if (!c.controllers_namespace.empty()) o.controllers = o.controllers.child(c.controllers_namespace);
+    } catch (const std::exception& e) {
+      throw ScenarioError(where + "controllers: " + e.what());
+    }
+    others.push_back(std::move(o));
+  }
   try {
-    auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options);
+    auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options, std::move(others));
     sim->load_and_start(s.start);
+    for (std::size_t i = 0; i < s.others.size(); ++i) {
+      try {
+        sim->other(i).load_and_start(s.others[i].start);
+      } catch (const std::exception& e) {
+        throw ScenarioError("others: " + s.others[i].name + ": " + e.what());
+      }
+    }
     return sim;
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": " + e.what());
@@ -196,8 +280,11 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   ScenarioGoals goals(s, sim->controllers());  // binds (and checks) the trajectory and gripper events
   std::vector<BoundEvent> events;
   for (const TimelineEvent& e : s.timeline) {
-    control::Controller* c = sim->controllers().controller(e.controller);
-    if (c == nullptr) throw ScenarioError(s.file + ": timeline at t=" + std::to_string(e.at) + " s: no controller '" + e.controller + "' is loaded");
+    Simulation& robot = e.robot.empty() ? *sim : *sim->find_other(e.robot);  // names checked when read
+    control::Controller* c = robot.controllers().controller(e.controller);
+    if (c == nullptr)
+      throw ScenarioError(s.file + ": timeline at t=" + std::to_string(e.at) + " s: no controller '" + e.controller +
+                          "' is loaded" + (e.robot.empty() ? "" : " on robot '" + e.robot + "'"));
     bool has_port = false;
     for (control::Port* p : c->ports()) has_port = has_port || p->kind() == port_kind_for(e.kind);
     if (!has_port) {
@@ -215,13 +302,10 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   CameraReport camera_report(*sim, s, options.output_dir);
   sim->add_observer([&](const Simulation& at) { camera_report.observe(at); });
   sim->add_control_observer([&](const Simulation&) { camera_report.before_step(*sim); });
-  const control::StatePort<control::OdometrySnapshot>* odometry = nullptr;
-  for (const control::ControllerInfo& info : sim->controllers().list_controllers()) {
-    if (auto* p = find_port<control::StatePort<control::OdometrySnapshot>>(sim->controllers().controller(info.name),
-                                                                         control::PortKind::Odometry)) {
-      odometry = p;
-    }
-  }
+  MotionTracker first(*sim, s.spawn);
+  std::vector<MotionTracker> others;
+  for (std::size_t i = 0; i < sim->other_count(); ++i) others.emplace_back(sim->other(i), s.others[i].spawn);
+  const control::StatePort<control::OdometrySnapshot>* odometry = first.odometry;
   result.has_odometry = odometry != nullptr;
 
   std::optional<RouteFollower> route;
@@ -304,8 +388,6 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       warn("at spawn, " + *outside + (s.on_leaving == LeavingTerrain::Stop ? " (world.on_leaving: stop ends the run at once)" : ""));
     }
   }
-  double last_x = sim->physics().base_pose().position.x, last_y = sim->physics().base_pose().position.y;
-  double last_yaw = yaw_of(sim->physics().base_pose().orientation);
   const auto wall_start = std::chrono::steady_clock::now();
   auto rtf_now = [&] {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -360,12 +442,8 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       break;
     }
     const description::Pose after = sim->physics().base_pose();
-    result.distance += std::hypot(after.position.x - last_x, after.position.y - last_y);
-    last_x = after.position.x;
-    last_y = after.position.y;
-    const double yaw_after = yaw_of(after.orientation);
-    result.yaw_change += wrap_angle(yaw_after - last_yaw);
-    last_yaw = yaw_after;
+    first.update(after);
+    for (MotionTracker& o : others) o.update(o.sim->base_pose());
     goals.poll(sim->time());
     if (watch_terrain()) break;
     result.max_tilt = std::max(result.max_tilt, tilt_of(after.orientation));
@@ -391,22 +469,22 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
   result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   result.real_time_factor = rtf_now();
   for (std::string& w : sim->physics_warnings()) result.warnings.push_back(std::move(w));
-  const description::Pose X_WB = sim->physics().base_pose();
-  result.final_x = X_WB.position.x;
-  result.final_y = X_WB.position.y;
-  result.final_z = X_WB.position.z;
-  result.final_yaw = yaw_of(X_WB.orientation);
-  if (odometry != nullptr) {
-    // Wheel odometry starts at the spawn pose's origin and heading: compare in the spawn frame.
-    // A Gazebo plugin's "world" odometry is the world pose itself.
-    const control::OdometrySnapshot odom = odometry->read();
-    const double c = std::cos(s.spawn.yaw), sn = std::sin(s.spawn.yaw);
-    const double ox = odom.in_world ? odom.x : s.spawn.x + c * odom.x - sn * odom.y;
-    const double oy = odom.in_world ? odom.y : s.spawn.y + sn * odom.x + c * odom.y;
-    result.odometry_error = std::hypot(ox - result.final_x, oy - result.final_y);
-    const double odom_turn = odom.in_world ? wrap_angle(odom.yaw - s.spawn.yaw) : odom.yaw;
-    result.odometry_yaw_error = std::abs(wrap_angle(odom_turn - result.yaw_change));
-  }
+  const RobotMotion& motion = first.finish();
+  result.distance = motion.distance;
+  result.yaw_change = motion.yaw_change;
+  result.final_x = motion.final_x;
+  result.final_y = motion.final_y;
+  result.final_z = motion.final_z;
+  result.final_yaw = motion.final_yaw;
+  result.odometry_error = motion.odometry_error;
+  result.odometry_yaw_error = motion.odometry_yaw_error;
+  for (MotionTracker& o : others) result.others.push_back(o.finish());
+  // The robot a pose or odometry check names.
+  const auto motion_of = [&](const Check& c) -> const RobotMotion& {
+    for (const RobotMotion& o : result.others)
+      if (o.name == c.robot) return o;
+    return motion;
+  };
   result.trajectory_goals = goals.trajectory_goals();
   result.gripper_goals = goals.gripper_goals();
   result.tracking = recorder.tracking();
@@ -422,17 +500,19 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         std::snprintf(buf, sizeof buf, "reach (%.2f, %.2f) within %.2f m by t=%.1f s: closest %.3f m", c.x, c.y, c.within, c.by, reach_best[k]);
         break;
       case Check::Kind::FinalPose: {
-        const double d = std::hypot(result.final_x - c.x, result.final_y - c.y);
-        const double lateral = std::abs(result.final_y - c.y);
+        const RobotMotion& m = motion_of(c);
+        const double d = std::hypot(m.final_x - c.x, m.final_y - c.y);
+        const double lateral = std::abs(m.final_y - c.y);
         out.passed = d <= c.within && (!c.lateral_within || lateral <= *c.lateral_within);
         std::snprintf(buf, sizeof buf, "final pose (%.3f, %.3f) within %.3f m of (%.2f, %.2f): off by %.3f m (lateral %.3f m)",
-                      result.final_x, result.final_y, c.within, c.x, c.y, d, lateral);
+                      m.final_x, m.final_y, c.within, c.x, c.y, d, lateral);
         break;
       }
       case Check::Kind::FinalHeading: {
-        const double err = std::abs(wrap_angle(result.final_yaw - c.yaw));
+        const RobotMotion& m = motion_of(c);
+        const double err = std::abs(wrap_angle(m.final_yaw - c.yaw));
         out.passed = err <= c.within_angle;
-        std::snprintf(buf, sizeof buf, "final heading %.2f deg, wanted %.2f +- %.2f deg: off by %.2f deg", result.final_yaw * 180 / M_PI,
+        std::snprintf(buf, sizeof buf, "final heading %.2f deg, wanted %.2f +- %.2f deg: off by %.2f deg", m.final_yaw * 180 / M_PI,
                       c.yaw * 180 / M_PI, c.within_angle * 180 / M_PI, err * 180 / M_PI);
         break;
       }
@@ -450,25 +530,26 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
         std::snprintf(buf, sizeof buf, "max tilt %.2f deg (limit %.2f deg)", result.max_tilt * 180 / M_PI, c.max_tilt * 180 / M_PI);
         break;
       case Check::Kind::Odometry: {
-        out.passed = odometry != nullptr;
+        const RobotMotion& m = motion_of(c);
+        out.passed = m.has_odometry;
         std::string text;
         if (c.max_error_fraction) {
-          const double fraction = result.distance > 1e-6 ? result.odometry_error / result.distance : 0.0;
+          const double fraction = m.distance > 1e-6 ? m.odometry_error / m.distance : 0.0;
           out.passed = out.passed && fraction <= *c.max_error_fraction;
-          std::snprintf(buf, sizeof buf, "odometry error %.3f m over %.3f m = %.2f %% (limit %.2f %%)", result.odometry_error,
-                        result.distance, 100 * fraction, 100 * *c.max_error_fraction);
+          std::snprintf(buf, sizeof buf, "odometry error %.3f m over %.3f m = %.2f %% (limit %.2f %%)", m.odometry_error,
+                        m.distance, 100 * fraction, 100 * *c.max_error_fraction);
           text += buf;
         }
         if (c.max_yaw_error_fraction) {
-          const double turned = std::abs(result.yaw_change);
-          const double fraction = turned > 1e-6 ? result.odometry_yaw_error / turned : 0.0;
+          const double turned = std::abs(m.yaw_change);
+          const double fraction = turned > 1e-6 ? m.odometry_yaw_error / turned : 0.0;
           out.passed = out.passed && turned > 1e-6 && fraction <= *c.max_yaw_error_fraction;
           std::snprintf(buf, sizeof buf, "%sodometry yaw error %.3f deg over %.2f deg turned = %.2f %% (limit %.2f %%)",
-                        text.empty() ? "" : "; ", result.odometry_yaw_error * 180 / M_PI, result.yaw_change * 180 / M_PI,
+                        text.empty() ? "" : "; ", m.odometry_yaw_error * 180 / M_PI, m.yaw_change * 180 / M_PI,
                         100 * fraction, 100 * *c.max_yaw_error_fraction);
           text += buf;
         }
-        if (odometry == nullptr) text += " [no odometry]";
+        if (!m.has_odometry) text += " [no odometry]";
         std::snprintf(buf, sizeof buf, "%s", text.c_str());
         break;
       }
@@ -503,13 +584,15 @@ ScenarioResult run_scenario(const Scenario& s, const RunOptions& options) {
       case Check::Kind::Slip:
         result.checks.push_back(wheel_report.judge(c));
         continue;
-      case Check::Kind::Distance:
-        out.passed = result.distance >= c.min_distance && result.distance <= c.max_distance;
-        std::snprintf(buf, sizeof buf, "distance %.3f m in [%.3f, %.3g] m", result.distance, c.min_distance, c.max_distance);
+      case Check::Kind::Distance: {
+        const RobotMotion& m = motion_of(c);
+        out.passed = m.distance >= c.min_distance && m.distance <= c.max_distance;
+        std::snprintf(buf, sizeof buf, "distance %.3f m in [%.3f, %.3g] m", m.distance, c.min_distance, c.max_distance);
         break;
+      }
     }
-    out.name = c.text;
-    out.detail = buf;
+    out.name = c.robot.empty() ? c.text : c.text + " (" + c.robot + ")";
+    out.detail = c.robot.empty() ? std::string(buf) : c.robot + ": " + buf;
     result.checks.push_back(out);
   }
   if (options.output_dir.empty()) wheel_report.write(result, false);  // the figures only

@@ -76,6 +76,18 @@ struct RunEvent {
   double x = 0.0, y = 0.0;  // m, where the base was (world frame)
 };
 
+// How an `others:` robot's base moved in a run (the first robot's figures are ScenarioResult's
+// own fields of the same names).
+struct RobotMotion {
+  std::string name;
+  double distance = 0.0;  // m, in the horizontal plane
+  double final_x = 0.0, final_y = 0.0, final_z = 0.0, final_yaw = 0.0;  // m, rad
+  double yaw_change = 0.0;  // rad, unwrapped
+  bool has_odometry = false;
+  double odometry_error = 0.0;      // m
+  double odometry_yaw_error = 0.0;  // rad
+};
+
 struct CheckOutcome {
   std::string name;
   bool passed = false;
@@ -150,6 +162,7 @@ struct ScenarioResult {
   std::vector<TrajectoryGoalOutcome> trajectory_goals;  // in timeline order
   std::vector<GripperGoalOutcome> gripper_goals;
   std::vector<CheckOutcome> checks;
+  std::vector<RobotMotion> others;   // the scenario's `others:`, in order
   std::vector<WheelOutcome> wheels;  // with a soil only
   std::vector<TimingWindow> timing;  // RunOptions::timing_window
   std::vector<std::string> files;  // written, relative to output_dir

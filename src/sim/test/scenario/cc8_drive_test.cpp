@@ -41,10 +41,32 @@ TEST_P(Cc8Drive, MeetsItsChecks) {
   ASSERT_TRUE(r.completed) << r.error;
   ASSERT_FALSE(r.checks.empty());
   EXPECT_TRUE(r.passed);
+  for (const RobotMotion& o : r.others)
+    std::cout << "[ figures  ]   " << o.name << ": distance " << o.distance << " m, final (" << o.final_x << ", " << o.final_y
+              << ") yaw " << o.final_yaw * 57.29577951308232 << " deg, odometry error " << o.odometry_error << " m\n";
+}
+
+// The two rovers' scenario: the second robot's checks judge its own motion (a check of its final
+// pose at the first one's end point fails), and summary figures come per robot.
+TEST(Cc8TwoRovers, ChecksJudgeTheRobotTheyName) {
+  Scenario s = load_shipped("two_rovers");
+  for (Check& c : s.checks)
+    if (c.robot == "cc8_2" && c.kind == Check::Kind::FinalPose) {
+      c.x = 3.0;
+      c.y = 0.0;
+    }
+  const ScenarioResult r = run_shipped("two_rovers (second judged at the first's end)", s);
+  ASSERT_TRUE(r.completed) << r.error;
+  ASSERT_EQ(r.others.size(), 1u);
+  EXPECT_GT(r.others[0].distance, 2.0);
+  EXPECT_FALSE(r.passed);
+  int failed = 0;
+  for (const CheckOutcome& c : r.checks) failed += !c.passed;
+  EXPECT_EQ(failed, 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(FlatGround, Cc8Drive,
-                         testing::Values("straight_5m", "ackermann_90", "point_turn_180", "crab_45"),
+                         testing::Values("straight_5m", "ackermann_90", "point_turn_180", "crab_45", "two_rovers"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
 
 // The crab acceptance, asserted figure by figure: the direction of travel within 5 deg of
