@@ -198,7 +198,7 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   }
   if (robot_) {
     return refuse("model '" + robot_name_ + "' is in the world: mechsim's node simulates one robot per world "
-                  "(delete it first; several robots in one world are not supported yet)");
+                  "(delete it first; several robots in one world run standalone but not through the ROS node yet)");
   }
   bridge.robot.name = name;
   NodeOptions node = options_.node;

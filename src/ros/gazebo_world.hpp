@@ -7,7 +7,9 @@
 //
 // Models: the world's own (a ground plane, static boxes of an SDF world) and one robot at a time,
 // a SimNode (sim_node.hpp: its controller manager under its robot namespace, topics, sensors).
-// A second robot is refused with a message: several robots in one physics are not built yet.
+// A second robot is refused with a message: the simulation runs several robots in one physics
+// (sim::OtherRobot, Simulation::add_other), but the node does not give them their own controller
+// managers and topics yet.
 // A spawned robot goes on from the world's time (no jump); deleting it stops and unloads its
 // controllers first, and the world's clock goes on from the robot's time.
 //

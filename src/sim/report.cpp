@@ -103,6 +103,15 @@ Recorder::Recorder(const Simulation& sim, const std::string& dir, const std::vec
   }
   controllers_ << '\n';
   base_ << "time,x,y,z,roll,pitch,yaw,odom_x,odom_y,odom_yaw\n";
+  if (sim.other_count() > 0) {
+    others_.open(fs::path(dir) / "others.csv");
+    others_ << std::setprecision(9) << "time";
+    for (std::size_t i = 0; i < sim.other_count(); ++i) {
+      const std::string& n = sim.other(i).robot_name_in_world();
+      others_ << ',' << n << "/x," << n << "/y," << n << "/z," << n << "/yaw";
+    }
+    others_ << '\n';
+  }
 }
 
 void Recorder::sample(const control::StatePort<control::OdometrySnapshot>* odometry) {
@@ -126,6 +135,14 @@ void Recorder::sample(const control::StatePort<control::OdometrySnapshot>* odome
   }
   if (!files) return;
   controllers_ << '\n';
+  if (others_.is_open()) {
+    others_ << t;
+    for (std::size_t i = 0; i < sim_.other_count(); ++i) {
+      const description::Pose X = sim_.other(i).base_pose();
+      others_ << ',' << X.position.x << ',' << X.position.y << ',' << X.position.z << ',' << yaw_of(X.orientation);
+    }
+    others_ << '\n';
+  }
   if (trajectory_.is_open()) {
     trajectory_ << t;
     for (const auto* state : trajectory_states_) {
@@ -174,6 +191,7 @@ void Recorder::close() {
   controllers_.close();
   base_.close();
   trajectory_.close();
+  others_.close();
 }
 
 namespace {
@@ -224,6 +242,7 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
   const fs::path dir = options.output_dir;
   fs::create_directories(dir);
   result.files.insert(result.files.end(), {"joints.csv", "controllers.csv", "base.csv"});
+  if (!result.others.empty()) result.files.push_back("others.csv");
   if (!recorder.trajectory_columns().empty()) result.files.push_back("trajectory.csv");
 
   std::vector<std::array<double, 2>> waypoints;
@@ -259,6 +278,15 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
         double t = 0, x = 0, y = 0;
         if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &t, &x, &y) == 3) extend(x, y);
       }
+      std::ifstream others(dir / "others.csv");
+      std::getline(others, line);
+      while (std::getline(others, line)) {
+        std::istringstream row(line);
+        std::string cell;
+        std::vector<double> v;
+        while (std::getline(row, cell, ',')) v.push_back(std::atof(cell.c_str()));
+        for (std::size_t k = 1; k + 1 < v.size(); k += 4) extend(v[k], v[k + 1]);
+      }
       for (const auto& w : waypoints) extend(w[0], w[1]);
       const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
       const double half = std::max({x1 - x0, y1 - y0, 1.0}) / 2 + 1.0;
@@ -274,6 +302,14 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
     }
     if (result.has_odometry) plots += base + " using 8:9 with lines lw 2 dt 2 lc rgb '#ff00ff' title 'odometry', ";
     plots += base + " using 2:3 with lines lw 3 lc rgb '#0050ff' title 'true path', ";
+    static const char* const kOtherColours[] = {"#e07000", "#008080", "#8000c0", "#a0a000"};
+    for (std::size_t i = 0; i < result.others.size(); ++i) {
+      const std::string others = quoted((dir / "others.csv").string());
+      plots += others + " using " + std::to_string(2 + 4 * i) + ":" + std::to_string(3 + 4 * i) +
+               " with lines lw 3 lc rgb '" + kOtherColours[i % 4] + "' title " + quoted(result.others[i].name + " path") + " noenhanced, ";
+      plots += others + " every ::1::1 using " + std::to_string(2 + 4 * i) + ":" + std::to_string(3 + 4 * i) +
+               " with points pt 5 ps 2 lc rgb '#000000' notitle, ";
+    }
     if (const auto& u = sim.world().usable) {
       std::ofstream(dir / "usable.csv") << "x,y\n" << u->x_min << ',' << u->y_min << '\n' << u->x_max << ',' << u->y_min << '\n'
                                         << u->x_max << ',' << u->y_max << '\n' << u->x_min << ',' << u->y_max << '\n'

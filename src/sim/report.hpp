@@ -44,7 +44,7 @@ class Recorder {
   std::vector<std::size_t> passive_joints_;  // physics joints outside the mechanism
   std::vector<const control::StatePort<control::JointTrajectoryControllerState>*> trajectory_states_;
   std::vector<std::string> trajectory_columns_;
-  std::ofstream joints_, controllers_, base_, trajectory_;
+  std::ofstream joints_, controllers_, base_, trajectory_, others_;  // others.csv: the other robots' bases
 };
 
 // summary.json and, when options.plots, path.png, tracking.png, errors.png and (when the

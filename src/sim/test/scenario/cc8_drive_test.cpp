@@ -5,9 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
+#include <string>
 
 #include "sim/scenario.hpp"
 #include "sim/scenario_runner.hpp"
@@ -44,6 +50,38 @@ TEST_P(Cc8Drive, MeetsItsChecks) {
   for (const RobotMotion& o : r.others)
     std::cout << "[ figures  ]   " << o.name << ": distance " << o.distance << " m, final (" << o.final_x << ", " << o.final_y
               << ") yaw " << o.final_yaw * 57.29577951308232 << " deg, odometry error " << o.odometry_error << " m\n";
+}
+
+// The two rovers' report: others.csv holds the second robot's base (its last row where the run
+// says it ended), summary.json its motion.
+TEST(Cc8TwoRovers, TheReportHasTheSecondRobotsPath) {
+  const fs::path out = fs::path(::testing::TempDir()) / ("mechsim_two_rovers_" + std::to_string(::getpid()));
+  RunOptions options;
+  options.output_dir = out.string();
+  options.plots = false;
+  const ScenarioResult r = run_scenario(load_shipped("two_rovers"), options);
+  ASSERT_TRUE(r.completed) << r.error;
+  ASSERT_EQ(r.others.size(), 1u);
+  std::ifstream csv(out / "others.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time,cc8_2/x,cc8_2/y,cc8_2/z,cc8_2/yaw");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    last = line;
+    ++rows;
+  }
+  EXPECT_GE(rows, 600);  // 12 s at 50 Hz
+  double t = 0, x = 0, y = 0;
+  ASSERT_EQ(std::sscanf(last.c_str(), "%lf,%lf,%lf", &t, &x, &y), 3);
+  EXPECT_NEAR(x, r.others[0].final_x, 0.01);
+  EXPECT_NEAR(y, r.others[0].final_y, 0.01);
+  std::ifstream summary(out / "summary.json");
+  const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"others\""), std::string::npos);
+  EXPECT_NE(text.find("\"cc8_2\""), std::string::npos);
+  std::error_code ec;
+  fs::remove_all(out, ec);
 }
 
 // The two rovers' scenario: the second robot's checks judge its own motion (a check of its final
