@@ -98,15 +98,19 @@ std::vector<std::array<double, 2>> convex_hull(std::vector<std::array<double, 2>
 class RendererTest : public ::testing::Test {
  protected:
   Frame render(const std::shared_ptr<const PhysicsModel>& model, const CameraView& v) {
+    Frame f;
+    render(model, v, f, true);
+    return f;
+  }
+  // The spawn state of `model` through `v` into `f` (depth too when `depth`), in a renderer of its own.
+  RenderStats render(const std::shared_ptr<const PhysicsModel>& model, const CameraView& v, Frame& f, bool depth) {
     RenderSettings s;
     s.max_width = v.width;
     s.max_height = v.height;
     Renderer r(model, s);
     Physics p(model);
     r.update_scene(p);
-    Frame f;
-    r.render(v, f);
-    return f;
+    return r.render(v, f, true, depth);
   }
 };
 
@@ -246,19 +250,9 @@ TEST_F(RendererTest, GeomsOutsideTheViewAreLeftOutAndTheImageIsTheSame) {
   std::vector<WorldBox> all = seen;
   all.push_back(box("behind", {-3, 0, 0}, {0.5, 0.5, 0.5}));
   all.push_back(box("left", {3, 6, 0}, {0.5, 0.5, 0.5}));
-  auto draw = [&](const std::vector<WorldBox>& boxes, Frame& f) {
-    auto model = world(boxes);
-    RenderSettings s;
-    s.max_width = v.width;
-    s.max_height = v.height;
-    Renderer r(model, s);
-    Physics p(model);
-    r.update_scene(p);
-    return r.render(v, f, true, true);
-  };
   Frame with_all, with_seen;
-  const RenderStats a = draw(all, with_all);
-  const RenderStats b = draw(seen, with_seen);
+  const RenderStats a = render(world(all), v, with_all, true);
+  const RenderStats b = render(world(seen), v, with_seen, true);
   EXPECT_EQ(a.culled - b.culled, 2);
   EXPECT_EQ(a.geoms, b.geoms);
   EXPECT_TRUE(with_all.rgb == with_seen.rgb);

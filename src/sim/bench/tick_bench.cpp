@@ -45,38 +45,35 @@ std::vector<std::string> cc8_controllers() {
   return names;
 }
 
-std::unique_ptr<sim::Simulation> make_cc8() {
+description::RobotModel load_cc8() {
   description::UrdfOptions options;
   options.packages["cc8_description"] = (kShared / "robots/cc8_description").string();
-  auto robot = description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
-  auto params = control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string());
-  auto sim = std::make_unique<sim::Simulation>(std::move(robot), sim::make_world({}), params.child("cc8"));
-  sim->load_and_start(cc8_controllers());
-  return sim;
+  return description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
+}
+
+control::Params cc8_params() {
+  return control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string()).child("cc8");
 }
 
 sim::OtherRobot second_cc8(double y) {
-  description::UrdfOptions options;
-  options.packages["cc8_description"] = (kShared / "robots/cc8_description").string();
   sim::OtherRobot o;
   o.name = "cc8_2";
-  o.robot = description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
-  o.controllers = control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string()).child("cc8");
+  o.robot = load_cc8();
+  o.controllers = cc8_params();
   o.spawn.y = y;
   return o;
 }
 
-std::unique_ptr<sim::Simulation> make_two_cc8s() {
-  description::UrdfOptions options;
-  options.packages["cc8_description"] = (kShared / "robots/cc8_description").string();
-  auto robot = description::parse_urdf_file((kShared / "robots/reference/cc8.urdf").string(), options);
-  auto params = control::Params::from_yaml_file((kShared / "robots/cc8_description/config/controller.yaml").string());
-  auto sim = std::make_unique<sim::Simulation>(std::move(robot), sim::make_world({}), params.child("cc8"),
-                                               sim::SimulationOptions{}, std::vector<sim::OtherRobot>{second_cc8(3.0)});
+std::unique_ptr<sim::Simulation> make_cc8_with(std::vector<sim::OtherRobot> others) {
+  auto sim = std::make_unique<sim::Simulation>(load_cc8(), sim::make_world({}), cc8_params(), sim::SimulationOptions{},
+                                               std::move(others));
   sim->load_and_start(cc8_controllers());
-  sim->other(0).load_and_start(cc8_controllers());
+  for (std::size_t i = 0; i < sim->other_count(); ++i) sim->other(i).load_and_start(cc8_controllers());
   return sim;
 }
+
+std::unique_ptr<sim::Simulation> make_cc8() { return make_cc8_with({}); }
+std::unique_ptr<sim::Simulation> make_two_cc8s() { return make_cc8_with({second_cc8(3.0)}); }
 
 void BM_SpawnAndDelete(benchmark::State& state) {
   if (!fs::exists(kShared)) {

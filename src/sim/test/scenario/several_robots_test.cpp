@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "controllers/drive/rover_drive_ports.hpp"
 #include "control/ports.hpp"
@@ -91,58 +92,69 @@ control::Params drive_params() {
   return control::Params::from_yaml_file(std::string(MECHSIM_SOURCE_DIR) + "/robots/cc8/config/controllers.yaml").child("cc8");
 }
 
-TEST(SeveralRobots, TwoCc8sDriveTheirOwnTwistsAndTheirOdometriesFollow) {
+class SeveralRobots : public testing::Test {
+ protected:
   const fs::path shared = MECHSIM_SHARED_DIR;
-  if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
+  void SetUp() override {
+    if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
+    options.integrator = cc8_test_integrator();
+    options.spawn.z = 0.02;
+  }
+  // A CC8 with mechsim's controllers as an other robot named `name` at (x, y, yaw).
+  OtherRobot cc8(const std::string& name, double x, double y, double yaw) const {
+    OtherRobot o;
+    o.name = name;
+    o.robot = load_shared_cc8(shared);
+    o.controllers = drive_params();
+    o.spawn.x = x;
+    o.spawn.y = y;
+    o.spawn.z = 0.02;
+    o.spawn.yaw = yaw;
+    return o;
+  }
+  // The first CC8 (with `others`), every drive started, settled for 1 s; then the first holds
+  // 0.3 m/s straight on, its motion tracked by `t` from there.
+  std::unique_ptr<Simulation> first_driving(Tracker& t, std::vector<OtherRobot> others = {}) const {
+    auto sim = std::make_unique<Simulation>(load_shared_cc8(shared), make_world({}), drive_params(), options, std::move(others));
+    sim->load_and_start(kDrive);
+    for (std::size_t i = 0; i < sim->other_count(); ++i) sim->other(i).load_and_start(kDrive);
+    EXPECT_TRUE(sim->run_for(1.0));
+    t.begin(*sim);
+    sim->add_observer([&t](const Simulation&) { t.observe(); });
+    command(*sim, 0.3, 0.0);
+    return sim;
+  }
   SimulationOptions options;
-  options.integrator = cc8_test_integrator();
-  options.spawn.z = 0.02;
+};
 
+TEST_F(SeveralRobots, TwoCc8sDriveTheirOwnTwistsAndTheirOdometriesFollow) {
   // The first CC8 alone, for its figures undisturbed.
   Drive alone;
   {
-    Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options);
-    sim.load_and_start(kDrive);
-    ASSERT_TRUE(sim.run_for(1.0));
     Tracker t;
-    t.begin(sim);
-    sim.add_observer([&](const Simulation&) { t.observe(); });
-    command(sim, 0.3, 0.0);
-    ASSERT_TRUE(sim.run_for(10.0));
+    auto sim = first_driving(t);
+    ASSERT_TRUE(sim->run_for(10.0));
     alone = t.result();
   }
 
-  OtherRobot second;
-  second.name = "cc8_2";
-  second.robot = load_shared_cc8(shared);
-  second.controllers = drive_params();
-  second.spawn.y = 4.0;
-  second.spawn.z = 0.02;
-  second.spawn.yaw = kPi / 2;
-  Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options, {second});
-  ASSERT_EQ(sim.other_count(), 1u);
-  Simulation* two = sim.find_other("cc8_2");
+  Tracker t1, t2;
+  auto sim = first_driving(t1, {cc8("cc8_2", 0.0, 4.0, kPi / 2)});
+  ASSERT_EQ(sim->other_count(), 1u);
+  Simulation* two = sim->find_other("cc8_2");
   ASSERT_NE(two, nullptr);
   EXPECT_EQ(two->robot_name_in_world(), "cc8_2");
-  EXPECT_EQ(two->mechanism().joints.size(), sim.mechanism().joints.size());
+  EXPECT_EQ(two->mechanism().joints.size(), sim->mechanism().joints.size());
   EXPECT_THROW(two->run_for(0.1), std::logic_error);
-  sim.load_and_start(kDrive);
-  two->load_and_start(kDrive);
-  ASSERT_TRUE(sim.run_for(1.0));
-  EXPECT_NEAR(two->time(), sim.time(), 1e-12);
+  EXPECT_NEAR(two->time(), sim->time(), 1e-12);
   const description::Pose spawned2 = two->base_pose();
   EXPECT_NEAR(spawned2.position.x, 0.0, 0.02);
   EXPECT_NEAR(spawned2.position.y, 4.0, 0.02);
   EXPECT_NEAR(yaw_of(spawned2.orientation), kPi / 2, 0.02);
 
-  Tracker t1, t2;
-  t1.begin(sim);
   t2.begin(*two);
-  sim.add_observer([&](const Simulation&) { t1.observe(); });
   two->add_observer([&](const Simulation&) { t2.observe(); });
-  command(sim, 0.3, 0.0);    // straight on along world +x
-  command(*two, 0.2, 0.1);   // an arc to its left, starting along world +y
-  ASSERT_TRUE(sim.run_for(10.0));
+  command(*two, 0.2, 0.1);  // an arc to its left, starting along world +y
+  ASSERT_TRUE(sim->run_for(10.0));
   const Drive d1 = t1.result(), d2 = t2.result();
   std::cout << "[ figures  ] first CC8: " << d1.distance << " m (alone " << alone.distance << " m), odometry error "
             << d1.odometry_error << " m, yaw " << d1.yaw_error << " rad; second: " << d2.distance
@@ -163,64 +175,48 @@ TEST(SeveralRobots, TwoCc8sDriveTheirOwnTwistsAndTheirOdometriesFollow) {
   EXPECT_NEAR(d1.final_pose.position.y, alone.final_pose.position.y, 0.01);
 
   // A world reset puts both back where they spawned; time goes on.
-  const double before = sim.time();
-  sim.reset();
-  EXPECT_NEAR(sim.time(), before, 1e-12);
+  const double before = sim->time();
+  sim->reset();
+  EXPECT_NEAR(sim->time(), before, 1e-12);
   EXPECT_NEAR(two->base_pose().position.y, 4.0, 0.05);
   EXPECT_NEAR(two->base_pose().position.x, 0.0, 0.05);
-  EXPECT_NEAR(sim.base_pose().position.x, 0.0, 0.05);
+  EXPECT_NEAR(sim->base_pose().position.x, 0.0, 0.05);
 }
 
 // Spawned into the running world, a second CC8 drives its own twist; deleted, it is gone. The
 // first drives on through both, its controllers never restarted, to where it gets alone.
-TEST(SeveralRobots, ASpawnAndADeleteDuringARunLeaveTheFirstDrivingUndisturbed) {
-  const fs::path shared = MECHSIM_SHARED_DIR;
-  if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
-  SimulationOptions options;
-  options.integrator = cc8_test_integrator();
-  options.spawn.z = 0.02;
+TEST_F(SeveralRobots, ASpawnAndADeleteDuringARunLeaveTheFirstDrivingUndisturbed) {
   const auto run_first = [&](bool with_second) {
-    Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options);
-    sim.load_and_start(kDrive);
-    EXPECT_TRUE(sim.run_for(1.0));
     Tracker t;
-    t.begin(sim);
-    sim.add_observer([&](const Simulation&) { t.observe(); });
-    command(sim, 0.3, 0.0);
-    EXPECT_TRUE(sim.run_for(3.0));
+    auto sim = first_driving(t);
+    EXPECT_TRUE(sim->run_for(3.0));
     if (with_second) {
-      const double before = sim.time();
-      OtherRobot second;
-      second.name = "cc8_2";
-      second.robot = load_shared_cc8(shared);
-      second.controllers = drive_params();
-      second.spawn.x = 0.0;
-      second.spawn.y = 4.0;
-      second.spawn.z = 0.02;
+      const double before = sim->time();
+      OtherRobot second = cc8("cc8_2", 0.0, 4.0, 0.0);
       second.initial_joints["steering_FL"] = 0.2;
-      Simulation& two = sim.add_other(second);
-      EXPECT_EQ(sim.time(), before);
+      Simulation& two = sim->add_other(second);
+      EXPECT_EQ(sim->time(), before);
       EXPECT_EQ(two.time(), before);
       EXPECT_NEAR(two.physics().position(*two.physics().model().joint_index("cc8_2::steering_FL")), 0.2, 1e-12);
-      EXPECT_THROW(sim.add_other(second), std::invalid_argument);  // the name is taken
+      EXPECT_THROW(sim->add_other(second), std::invalid_argument);  // the name is taken
       two.load_and_start(kDrive);
       command(two, -0.2, 0.0);
       const double y0 = two.base_pose().position.y, x0 = two.base_pose().position.x;
-      EXPECT_TRUE(sim.run_for(3.0));
+      EXPECT_TRUE(sim->run_for(3.0));
       const description::Pose p2 = two.base_pose();
       std::cout << "[ figures  ] the spawned CC8 drove " << p2.position.x - x0 << " m along x, " << p2.position.y - y0
                 << " m along y in 3 s\n";
       EXPECT_NEAR(p2.position.x - x0, -0.6, 0.1);
       EXPECT_NEAR(p2.position.y - y0, 0.0, 0.05);
-      EXPECT_TRUE(sim.remove_other("cc8_2"));
-      EXPECT_FALSE(sim.remove_other("cc8_2"));
-      EXPECT_EQ(sim.other_count(), 0u);
-      EXPECT_EQ(sim.physics().model().joints().size(), 14u);
+      EXPECT_TRUE(sim->remove_other("cc8_2"));
+      EXPECT_FALSE(sim->remove_other("cc8_2"));
+      EXPECT_EQ(sim->other_count(), 0u);
+      EXPECT_EQ(sim->physics().model().joints().size(), 14u);
     } else {
-      EXPECT_TRUE(sim.run_for(3.0));
+      EXPECT_TRUE(sim->run_for(3.0));
     }
-    EXPECT_TRUE(sim.run_for(3.0));
-    for (const control::ControllerInfo& info : sim.controllers().list_controllers())
+    EXPECT_TRUE(sim->run_for(3.0));
+    for (const control::ControllerInfo& info : sim->controllers().list_controllers())
       EXPECT_EQ(info.state, control::ControllerLifecycle::Running) << info.name;
     return t.result();
   };
@@ -236,21 +232,12 @@ TEST(SeveralRobots, ASpawnAndADeleteDuringARunLeaveTheFirstDrivingUndisturbed) {
 }
 
 // A second robot whose name cannot be a namespace, or clashes with another's, is an error naming it.
-TEST(SeveralRobots, BadNamesAreErrors) {
-  const fs::path shared = MECHSIM_SHARED_DIR;
-  if (!fs::exists(shared / "robots/reference/cc8.urdf")) GTEST_SKIP() << "shared data absent: " << shared;
+TEST_F(SeveralRobots, BadNamesAreErrors) {
   for (const std::vector<std::string>& names : std::vector<std::vector<std::string>>{{""}, {"a::b"}, {"r", "r"}}) {
     std::vector<OtherRobot> others;
-    for (const std::string& n : names) {
-      OtherRobot o;
-      o.name = n;
-      o.robot = load_shared_cc8(shared);
-      o.controllers = cc8_controller_params(shared);
-      o.spawn.y = 3.0 * static_cast<double>(others.size() + 1);
-      others.push_back(std::move(o));
-    }
+    for (const std::string& n : names) others.push_back(cc8(n, 0.0, 3.0 * static_cast<double>(others.size() + 1), 0.0));
     try {
-      Simulation sim(load_shared_cc8(shared), make_world({}), cc8_controller_params(shared), {}, others);
+      Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options, others);
       ADD_FAILURE() << "accepted other robots named '" << names.front() << "'";
     } catch (const std::exception& e) {
       EXPECT_NE(std::string(e.what()).find("'" + names.back() + "'"), std::string::npos) << e.what();
