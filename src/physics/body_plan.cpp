@@ -421,8 +421,8 @@ BodyPlan plan_passive(const WorldModel& model, const BuildOptions& options) {
     for (PlannedGeom& g : b.geoms) {
       g.name = prefix + g.name;
       g.link = prefix + g.link;
-      // The soil model acts on the robot's wheels only; another robot's keep their shapes.
-      g.wheel = false;
+      // An object's cylinders are no wheels; another robot's wheels are (the soil acts on them).
+      g.wheel = g.wheel && model.actuated;
       g.narrow_wheel = g.narrow_wheel && model.actuated;
     }
   }
@@ -430,7 +430,7 @@ BodyPlan plan_passive(const WorldModel& model, const BuildOptions& options) {
     g.name = prefix + g.name;
     g.link = prefix + g.link;
     g.X_BG = compose(model.pose, g.X_BG);
-    g.wheel = false;
+    g.wheel = false;  // welded to the world: it does not turn
     g.narrow_wheel = g.narrow_wheel && model.actuated;
   }
   for (LinkFrame& f : p.link_frames) f.link = prefix + f.link;

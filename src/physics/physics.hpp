@@ -212,7 +212,7 @@ class Physics {
   void command_root_velocity(const Twist& V_WB) noexcept;
 
   // A world rebuilt with more or fewer robots or objects goes on from `old`'s state: time,
-  // gravity, soil (and the first robot's wheels' soil state and ruts); for every body of both
+  // gravity, soil (every wheel's soil state by its link, and the ruts); for every body of both
   // models (by name) its joints' positions, velocities and spawn positions; for every joint of both (by name) its
   // mode, servo gains, command, motor integral, effort bound and armature. What is new keeps its
   // spawn state. Not for a loop (allocates).

@@ -273,15 +273,21 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
   add_links(plan);
   for (const BodyPlan& p : plan.passive)
     if (p.robot_bit != 0) add_links(p);
-  for (const PlannedBody& b : plan.bodies)
-    for (const PlannedGeom& g : b.geoms) {
-      const int geom = g.wheel ? mj_name2id(m, mjOBJ_GEOM, g.name.c_str()) : -1;
-      if (geom < 0 || m->geom_type[geom] != mjGEOM_CYLINDER) continue;
-      const description::Link* link = robot.link(g.link);
-      const auto joint = link != nullptr ? pm->joint_index(link->parent_joint) : std::nullopt;
-      if (!joint) continue;
-      pm->wheels_.push_back({g.link, *joint, geom, m->geom_bodyid[geom], m->geom_size[3 * geom], 2.0 * m->geom_size[3 * geom + 1]});
-    }
+  // Wheels: the robot's, then the other robots' (their links and joints "<model>::<name>").
+  const auto add_wheels = [&](const BodyPlan& p, const description::RobotModel& description, const std::string& prefix) {
+    for (const PlannedBody& b : p.bodies)
+      for (const PlannedGeom& g : b.geoms) {
+        const int geom = g.wheel ? mj_name2id(m, mjOBJ_GEOM, g.name.c_str()) : -1;
+        if (geom < 0 || m->geom_type[geom] != mjGEOM_CYLINDER) continue;
+        const description::Link* link = description.link(g.link.substr(prefix.size()));
+        const auto joint = link != nullptr ? pm->joint_index(prefix + link->parent_joint) : std::nullopt;
+        if (!joint) continue;
+        pm->wheels_.push_back({g.link, *joint, geom, m->geom_bodyid[geom], m->geom_size[3 * geom], 2.0 * m->geom_size[3 * geom + 1]});
+      }
+  };
+  add_wheels(plan, robot, "");
+  for (std::size_t i = 0; i < plan.passive.size() && i < options.world.models.size(); ++i)
+    if (plan.passive[i].robot_bit != 0) add_wheels(plan.passive[i], *options.world.models[i].robot, options.world.models[i].name + "::");
   // The passive models' primitive shapes (their bodies' collision geoms, and those welded to the world).
   const auto add_shape = [&](int geom) {
     if (geom < 0) return;

@@ -123,7 +123,8 @@ class PhysicsModel {
   const std::vector<int>& gravity_off_bodies() const { return gravity_off_bodies_; }
   // URDF joints that are not simulated (massless child link merged into its parent).
   const std::vector<std::string>& dropped_joints() const { return dropped_joints_; }
-  // The robot's wheels (WheelInfo), in document order. Narrow wheels given to MuJoCo as
+  // The robot's wheels (WheelInfo), in document order, then the other robots' (actuated world
+  // models; their links "<model>::<link>"). Narrow wheels given to MuJoCo as
   // ellipsoids (ContactDefaults::point_contact_wheels) are not among them.
   const std::vector<WheelInfo>& wheels() const { return wheels_; }
   const std::vector<PassiveShape>& passive_shapes() const { return passive_shapes_; }

@@ -77,9 +77,9 @@ struct WorldBox {
 // object. Its URDF joints get actuators and appear in PhysicsModel::joints() as
 // "<name>::<joint>" (effort, servo and motor commands as the robot's), its links in links() as
 // "<name>::<link>"; it collides with the world, the robot and the other robots, and its own links
-// touch each other only where the description's selfCollide says (as the robot's do). Its mimic
-// joints are constraints; the differential plugin's law and the soil model act on the first
-// robot only (an actuated model's wheels meet soil as rigid ground).
+// touch each other only where the description's selfCollide says (as the robot's do); its wheels
+// meet the soil as the robot's do (PhysicsModel::wheels()). Its mimic joints are constraints; the
+// differential plugin's law acts on the first robot only.
 struct WorldModel {
   std::string name;
   std::shared_ptr<const description::RobotModel> robot;

@@ -63,12 +63,15 @@ void Physics::take_state_from(const Physics& old) {
     data_->gains[i] = old.data_->gains[*oi];
     data_->motor_integral[i] = old.data_->motor_integral[*oi];
   }
-  // The soil, and the first robot's wheels (first in both models) where they were in it.
+  // The soil, and every wheel of both (by link) where it was in it.
   set_soil(old.data_->soil);
-  const std::size_t wheels = std::min(data_->soil_state.size(), old.data_->soil_state.size());
-  for (std::size_t w = 0; w < wheels; ++w) {
-    data_->soil_state[w] = old.data_->soil_state[w];
-    data_->soil_readings[w] = old.data_->soil_readings[w];
+  const std::vector<WheelInfo>& old_wheels = old.model_->wheels();
+  for (std::size_t w = 0; w < data_->soil_state.size(); ++w) {
+    for (std::size_t o = 0; o < old.data_->soil_state.size() && o < old_wheels.size(); ++o) {
+      if (old_wheels[o].link != model_->wheels()[w].link) continue;
+      data_->soil_state[w] = old.data_->soil_state[o];
+      data_->soil_readings[w] = old.data_->soil_readings[o];
+    }
   }
   data_->ruts = old.data_->ruts;
   data_->stale = true;

@@ -12,6 +12,7 @@
 
 #include "description/urdf/urdf_parser.hpp"
 #include "physics/physics.hpp"
+#include "physics/soil.hpp"
 
 namespace mechsim::physics {
 namespace {
@@ -150,8 +151,7 @@ TEST(RobotsScenario, Cc8TrajectoriesAreBitIdentical) {
 
 // Two CC8s in one MuJoCo model: the first as the robot, the second an actuated world model
 // "rover2" 4 m to its left (physics_options.hpp, WorldModel::actuated).
-std::shared_ptr<const PhysicsModel> two_cc8s(const description::Pose& X_W_rover2) {
-  BuildOptions o;
+std::shared_ptr<const PhysicsModel> two_cc8s(const description::Pose& X_W_rover2, BuildOptions o = {}) {
   o.spawn.z = 0.05;
   WorldModel second;
   second.name = "rover2";
@@ -227,6 +227,34 @@ TEST(RobotsScenario, TwoCc8sInOneModelRestAndDriveAsTheirOwnCommandsSay) {
   EXPECT_GT(std::fabs(d1), 0.3);
   EXPECT_NEAR(d2, -d1, 0.05 * std::fabs(d1));
   EXPECT_NEAR(p.link_pose(*base2).position.y - p.link_pose(*base1).position.y, 4.0, 0.05);
+}
+
+// On soil both rovers' wheels sink (the CC8's wheels as cylinders, not point contacts): the
+// second's wheels are in the model's wheel list under its prefix, and each sinks as the first
+// rover's same wheel does.
+TEST(RobotsScenario, TwoCc8sInOneModelBothSinkIntoTheSoil) {
+  if (!shared_present()) GTEST_SKIP() << "shared data absent: " << kShared;
+  BuildOptions o;
+  o.contact.point_contact_wheels = false;
+  auto model = two_cc8s({{0.0, 4.0, 0.05}, {1, 0, 0, 0}}, o);
+  ASSERT_EQ(model->wheels().size(), 12u);
+  EXPECT_EQ(model->wheels()[6].link, "rover2::wheel_FL_1");
+  EXPECT_EQ(model->joints()[model->wheels()[6].joint].name, "rover2::wheel_joint_FL");
+  Physics p(model);
+  p.set_soil(*find_soil("dry_sand"));
+  drive(p, "", 0.0);
+  drive(p, "rover2::", 0.0);
+  while (p.time() < 2.0) ASSERT_TRUE(p.step().ok()) << "t = " << p.time();
+  const std::vector<WheelSoilReading>& r = p.wheel_soil();
+  ASSERT_EQ(r.size(), 12u);
+  for (std::size_t w = 0; w < 6; ++w) {
+    SCOPED_TRACE(model->wheels()[w].link);
+    EXPECT_TRUE(r[w].contact);
+    EXPECT_TRUE(r[w + 6].contact);
+    EXPECT_GT(r[w].sinkage, 0.001);
+    EXPECT_NEAR(r[w + 6].sinkage, r[w].sinkage, 0.1 * r[w].sinkage);
+  }
+  std::printf("two CC8s on dry sand: front-left wheels sink %.1f and %.1f mm\n", 1e3 * r[0].sinkage, 1e3 * r[6].sinkage);
 }
 
 // The second rover dropped onto the first from 30 cm lands on it (the CC8's collision shapes are
