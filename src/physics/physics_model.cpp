@@ -308,6 +308,7 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     pm->passive_shapes_.push_back(std::move(shape));
   };
   for (const BodyPlan& p : plan.passive) {
+    if (p.robot_bit != 0) continue;  // another robot: drawn from its description, not as an object
     for (const PlannedGeom& g : p.world_geoms)
       if (!g.visual) add_shape(mj_name2id(m, mjOBJ_GEOM, g.name.c_str()));
     for (const PlannedBody& b : p.bodies)

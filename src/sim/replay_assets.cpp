@@ -39,70 +39,77 @@ std::string safe_stem(const std::string& path) {
   return stem.empty() ? "mesh" : stem;
 }
 
-ordered_json robot_json(const description::RobotModel& robot, const fs::path& dir) {
+// The links' visuals: the robot's, then each other robot's under its prefix ("<name>::<link>", as
+// the physics and the replay's frames name them).
+ordered_json robot_json(const Simulation& sim, const fs::path& dir) {
   ordered_json links = ordered_json::array();
   ordered_json warnings = ordered_json::array();
   std::map<std::string, std::string> meshes;  // resolved path -> file under replay/
-  for (const description::Link& link : robot.links) {
-    double gazebo_rgb[3] = {0.6, 0.6, 0.6};
-    bool has_gazebo_colour = false;
-    if (auto it = robot.gazebo_links.find(link.name); it != robot.gazebo_links.end()) {
-      has_gazebo_colour = gazebo_material_rgb(it->second.material, gazebo_rgb);
-    }
-    ordered_json visuals = ordered_json::array();
-    for (const description::Visual& v : link.visuals) {
-      ordered_json j = {{"origin", pose_json(v.origin)}};
-      const description::Geometry& g = v.geometry;
-      switch (g.type) {
-        case description::GeometryType::Box:
-          j["type"] = "box";
-          j["size"] = {g.size.x, g.size.y, g.size.z};
-          break;
-        case description::GeometryType::Cylinder:
-          j["type"] = "cylinder";
-          j["radius"] = g.radius;
-          j["length"] = g.length;
-          break;
-        case description::GeometryType::Sphere:
-          j["type"] = "sphere";
-          j["radius"] = g.radius;
-          break;
-        case description::GeometryType::Mesh: {
-          if (g.mesh_path.empty()) {
-            warnings.push_back("link '" + link.name + "': mesh '" + g.mesh_uri + "' was not found; left out");
-            continue;
-          }
-          auto it = meshes.find(g.mesh_path);
-          if (it == meshes.end()) {
-            try {
-              const physics::MeshBytes bytes = physics::load_mesh_for_mujoco(g.mesh_path);
-              const std::string file = "meshes/" + std::to_string(meshes.size()) + "_" + safe_stem(g.mesh_path) + bytes.extension;
-              write_file(dir / file, bytes.bytes.data(), bytes.bytes.size());
-              it = meshes.emplace(g.mesh_path, file).first;
-            } catch (const ScenarioError&) {
-              throw;
-            } catch (const std::exception& e) {
-              warnings.push_back("link '" + link.name + "': " + e.what() + "; left out");
+  const auto add_robot = [&](const description::RobotModel& robot, const std::string& prefix) {
+    for (const description::Link& link : robot.links) {
+      const std::string name = prefix + link.name;  // as the physics and the frames name it
+      double gazebo_rgb[3] = {0.6, 0.6, 0.6};
+      bool has_gazebo_colour = false;
+      if (auto it = robot.gazebo_links.find(link.name); it != robot.gazebo_links.end()) {
+        has_gazebo_colour = gazebo_material_rgb(it->second.material, gazebo_rgb);
+      }
+      ordered_json visuals = ordered_json::array();
+      for (const description::Visual& v : link.visuals) {
+        ordered_json j = {{"origin", pose_json(v.origin)}};
+        const description::Geometry& g = v.geometry;
+        switch (g.type) {
+          case description::GeometryType::Box:
+            j["type"] = "box";
+            j["size"] = {g.size.x, g.size.y, g.size.z};
+            break;
+          case description::GeometryType::Cylinder:
+            j["type"] = "cylinder";
+            j["radius"] = g.radius;
+            j["length"] = g.length;
+            break;
+          case description::GeometryType::Sphere:
+            j["type"] = "sphere";
+            j["radius"] = g.radius;
+            break;
+          case description::GeometryType::Mesh: {
+            if (g.mesh_path.empty()) {
+              warnings.push_back("link '" + name + "': mesh '" + g.mesh_uri + "' was not found; left out");
               continue;
             }
+            auto it = meshes.find(g.mesh_path);
+            if (it == meshes.end()) {
+              try {
+                const physics::MeshBytes bytes = physics::load_mesh_for_mujoco(g.mesh_path);
+                const std::string file = "meshes/" + std::to_string(meshes.size()) + "_" + safe_stem(g.mesh_path) + bytes.extension;
+                write_file(dir / file, bytes.bytes.data(), bytes.bytes.size());
+                it = meshes.emplace(g.mesh_path, file).first;
+              } catch (const ScenarioError&) {
+                throw;
+              } catch (const std::exception& e) {
+                warnings.push_back("link '" + name + "': " + e.what() + "; left out");
+                continue;
+              }
+            }
+            j["type"] = "mesh";
+            j["file"] = it->second;
+            j["scale"] = {g.mesh_scale.x, g.mesh_scale.y, g.mesh_scale.z};
+            break;
           }
-          j["type"] = "mesh";
-          j["file"] = it->second;
-          j["scale"] = {g.mesh_scale.x, g.mesh_scale.y, g.mesh_scale.z};
-          break;
         }
+        if (v.rgba) {
+          j["rgba"] = {(*v.rgba)[0], (*v.rgba)[1], (*v.rgba)[2], (*v.rgba)[3]};
+        } else {
+          j["rgba"] = {gazebo_rgb[0], gazebo_rgb[1], gazebo_rgb[2], 1.0};
+        }
+        if (!v.rgba && !has_gazebo_colour) j["default_colour"] = true;
+        visuals.push_back(j);
       }
-      if (v.rgba) {
-        j["rgba"] = {(*v.rgba)[0], (*v.rgba)[1], (*v.rgba)[2], (*v.rgba)[3]};
-      } else {
-        j["rgba"] = {gazebo_rgb[0], gazebo_rgb[1], gazebo_rgb[2], 1.0};
-      }
-      if (!v.rgba && !has_gazebo_colour) j["default_colour"] = true;
-      visuals.push_back(j);
+      links.push_back({{"name", name}, {"visuals", visuals}});
     }
-    links.push_back({{"name", link.name}, {"visuals", visuals}});
-  }
-  return {{"name", robot.name}, {"root_link", robot.root_link}, {"links", links}, {"warnings", warnings}};
+  };
+  add_robot(sim.robot(), "");
+  for (std::size_t i = 0; i < sim.other_count(); ++i) add_robot(sim.other(i).robot(), sim.other(i).physics_name(""));
+  return {{"name", sim.robot().name}, {"root_link", sim.robot().root_link}, {"links", links}, {"warnings", warnings}};
 }
 
 // The world's passive models, body by body: each body's primitive shapes in its frame (the
@@ -201,7 +208,7 @@ void write_replay_assets(const Simulation& sim, const fs::path& replay_dir, cons
   fs::create_directories(replay_dir / "meshes", ec);
   if (ec) throw ScenarioError("replay: cannot create " + (replay_dir / "meshes").string() + ": " + ec.message());
   write_text(replay_dir / "robot.urdf", urdf);
-  write_text(replay_dir / "robot.json", robot_json(sim.robot(), replay_dir).dump(1));
+  write_text(replay_dir / "robot.json", robot_json(sim, replay_dir).dump(1));
   ordered_json world = world_json(sim.world(), replay_dir);
   world["bodies"] = passive_bodies_json(sim.physics().model());
   write_text(replay_dir / "world.json", world.dump(1));

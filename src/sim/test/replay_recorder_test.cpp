@@ -261,6 +261,28 @@ TEST_F(ReplayRecorderTest, FreeObjectsMoveInTheFrames) {
   EXPECT_NEAR(crate_x(frames - 1), 2.0, 1e-3);
 }
 
+// Another robot of the scenario (others:) is drawn as the first is: its links, under its prefix,
+// in robot.json with their visuals and in the frames, where the physics has them (2 m to the side).
+TEST_F(ReplayRecorderTest, OtherRobotsAreDrawnAndMoveInTheFrames) {
+  const ScenarioResult r = run("others:\n  - {name: arm2, spawn: {y: 2, z: 0.05}}\n");
+  ASSERT_TRUE(r.completed) << r.error;
+  const fs::path replay = dir_ / "out" / "replay";
+  const nlohmann::json manifest = read_json(replay / "manifest.json");
+  ASSERT_EQ(manifest["links"], (nlohmann::json{"base", "arm", "arm2::base", "arm2::arm"}));
+  const nlohmann::json robot = read_json(replay / "robot.json");
+  ASSERT_EQ(robot["links"].size(), 4u);
+  EXPECT_EQ(robot["links"][2]["name"], "arm2::base");
+  EXPECT_EQ(robot["links"][3]["name"], "arm2::arm");
+  EXPECT_EQ(robot["links"][3]["visuals"], robot["links"][1]["visuals"]) << "the same arm, drawn the same";
+  const std::size_t stride = manifest["poses"]["stride"];
+  ASSERT_EQ(stride, 1u + 7u * 4u);
+  const std::size_t frames = manifest["frames"];
+  const std::vector<float> poses = read_poses(replay, frames, stride);
+  const float* last = &poses[(frames - 1) * stride];
+  EXPECT_NEAR(last[1 + 7 * 2 + 1] - last[1 + 1], 2.0, 1e-3) << "the second base, 2 m along y from the first";
+  EXPECT_NEAR(last[1 + 7 * 3 + 2], last[1 + 7 * 1 + 2], 1e-3) << "its arm at the first arm's height";
+}
+
 // A passive model of an SDF world (a box and an upright cylinder 0.5 m apart on a fixed joint, a
 // body each, welded) is drawn from world.json's bodies and moved by the frames: each body starts
 // where the file puts it and lands (both 0.2 m tall: their centres 0.1 m up).
