@@ -210,6 +210,9 @@ class Physics {
   // Gazebo's Model::SetLinearVel/SetAngularVel: gravity, contacts and joints act from there within
   // the step. Hot path (no allocation); ignored when the robot is fixed to the world.
   void command_root_velocity(const Twist& V_WB) noexcept;
+  // The same for a link whose body floats on a free joint of its own (another robot's root);
+  // ignored for one that does not.
+  void command_free_link_velocity(std::size_t link, const Twist& V_WL) noexcept;
 
   // A world rebuilt with more or fewer robots or objects goes on from `old`'s state: time,
   // gravity, soil (every wheel's soil state by its link, and the ruts); for every body of both

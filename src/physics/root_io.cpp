@@ -71,19 +71,38 @@ bool Physics::free_link_state(std::size_t link, Pose& X_WL, Twist& V_WL) const n
   return true;
 }
 
+namespace {
+
+// Sets free joint j's velocity so that the link at X_BodyL in its body moves with V_WL.
+void command_free_joint(const mjModel* m, mjData* d, int j, const Pose& X_BodyL, const Twist& V_WL) {
+  const mjtNum* q = d->qpos + m->jnt_qposadr[j];
+  mjtNum* v = d->qvel + m->jnt_dofadr[j];
+  const Quat R_WBody = quat_normalized(Quat{q[3], q[4], q[5], q[6]});
+  const Vec3 r = rotate(R_WBody, X_BodyL.position);
+  const Vec3 wr = cross(V_WL.angular, r);
+  const Vec3 w_body = rotate(quat_conjugate(R_WBody), V_WL.angular);
+  const mjtNum values[6] = {V_WL.linear.x - wr.x, V_WL.linear.y - wr.y, V_WL.linear.z - wr.z, w_body.x, w_body.y, w_body.z};
+  for (int i = 0; i < 6; ++i) v[i] = values[i];
+}
+
+}  // namespace
+
 void Physics::command_root_velocity(const Twist& V_WB) noexcept {
   find_root(*model_, *data_);
-  const mjModel* m = data_->m;
   const int j = data_->root_free_joint;
   if (j < 0) return;
-  const mjtNum* q = data_->d->qpos + m->jnt_qposadr[j];
-  mjtNum* v = data_->d->qvel + m->jnt_dofadr[j];
-  const Quat R_WBody = quat_normalized(Quat{q[3], q[4], q[5], q[6]});
-  const Vec3 r = rotate(R_WBody, data_->X_BodyRoot.position);
-  const Vec3 wr = cross(V_WB.angular, r);
-  const Vec3 w_body = rotate(quat_conjugate(R_WBody), V_WB.angular);
-  const mjtNum values[6] = {V_WB.linear.x - wr.x, V_WB.linear.y - wr.y, V_WB.linear.z - wr.z, w_body.x, w_body.y, w_body.z};
-  for (int i = 0; i < 6; ++i) v[i] = values[i];
+  command_free_joint(data_->m, data_->d, j, data_->X_BodyRoot, V_WB);
+  data_->stale = true;
+}
+
+void Physics::command_free_link_velocity(std::size_t link, const Twist& V_WL) noexcept {
+  const mjModel* m = data_->m;
+  if (link >= model_->links().size()) return;
+  const LinkInfo& info = model_->links()[link];
+  if (info.body < 1 || m->body_jntnum[info.body] < 1) return;
+  const int j = m->body_jntadr[info.body];
+  if (m->jnt_type[j] != mjJNT_FREE) return;
+  command_free_joint(m, data_->d, j, info.X_BL, V_WL);
   data_->stale = true;
 }
 

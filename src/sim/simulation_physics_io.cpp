@@ -108,10 +108,14 @@ void Simulation::write_physics() {
       case HardwareInterface::Velocity: physics_->set_velocity_command(pj, js.commanded_velocity); break;
     }
   }
-  // (An other robot's base velocity plugins are not simulated yet: only the first robot's root.)
-  if (state.base_command.active && !root_link_) {
+  if (state.base_command.active) {
     const mechanism::BaseVelocityCommand& c = state.base_command;
-    physics_->command_root_velocity(physics::Twist{{c.vx, c.vy, 0.0}, {0.0, 0.0, c.wz}});
+    const physics::Twist V{{c.vx, c.vy, 0.0}, {0.0, 0.0, c.wz}};
+    if (root_link_) {
+      physics_->command_free_link_velocity(*root_link_, V);
+    } else {
+      physics_->command_root_velocity(V);
+    }
   }
 }
 

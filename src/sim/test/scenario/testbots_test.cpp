@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -42,6 +43,41 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, Testbots,
                                          "gripper_action_close", "gripper_position_action_close", "diffbot_plugin_square",
                                          "turntable_pid_step", "turntable_servo_step"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
+
+// A second planar-move robot in the same world (others:) moves by its own plugin's twists: half
+// the first one's speed forward, twice its speed sideways, 2 m to its left; each ends where its
+// own commands take it and its odometry (the base's world pose) follows it.
+TEST(Testbots, ASecondPlanarMoveRobotDrivesByItsOwnPlugin) {
+  const fs::path file = fs::path(MECHSIM_SOURCE_DIR) / "robots/testbots/scenarios/planarbot_straight_1m.yaml";
+  Scenario s = load_scenario(file.string());
+  OtherRobotConfig second;
+  second.name = "p2";
+  second.description = s.description;
+  second.packages = s.packages;
+  second.spawn = s.spawn;
+  second.spawn.y = 2.0;
+  s.others.push_back(second);
+  const std::vector<TimelineEvent> first = s.timeline;
+  for (TimelineEvent e : first) {
+    e.robot = "p2";
+    e.twist.linear.x *= 0.5;
+    e.twist.linear.y *= 2.0;
+    s.timeline.push_back(e);
+  }
+  std::stable_sort(s.timeline.begin(), s.timeline.end(), [](const TimelineEvent& a, const TimelineEvent& b) { return a.at < b.at; });
+  const ScenarioResult r = run_scenario(s, RunOptions{});
+  ASSERT_TRUE(r.completed) << r.error;
+  ASSERT_EQ(r.others.size(), 1u);
+  const RobotMotion& p2 = r.others[0];
+  std::cout << "[ figures  ] first (" << r.final_x << ", " << r.final_y << "), second (" << p2.final_x << ", "
+            << p2.final_y << "), odometry error " << p2.odometry_error << " m\n";
+  EXPECT_NEAR(r.final_x, 1.0, 0.011);
+  EXPECT_NEAR(r.final_y, 0.5, 0.011);
+  EXPECT_NEAR(p2.final_x, 0.5, 0.011);
+  EXPECT_NEAR(p2.final_y, 3.0, 0.011);
+  ASSERT_TRUE(p2.has_odometry);
+  EXPECT_LT(p2.odometry_error, 0.01 * p2.distance);
+}
 
 }  // namespace
 }  // namespace mechsim::sim
