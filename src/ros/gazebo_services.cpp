@@ -113,6 +113,7 @@ struct GazeboWorld::Entity {
   Kind kind = Kind::World;
   std::string link;  // RobotLink: the URDF link
   std::size_t model = 0;  // WorldModel: index into world_models_
+  SimNode* robot = nullptr;  // Robot, RobotLink: the robot's node
   // The entity's state in the world frame (the robot's, and the world's moving models while a
   // robot's physics holds them, through the robot's loop thread).
   bool state(const GazeboWorld& w, EntityState& out, std::string* status) const {
@@ -120,15 +121,15 @@ struct GazeboWorld::Entity {
     if (kind == Kind::World) return true;
     if (kind == Kind::WorldModel) {
       // Moving models move only in a robot's physics; without one they are where the SDF put them.
-      if (!w.robot_ || model >= w.sdf_model_count_) {
+      if (w.host() == nullptr || model >= w.sdf_model_count_) {
         out.pose = w.world_model_poses_[model];
         return true;
       }
-      const BridgeResult r = w.robot_->bridge().world_model_state(model, out);
+      const BridgeResult r = w.host()->bridge().world_model_state(model, out);
       if (!r.ok) *status = r.error;
       return r.ok;
     }
-    const BridgeResult r = w.robot_->bridge().link_state(kind == Kind::Robot ? std::string() : link, out);
+    const BridgeResult r = robot->bridge().link_state(kind == Kind::Robot ? std::string() : link, out);
     if (!r.ok) *status = r.error;
     return r.ok;
   }
@@ -145,19 +146,23 @@ bool GazeboWorld::resolve(const std::string& name, Entity& out, std::string* sta
       return true;
     }
   }
-  if (robot_) {
-    if (name == robot_name_) {
+  for (const Robot& r : robots_) {
+    if (name == r.name) {
       out.kind = Entity::Kind::Robot;
+      out.robot = r.node.get();
       return true;
     }
-    const auto [model, link] = split_scope(name);
-    if (model.empty() || model == robot_name_) {
-      for (const std::string& l : robot_->bridge().link_names()) {
-        if (l == link) {
-          out.kind = Entity::Kind::RobotLink;
-          out.link = link;
-          return true;
-        }
+  }
+  // "model::link", or a link alone: the first robot (in spawn order) that has it.
+  const auto [model, link] = split_scope(name);
+  for (const Robot& r : robots_) {
+    if (!model.empty() && model != r.name) continue;
+    for (const std::string& l : r.node->bridge().link_names()) {
+      if (l == link) {
+        out.kind = Entity::Kind::RobotLink;
+        out.link = link;
+        out.robot = r.node.get();
+        return true;
       }
     }
   }
@@ -171,26 +176,27 @@ bool GazeboWorld::resolve(const std::string& name, Entity& out, std::string* sta
 
 std::vector<std::string> GazeboWorld::model_names() const {
   std::vector<std::string> names = world_models_;
-  if (robot_) names.push_back(robot_name_);
+  for (const Robot& r : robots_) names.push_back(r.name);
   return names;
 }
 
 void GazeboWorld::advertise_model_services() {
-  // A joint name of the robot ("joint" or "model::joint"); empty when not one.
-  auto joint_of = [this](const std::string& scoped, std::string* status) -> std::string {
+  // A joint of a robot ("model::joint", or "joint": the first robot that has it) and the robot's
+  // node; {nullptr, ""} when none has it.
+  auto joint_of = [this](const std::string& scoped, std::string* status) -> std::pair<SimNode*, std::string> {
     const auto [model, joint] = split_scope(scoped);
-    if (!robot_ || (!model.empty() && model != robot_name_) || robot_->bridge().robot().joint(joint) == nullptr) {
-      *status = "no joint '" + scoped + "' in the world";
-      return "";
+    for (const Robot& r : robots_) {
+      if ((model.empty() || model == r.name) && r.node->bridge().robot().joint(joint) != nullptr) return {r.node.get(), joint};
     }
-    return joint;
+    *status = "no joint '" + scoped + "' in the world";
+    return {nullptr, ""};
   };
-  auto robot_named = [this](const std::string& model, std::string* status) {
-    if (robot_ && model == robot_name_) return true;
+  auto robot_named = [this](const std::string& model, std::string* status) -> SimNode* {
+    if (const Robot* r = find_robot(model)) return r->node.get();
     bool world_model = false;
     for (const std::string& m : world_models_) world_model = world_model || m == model;
     *status = world_model ? "model '" + model + "' is static, part of the world" : "no model '" + model + "' in the world";
-    return false;
+    return nullptr;
   };
 
   using GetModelState = gazebo_msgs::GetModelState;
@@ -244,14 +250,14 @@ void GazeboWorld::advertise_model_services() {
       *status = "the world itself does not move";
       return false;
     }
-    if (target.kind == Entity::Kind::WorldModel && (!robot_ || target.model >= sdf_model_count_)) {
-      *status = robot_ ? "model '" + world_models_[target.model] + "' is static, part of the world"
-                       : "the world's models move in a robot's physics: spawn a robot first";
+    if (target.kind == Entity::Kind::WorldModel && (host() == nullptr || target.model >= sdf_model_count_)) {
+      *status = host() != nullptr ? "model '" + world_models_[target.model] + "' is static, part of the world"
+                                  : "the world's models move in a robot's physics: spawn a robot first";
       return false;
     }
-    if (target.kind == Entity::Kind::RobotLink && target.link != robot_->bridge().robot().root_link) {
+    if (target.kind == Entity::Kind::RobotLink && target.link != target.robot->bridge().robot().root_link) {
       *status = "link '" + target.link + "' is moved by its joints: mechsim sets a robot's root link (" +
-                robot_->bridge().robot().root_link + ", the model's pose) only";
+                target.robot->bridge().robot().root_link + ", the model's pose) only";
       return false;
     }
     // The request's own numbers first: composing with the frame normalises the orientation, which
@@ -269,8 +275,8 @@ void GazeboWorld::advertise_model_services() {
     given.linear = vec_from(twist.linear);
     given.angular = vec_from(twist.angular);
     const BridgeResult r = target.kind == Entity::Kind::WorldModel
-                               ? robot_->bridge().set_world_model_state(target.model, absolute(X_WR, given))
-                               : robot_->bridge().set_root_state(absolute(X_WR, given));
+                               ? host()->bridge().set_world_model_state(target.model, absolute(X_WR, given))
+                               : target.robot->bridge().set_root_state(absolute(X_WR, given));
     if (!r.ok) *status = r.error;
     return r.ok;
   };
@@ -334,9 +340,9 @@ void GazeboWorld::advertise_model_services() {
         if (model.kind == Entity::Kind::WorldModel) {
           res.is_static = true;
         } else {
-          const description::RobotModel& robot = robot_->bridge().robot();
+          const description::RobotModel& robot = model.robot->bridge().robot();
           res.canonical_body_name = robot.root_link;
-          res.body_names = robot_->bridge().link_names();
+          res.body_names = model.robot->bridge().link_names();
           for (const description::Link& link : robot.links)
             for (std::size_t i = 0; i < link.collisions.size(); ++i)
               res.geom_names.push_back(link.collisions[i].name.empty() ? link.name + "_collision_" + std::to_string(i)
@@ -353,11 +359,11 @@ void GazeboWorld::advertise_model_services() {
   services_.push_back(root_nh_.advertiseService<GetJoint::Request, GetJoint::Response>(
       "/gazebo/get_joint_properties", [this, joint_of](GetJoint::Request& req, GetJoint::Response& res) {
         std::lock_guard<std::mutex> lock(mutex_);
-        const std::string joint = joint_of(req.joint_name, &res.status_message);
-        res.success = !joint.empty();
+        const auto [robot, joint] = joint_of(req.joint_name, &res.status_message);
+        res.success = robot != nullptr;
         if (!res.success) return true;
         JointPropertiesData p;
-        const BridgeResult r = robot_->bridge().joint_properties(joint, p);
+        const BridgeResult r = robot->bridge().joint_properties(joint, p);
         res.success = r.ok;
         if (!r.ok) {
           res.status_message = r.error;
@@ -383,7 +389,7 @@ void GazeboWorld::advertise_model_services() {
         }
         if (!res.success) return true;
         LinkPropertiesData p;
-        const BridgeResult r = robot_->bridge().link_properties(link.link, p);
+        const BridgeResult r = link.robot->bridge().link_properties(link.link, p);
         res.success = r.ok;
         res.status_message = r.ok ? "GetLinkProperties: got properties" : r.error;
         res.com = to_msg(p.com);
@@ -401,7 +407,7 @@ void GazeboWorld::advertise_model_services() {
         res.pause = paused();
         // gazebo's real_time_update_rate: steps per wall second (0: as fast as possible).
         res.max_update_rate = real_time_factor_.load() / options_.period;
-        res.gravity = to_msg(robot_ ? robot_->bridge().gravity() : gravity_);
+        res.gravity = to_msg(host() != nullptr ? host()->bridge().gravity() : gravity_);
         res.success = true;
         res.status_message = "GetPhysicsProperties: mechsim steps MuJoCo; ode_config is not used";
         return true;
@@ -424,9 +430,9 @@ void GazeboWorld::advertise_model_services() {
           const double factor = req.max_update_rate * options_.period;
           real_time_factor_.store(factor);
           gravity_ = g;
-          if (robot_) {
-            robot_->bridge().set_real_time_factor(factor);
-            const BridgeResult r = robot_->bridge().set_gravity(g);
+          if (host() != nullptr) {  // the world's: every robot's
+            host()->bridge().set_real_time_factor(factor);
+            const BridgeResult r = host()->bridge().set_gravity(g);
             res.status_message = r.error;
             res.success = r.ok;
           } else {
@@ -442,9 +448,10 @@ void GazeboWorld::advertise_model_services() {
       "/gazebo/set_model_configuration",
       [this, robot_named](SetConfig::Request& req, SetConfig::Response& res) {
         std::lock_guard<std::mutex> lock(mutex_);
-        res.success = robot_named(req.model_name, &res.status_message);
+        SimNode* robot = robot_named(req.model_name, &res.status_message);
+        res.success = robot != nullptr;
         if (!res.success) return true;
-        const BridgeResult r = robot_->bridge().set_joint_positions(req.joint_names, req.joint_positions);
+        const BridgeResult r = robot->bridge().set_joint_positions(req.joint_names, req.joint_positions);
         res.success = r.ok;
         res.status_message = r.ok ? "SetModelConfiguration: success" : r.error;
         return true;
@@ -464,15 +471,15 @@ void GazeboWorld::advertise_model_services() {
           res.status_message = "'" + req.body_name + "' is no body of a robot";
         }
         if (!res.success) return true;
-        const std::string link = body.kind == Entity::Kind::Robot ? robot_->bridge().robot().root_link : body.link;
+        const std::string link = body.kind == Entity::Kind::Robot ? body.robot->bridge().robot().root_link : body.link;
         const auto& q = X_WF.pose.orientation;
         const Vec3 f = physics::rotate(q, vec_from(req.wrench.force));
         const Vec3 t = physics::rotate(q, vec_from(req.wrench.torque));
         // reference_point: where the force acts, from the body's centre of mass, along the
         // reference frame's axes (gazebo_ros adds reference_point x force to the torque).
         const Vec3 offset = physics::rotate(q, Vec3{req.reference_point.x, req.reference_point.y, req.reference_point.z});
-        const BridgeResult r = robot_->bridge().apply_link_wrench(link, f, t, offset, req.start_time.toSec(),
-                                                                  req.duration.toSec());
+        const BridgeResult r = body.robot->bridge().apply_link_wrench(link, f, t, offset, req.start_time.toSec(),
+                                                                      req.duration.toSec());
         res.success = r.ok;
         res.status_message = r.ok ? "ApplyBodyWrench: success" : r.error;
         return true;
@@ -482,11 +489,11 @@ void GazeboWorld::advertise_model_services() {
   services_.push_back(root_nh_.advertiseService<Effort::Request, Effort::Response>(
       "/gazebo/apply_joint_effort", [this, joint_of](Effort::Request& req, Effort::Response& res) {
         std::lock_guard<std::mutex> lock(mutex_);
-        const std::string joint = joint_of(req.joint_name, &res.status_message);
-        res.success = !joint.empty();
+        const auto [robot, joint] = joint_of(req.joint_name, &res.status_message);
+        res.success = robot != nullptr;
         if (!res.success) return true;
-        const BridgeResult r = robot_->bridge().apply_joint_effort(joint, req.effort, req.start_time.toSec(),
-                                                                   req.duration.toSec());
+        const BridgeResult r = robot->bridge().apply_joint_effort(joint, req.effort, req.start_time.toSec(),
+                                                                  req.duration.toSec());
         res.success = r.ok;
         res.status_message = r.ok ? "ApplyJointEffort: effort set" : r.error;
         return true;
@@ -502,7 +509,7 @@ void GazeboWorld::advertise_model_services() {
           ROS_WARN_STREAM("mechsim: /gazebo/clear_body_wrenches: no body '" << req.body_name << "'");
           return true;
         }
-        const BridgeResult r = robot_->bridge().clear_link_wrenches(body.link);
+        const BridgeResult r = body.robot->bridge().clear_link_wrenches(body.link);
         if (!r.ok) ROS_WARN_STREAM("mechsim: /gazebo/clear_body_wrenches: " << r.error);
         return true;
       }));
@@ -512,8 +519,8 @@ void GazeboWorld::advertise_model_services() {
       "/gazebo/clear_joint_forces", [this, joint_of](Joint::Request& req, Joint::Response&) {
         std::lock_guard<std::mutex> lock(mutex_);
         std::string status;
-        const std::string joint = joint_of(req.joint_name, &status);
-        const BridgeResult r = joint.empty() ? BridgeResult{false, status} : robot_->bridge().clear_joint_efforts(joint);
+        const auto [robot, joint] = joint_of(req.joint_name, &status);
+        const BridgeResult r = robot == nullptr ? BridgeResult{false, status} : robot->bridge().clear_joint_efforts(joint);
         if (!r.ok) ROS_WARN_STREAM("mechsim: /gazebo/clear_joint_forces: " << r.error);
         return true;
       }));

@@ -49,37 +49,48 @@ void GazeboWorld::publish_states(double time) {
   const bool links = t.link_subscribers.load(std::memory_order_relaxed) > 0;
   if ((!models && !links) || time + 1e-9 < t.next_states) return;
   t.next_states = time + (options_.model_states_rate > 0.0 ? 1.0 / options_.model_states_rate : 0.0);
-  // The observer runs while the robot exists (remove() stops its loop before it goes).
-  const SimBridge& bridge = robot_->bridge();
-  bridge.link_states_now(t.links);
-  const std::vector<std::string>& names = bridge.link_names();
+  // The world's loop thread: robots_ changes only under robots_mutex_ (spawn, delete), and the
+  // first robot, whose loop this is, stays while others are in.
+  std::lock_guard<std::mutex> lock(robots_mutex_);
+  t.robot_links.resize(robots_.size());
+  for (std::size_t r = 0; r < robots_.size(); ++r) robots_[r].node->bridge().link_states_now(t.robot_links[r]);
   if (models) {
     gazebo_msgs::ModelStates& m = t.model_msg;
-    const std::size_t n = world_models_.size() + 1;
+    const std::size_t n = world_models_.size() + robots_.size();
     m.name.resize(n);
     m.pose.resize(n);
     m.twist.resize(n);
-    bridge.world_model_states_now(t.world_models);
+    robots_.front().node->bridge().world_model_states_now(t.world_models);
     for (std::size_t i = 0; i < world_models_.size(); ++i) {
       m.name[i] = world_models_[i];
       // An SDF world's models where the physics has them; the ground plane of mechsim's own
       // worlds at the origin.
       fill(i < t.world_models.size() ? t.world_models[i] : EntityState{}, m.pose[i], m.twist[i]);
     }
-    m.name[n - 1] = robot_name_;
-    const std::string& root = bridge.robot().root_link;
-    for (std::size_t i = 0; i < names.size(); ++i)
-      if (names[i] == root) fill(t.links[i], m.pose[n - 1], m.twist[n - 1]);
+    for (std::size_t r = 0; r < robots_.size(); ++r) {
+      const std::size_t k = world_models_.size() + r;
+      const SimBridge& bridge = robots_[r].node->bridge();
+      const std::vector<std::string>& names = bridge.link_names();
+      m.name[k] = robots_[r].name;
+      for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == bridge.robot().root_link) fill(t.robot_links[r][i], m.pose[k], m.twist[k]);
+    }
     t.model_states.publish(m);
   }
   if (links) {
     gazebo_msgs::LinkStates& l = t.link_msg;
-    l.name.resize(names.size());
-    l.pose.resize(names.size());
-    l.twist.resize(names.size());
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      l.name[i] = robot_name_ + "::" + names[i];
-      fill(t.links[i], l.pose[i], l.twist[i]);
+    std::size_t count = 0;
+    for (const auto& links_of : t.robot_links) count += links_of.size();
+    l.name.resize(count);
+    l.pose.resize(count);
+    l.twist.resize(count);
+    std::size_t k = 0;
+    for (std::size_t r = 0; r < robots_.size(); ++r) {
+      const std::vector<std::string>& names = robots_[r].node->bridge().link_names();
+      for (std::size_t i = 0; i < names.size(); ++i, ++k) {
+        l.name[k] = robots_[r].name + "::" + names[i];
+        fill(t.robot_links[r][i], l.pose[k], l.twist[k]);
+      }
     }
     t.link_states.publish(l);
   }

@@ -17,8 +17,8 @@ struct GazeboWorld::Topics {
   // Subscriber counts from roscpp's connect callbacks: the loop thread loads an atomic.
   std::atomic<int> model_subscribers{0}, link_subscribers{0};
   double next_states = 0.0;  // s, sim time (loop thread)
-  // The robot's loop thread fills these (reused: no allocation once sized).
-  std::vector<EntityState> links;
+  // The world's loop thread fills these (reused: no allocation once sized).
+  std::vector<std::vector<EntityState>> robot_links;  // per robot, SimBridge::link_names() order
   std::vector<EntityState> world_models;  // the SDF world's models (SimBridge::world_model_states_now)
   gazebo_msgs::ModelStates model_msg;
   gazebo_msgs::LinkStates link_msg;

@@ -8,6 +8,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <std_srvs/Empty.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -86,25 +87,44 @@ void GazeboWorld::stop() {
   stop_.store(true);
   if (clock_thread_.joinable()) clock_thread_.join();
   std::lock_guard<std::mutex> lock(mutex_);
-  if (robot_) robot_->stop();
+  if (robots_.empty()) return;
+  robots_.front().node->stop();  // the world's loop: the other robots stop with it
+  // The later robots' simulations go with the first one's: they are forgotten, not deleted.
+  std::vector<Robot> others;
+  {
+    std::lock_guard<std::mutex> clock(clock_mutex_);
+    std::lock_guard<std::mutex> robots(robots_mutex_);
+    for (std::size_t i = robots_.size(); i-- > 1;) {
+      robots_[i].node->bridge().detach_from_world();
+      others.push_back(std::move(robots_[i]));
+    }
+    robots_.resize(1);
+  }
+  others.clear();
+}
+
+const GazeboWorld::Robot* GazeboWorld::find_robot(const std::string& name) const {
+  for (const Robot& r : robots_)
+    if (r.name == name) return &r;
+  return nullptr;
 }
 
 double GazeboWorld::time() const {
   std::lock_guard<std::mutex> lock(clock_mutex_);
-  return robot_ ? robot_->bridge().time() : static_cast<double>(ticks_) * options_.period;
+  return host() != nullptr ? host()->bridge().time() : static_cast<double>(ticks_) * options_.period;
 }
 
 bool GazeboWorld::paused() const {
   std::lock_guard<std::mutex> lock(clock_mutex_);
-  return robot_ ? robot_->bridge().paused() : paused_.load();
+  return host() != nullptr ? host()->bridge().paused() : paused_.load();
 }
 
 void GazeboWorld::set_paused(bool paused) {
   std::lock_guard<std::mutex> lock(clock_mutex_);
   paused_.store(paused);
-  if (!robot_) return;
-  if (paused) robot_->bridge().pause();
-  else robot_->bridge().unpause();
+  if (host() == nullptr) return;
+  if (paused) host()->bridge().pause();
+  else host()->bridge().unpause();
 }
 
 void GazeboWorld::clock_loop() {
@@ -117,7 +137,7 @@ void GazeboWorld::clock_loop() {
   while (!stop_.load() && ::ros::ok()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
     std::lock_guard<std::mutex> lock(clock_mutex_);
-    if (robot_) {  // the robot's loop runs the clock
+    if (host() != nullptr) {  // the first robot's loop runs the clock
       anchored = false;
       continue;
     }
@@ -160,7 +180,7 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   };
   if (name.empty()) return refuse("model_name is empty");
   if (name.find("::") != std::string::npos) return refuse("model_name '" + name + "' holds '::' (Gazebo's scope separator)");
-  if (name == robot_name_ && robot_) return refuse("a model named '" + name + "' is in the world already");
+  if (find_robot(name) != nullptr) return refuse("a model named '" + name + "' is in the world already");
   for (const std::string& m : world_models_)
     if (m == name) return refuse("a model named '" + name + "' is in the world already");
   if (!finite(X_RM)) return refuse("initial_pose is not finite");
@@ -196,10 +216,6 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
-  if (robot_) {
-    return refuse("model '" + robot_name_ + "' is in the world: mechsim's node simulates one robot per world "
-                  "(delete it first; several robots in one world run standalone but not through the ROS node yet)");
-  }
   bridge.robot.name = name;
   NodeOptions node = options_.node;
   node.gazebo_services = false;
@@ -212,6 +228,21 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   if (ns.front() != '/') ns = "/" + ns;
   node.robot_namespace = ns;
   node.pr2 = node.pr2 || pr2;
+  for (const Robot& r : robots_) {
+    // Two controller managers cannot answer under one name.
+    if (r.ns == ns) {
+      return refuse("robot namespace '" + ns + "' is model '" + r.name + "'s: give each robot its own (spawn_model " +
+                    "-robot_namespace, or the gazebo_ros_control plugin's <robotNamespace>)");
+    }
+    if (r.pr2 && node.pr2) {
+      return refuse("model '" + r.name + "' has /pr2_controller_manager already: one PR2 controller manager per world");
+    }
+  }
+  SimNode* first = host();
+  if (first != nullptr && node.pr2) {
+    return refuse("a PR2 (pr2_controller_manager, mechanism statistics, sensors) can only be the first robot of a "
+                  "world in mechsim: spawn it before model '" + robots_.front().name + "'");
+  }
   bridge.world = world_name_;
   bridge.x = X_WM.position.x;
   bridge.y = X_WM.position.y;
@@ -224,29 +255,57 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   bridge.controller_params = key.empty() ? root : root.child_or_create(key);
   bridge.parameter_root = root;
 
-  std::lock_guard<std::mutex> lock(clock_mutex_);  // the clock stands still while the robot comes in
-  bridge.start_time = static_cast<double>(ticks_) * options_.period;
-  bridge.paused = paused_.load();
-  try {
-    auto node_ptr = std::make_unique<SimNode>(private_nh_, std::move(bridge), node);
-    for (const std::string& w : node_ptr->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
-    if (std::abs(gravity_.z + 9.81) > 1e-12 || gravity_.x != 0.0 || gravity_.y != 0.0) node_ptr->bridge().set_gravity(gravity_);
-    node_ptr->bridge().add_observer([this](double t) { publish_states(t); });
-    robot_ = std::move(node_ptr);
-    robot_name_ = name;
-  } catch (const std::exception& e) {
-    return refuse(e.what());
+  Robot robot;
+  robot.name = name;
+  robot.ns = ns;
+  robot.pr2 = node.pr2;
+  if (first != nullptr) {
+    // Another robot of the running world: taken in between two ticks of the first one's loop.
+    try {
+      robot.node = std::make_unique<SimNode>(private_nh_, std::move(bridge), node, first);
+    } catch (const std::exception& e) {
+      return refuse(e.what());
+    }
+    for (const std::string& w : robot.node->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
+    std::string sensors;
+    for (const description::SensorSpec& sensor : robot.node->bridge().robot().sensors)
+      sensors += (sensors.empty() ? "" : ", ") + sensor.name;
+    if (!sensors.empty()) {
+      ROS_WARN_STREAM("mechsim: model '" << name << "': its sensors are not simulated (only the first robot of a "
+                                         << "world has its sensors): " << sensors);
+    }
+    robot.node->start();
+  } else {
+    std::lock_guard<std::mutex> lock(clock_mutex_);  // the clock stands still while the robot comes in
+    bridge.start_time = static_cast<double>(ticks_) * options_.period;
+    bridge.paused = paused_.load();
+    try {
+      robot.node = std::make_unique<SimNode>(private_nh_, std::move(bridge), node);
+      for (const std::string& w : robot.node->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
+      if (std::abs(gravity_.z + 9.81) > 1e-12 || gravity_.x != 0.0 || gravity_.y != 0.0) robot.node->bridge().set_gravity(gravity_);
+      robot.node->bridge().add_observer([this](double t) { publish_states(t); });
+    } catch (const std::exception& e) {
+      return refuse(e.what());
+    }
   }
-  robot_->start();
-  ROS_INFO_STREAM("mechsim: spawned '" << name << "' at t = " << robot_->bridge().time() << " s"
+  SimNode& added = *robot.node;
+  {
+    std::lock_guard<std::mutex> clock(clock_mutex_);
+    std::lock_guard<std::mutex> robots(robots_mutex_);
+    robots_.push_back(std::move(robot));
+  }
+  if (first == nullptr) added.start();
+  ROS_INFO_STREAM("mechsim: spawned '" << name << "' at t = " << added.bridge().time() << " s"
                                        << ", controller manager at " << ns << (ns.back() == '/' ? "" : "/")
-                                       << "controller_manager" << (paused_.load() ? " (paused)" : ""));
+                                       << "controller_manager" << (paused() ? " (paused)" : "")
+                                       << (first != nullptr ? " (ticked with '" + robots_.front().name + "')" : ""));
   *status = "SpawnModel: Successfully spawned entity";
   return true;
 }
 
 bool GazeboWorld::remove(const std::string& name, std::string* status) {
-  if (!robot_ || name != robot_name_) {
+  const auto it = std::find_if(robots_.begin(), robots_.end(), [&](const Robot& r) { return r.name == name; });
+  if (it == robots_.end()) {
     for (const std::string& m : world_models_) {
       if (m == name) {
         *status = "DeleteModel: '" + name + "' is part of the world mechsim built (" + world_name_ + "): it stays";
@@ -256,15 +315,38 @@ bool GazeboWorld::remove(const std::string& name, std::string* status) {
     *status = "DeleteModel: model [" + name + "] does not exist";
     return false;
   }
-  std::lock_guard<std::mutex> lock(clock_mutex_);
-  robot_->stop();
-  const std::vector<std::string> controllers = robot_->unload_all_controllers();
-  const double t = robot_->bridge().time();
-  paused_.store(robot_->bridge().paused());
-  robot_.reset();
-  ticks_ = static_cast<std::uint64_t>(std::llround(t / options_.period));
+  if (it == robots_.begin() && robots_.size() > 1) {
+    std::string later;
+    for (std::size_t i = 1; i < robots_.size(); ++i) later += (i > 1 ? ", " : "") + robots_[i].name;
+    *status = "DeleteModel: model '" + name + "' was spawned first and holds the world's physics in mechsim: delete " +
+              "the models spawned after it first (" + later + ")";
+    return false;
+  }
+  Robot gone;
+  {
+    std::lock_guard<std::mutex> clock(clock_mutex_);
+    std::lock_guard<std::mutex> robots(robots_mutex_);
+    gone = std::move(*it);
+    robots_.erase(it);
+  }
+  std::vector<std::string> controllers;
+  if (gone.node->bridge().is_other_robot()) {
+    // The world goes on: outputs off, controllers stopped and unloaded, then out of the physics.
+    gone.node->stop();
+    controllers = gone.node->unload_all_controllers();
+    const BridgeResult r = gone.node->bridge().remove_from_world();
+    if (!r.ok) ROS_ERROR_STREAM("mechsim: deleting '" << name << "': " << r.error);
+    gone.node.reset();
+  } else {
+    std::lock_guard<std::mutex> lock(clock_mutex_);
+    gone.node->stop();
+    controllers = gone.node->unload_all_controllers();
+    const double t = gone.node->bridge().time();
+    paused_.store(gone.node->bridge().paused());
+    gone.node.reset();
+    ticks_ = static_cast<std::uint64_t>(std::llround(t / options_.period));
+  }
   ROS_INFO_STREAM("mechsim: deleted '" << name << "' (" << controllers.size() << " controllers stopped and unloaded)");
-  robot_name_.clear();
   *status = "DeleteModel: successfully deleted model";
   return true;
 }
@@ -282,16 +364,16 @@ bool GazeboWorld::step(std::uint64_t steps, std::string* status) {
               " per call (the /gazebo services wait for the steps to run); step in smaller parts";
     return false;
   }
-  if (robot_) {
-    robot_->bridge().request_steps(steps);
+  if (host() != nullptr) {
+    host()->bridge().request_steps(steps);
   } else {
     pending_steps_.fetch_add(steps);
   }
   // A tick of a robot takes well under 10 ms of wall time; a minute is a stuck loop.
   const auto deadline = Clock::now() + std::chrono::duration<double>(60.0 + 0.01 * static_cast<double>(steps));
-  while (robot_ ? robot_->bridge().pending_steps() > 0 : pending_steps_.load() > 0) {
+  while (host() != nullptr ? host()->bridge().pending_steps() > 0 : pending_steps_.load() > 0) {
     if (Clock::now() > deadline || !::ros::ok()) {
-      if (robot_) robot_->bridge().cancel_steps();
+      if (host() != nullptr) host()->bridge().cancel_steps();
       *status = "the steps did not run in time (the simulation loop is stuck?)";
       return false;
     }
@@ -318,7 +400,7 @@ void GazeboWorld::advertise_world_services() {
   // goes on (sim/simulation.hpp says why).
   auto reset = [this](Empty::Request&, Empty::Response&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (robot_) robot_->bridge().request_reset();
+    if (host() != nullptr) host()->bridge().request_reset();
     return true;
   };
   services_.push_back(root_nh_.advertiseService<Empty::Request, Empty::Response>("/gazebo/reset_simulation", reset));

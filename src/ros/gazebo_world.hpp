@@ -5,17 +5,20 @@
 // Gazebo. It offers gazebo_ros' /gazebo/* API with gazebo_msgs' wire format (gazebo_services.cpp)
 // and topics (gazebo_topics.cpp).
 //
-// Models: the world's own (a ground plane, static boxes of an SDF world) and one robot at a time,
-// a SimNode (sim_node.hpp: its controller manager under its robot namespace, topics, sensors).
-// A second robot is refused with a message: the simulation runs several robots in one physics
-// (sim::OtherRobot, Simulation::add_other), but the node does not give them their own controller
-// managers and topics yet.
-// A spawned robot goes on from the world's time (no jump); deleting it stops and unloads its
-// controllers first, and the world's clock goes on from the robot's time.
+// Models: the world's own (a ground plane, static boxes of an SDF world) and the robots spawned
+// into it, each a SimNode (sim_node.hpp: its controller manager under its robot namespace, topics,
+// model plugins). The first robot's SimNode ticks the world (its loop thread, /clock, its
+// sensors); each later one is another robot of that world (sim::Simulation::add_other): its own
+// controller manager and topics, in the same physics (they collide), ticked by the first one's
+// loop; its sensors are not simulated. Spawning one during a run takes it in between two ticks:
+// the robots already there go on undisturbed (no time jump, no controller restart). A spawned
+// robot goes on from the world's time; deleting one stops and unloads its controllers first (the
+// others drive on); deleting the first robot while later ones are in is refused (its simulation
+// holds the world's physics), and once it is gone the world's clock goes on from its time.
 //
 // Threads: while no robot is in, the clock thread advances time (paced at the real-time factor,
-// real time when that is 0) and publishes /clock; a robot's SimNode runs its own loop thread,
-// and everything that reads or changes its physics runs there between ticks (SimBridge's model
+// real time when that is 0) and publishes /clock; the first robot's SimNode runs the loop thread,
+// and everything that reads or changes the physics runs there between ticks (SimBridge's model
 // API). Services run on the node's spinner threads, one at a time (`mutex_`).
 
 #include <atomic>
@@ -80,7 +83,7 @@ class GazeboWorld {
   std::vector<std::string> model_names() const;
   // ---- gazebo_topics.cpp
   void advertise_topics();
-  void publish_states(double time);  // the robot's loop thread
+  void publish_states(double time);  // the world's loop thread
   void publish_performance();        // 1 Hz wall
 
   ::ros::NodeHandle private_nh_, root_nh_;
@@ -94,9 +97,20 @@ class GazeboWorld {
   bool has_ground_ = true;
   description::Vec3 gravity_{0.0, 0.0, -9.81};  // m/s^2, for robots spawned later
 
-  std::mutex mutex_;  // one /gazebo service at a time; guards the robot's lifetime
-  std::string robot_name_;
-  std::unique_ptr<SimNode> robot_;
+  std::mutex mutex_;  // one /gazebo service at a time; guards the robots' lifetimes
+  struct Robot {
+    std::string name;       // the model's name
+    std::string ns;         // its controller manager's namespace
+    bool pr2 = false;       // pr2_controller_manager's services (one per world: they have fixed names)
+    std::unique_ptr<SimNode> node;
+  };
+  // In spawn order; the first ticks the world. Changed by services under mutex_ and, since the
+  // loop thread reads it (publish_states), also under robots_mutex_, never held while waiting
+  // for the loop.
+  std::vector<Robot> robots_;
+  mutable std::mutex robots_mutex_;
+  SimNode* host() const { return robots_.empty() ? nullptr : robots_.front().node.get(); }
+  const Robot* find_robot(const std::string& name) const;
 
   // The clock while no robot is in (clock_mutex_ guards ticks_ against the spawn's handover).
   mutable std::mutex clock_mutex_;

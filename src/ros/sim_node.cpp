@@ -14,8 +14,9 @@
 
 namespace mechsim::ros {
 
-SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options)
-    : private_nh_(std::move(nh)), root_nh_("/"), robot_nh_(options.robot_namespace), options_(std::move(options)) {
+SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options, SimNode* host)
+    : private_nh_(std::move(nh)), root_nh_("/"), robot_nh_(options.robot_namespace), options_(std::move(options)),
+      other_robot_(host != nullptr) {
   // The controllers' parameters as they are now; each load re-reads its own namespace.
   XmlRpc::XmlRpcValue all;
   if (robot_nh_.getParam(robot_nh_.getNamespace(), all) && all.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
@@ -32,14 +33,15 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
     set_param_from_xmlrpc(*bridge.parameter_root, "gazebo_ros_control", gains, &warning);
     if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
   }
-  bridge_ = std::make_unique<SimBridge>(std::move(bridge));
+  bridge_ = host != nullptr ? std::make_unique<SimBridge>(host->bridge(), std::move(bridge))
+                            : std::make_unique<SimBridge>(std::move(bridge));
   for (const std::string& note : bridge_->joint_drive_notes()) ROS_INFO_STREAM("mechsim: " << note);
   if (const auto plugin = description::find_ros_control_plugin(bridge_->robot()); plugin && !plugin->default_hw()) {
     ROS_WARN_STREAM("mechsim: " << plugin->origin << ": gazebo_ros_control robotSimType '" << plugin->robot_sim_type
                                 << "' is not simulated (mechsim cannot load a RobotHWSim plugin): the transmissions' "
                                    "joints get gazebo_ros_control/DefaultRobotHWSim's behaviour instead");
   }
-  clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  if (!other_robot_) clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);  // the host's loop has it
   if (!bridge_->e_stop_topic().empty()) {
     // gazebo_ros_control subscribes to its <eStopTopic> in the robot's namespace, queue 1.
     SimBridge* sim = bridge_.get();
@@ -56,7 +58,9 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
     tf_->publish_static(bridge_->time());
   }
-  if (options_.foxglove_port >= 0) {
+  if (options_.foxglove_port >= 0 && other_robot_) {
+    ROS_WARN_STREAM("mechsim: model '" << bridge_->robot().name << "': no live view of its own (the world's first robot has it)");
+  } else if (options_.foxglove_port >= 0) {
     const std::string url = bridge_->start_live_view(options_.foxglove_address, options_.foxglove_port,
                                                      options_.robot_description, options_.foxglove_rate);
     ROS_INFO_STREAM("mechsim: live view on " << url << " (Foxglove WebSocket protocol: Foxglove Studio, Lichtblick)");
@@ -65,7 +69,9 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
   if (options_.pr2) bridge_->enable_mechanism_statistics();
   sensors_ = std::make_unique<SensorPublishers>(root_nh_, *bridge_);
   plugins_ = std::make_unique<ModelPluginTopics>(root_nh_, *bridge_);
-  bridge_->add_observer([this](double time) { on_tick(time); });
+  bridge_->add_observer([this](double time) {
+    if (!other_robot_ || outputs_on_.load(std::memory_order_acquire)) on_tick(time);
+  });
   if (options_.gazebo_services) advertise_sim_services();
   advertise_controller_manager();
   if (options_.pr2) {
@@ -74,14 +80,27 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
   }
 }
 
-SimNode::~SimNode() { stop(); }
+SimNode::~SimNode() {
+  stop();
+  // Out of the world before the members its observer reaches go.
+  if (other_robot_) bridge_->remove_from_world();
+}
 
 void SimNode::start() {
+  if (other_robot_) {
+    outputs_on_.store(true, std::memory_order_release);
+    return;
+  }
   stop_.store(false);
   loop_thread_ = std::thread([this] { loop(); });
 }
 
 void SimNode::stop() {
+  if (other_robot_) {
+    outputs_on_.store(false, std::memory_order_release);
+    bridge_->wait_for_loop();
+    return;
+  }
   stop_.store(true);
   if (!loop_thread_.joinable()) return;
   loop_thread_.join();
@@ -131,7 +150,7 @@ void SimNode::loop() {
 }
 
 void SimNode::on_tick(double time) {
-  if (time + 1e-9 >= next_clock_) {
+  if (!other_robot_ && time + 1e-9 >= next_clock_) {
     rosgraph_msgs::Clock clock;
     clock.clock = ::ros::Time(time);
     clock_pub_.publish(clock);

@@ -63,12 +63,15 @@ struct NodeOptions {
 class SimNode {
  public:
   // `nh` is the node's private handle (~). Throws std::runtime_error when the robot, world or
-  // parameters are unusable.
-  SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options);
+  // parameters are unusable. With `host`, the robot is another robot of host's world
+  // (SimBridge's other-robot constructor; bridge.robot.name is its model name): it has no loop
+  // thread or /clock of its own, host's loop ticks it and runs its outputs after each tick; it
+  // leaves the world when the node goes (its controllers stopped and unloaded first).
+  SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options, SimNode* host = nullptr);
   ~SimNode();
 
-  void start();  // loop thread
-  void stop();   // joins it
+  void start();  // loop thread (another robot: its outputs start)
+  void stop();   // joins it (another robot: its outputs stop; returns once the last ran)
   // After stop(): stops every controller (their stopping() runs) and unloads them, topics first
   // (a model being deleted). Returns their names.
   std::vector<std::string> unload_all_controllers();
@@ -126,6 +129,8 @@ class SimNode {
 
   std::thread loop_thread_;
   std::atomic<bool> stop_{false};
+  bool other_robot_ = false;             // another robot of a host's world (no loop of its own)
+  std::atomic<bool> outputs_on_{false};  // another robot: on_tick runs (start() to stop())
   std::string divergence_;
   double loop_cpu_seconds_ = 0.0;  // CPU time of the loop thread, set when it ends
 };

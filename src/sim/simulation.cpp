@@ -181,6 +181,7 @@ void Simulation::rebuild_physics(const std::vector<OtherRobot>& others) {
   physics_model_ = std::move(model);
   physics_ = std::move(physics);
   build_ = build;
+  ++generation_;
   bind_physics();
   for (const auto& o : others_) o->bind_physics();
 }

@@ -225,6 +225,14 @@ class Simulation {
   std::string physics_name(const std::string& name) const { return prefix_ + name; }
   // X_W<root link> now.
   description::Pose base_pose() const;
+  // The root link floats (not fixed to the world).
+  bool floating() const { return floating_; }
+  // Counts the world's physics rebuilds (add_other, remove_other): indices into physics().model()
+  // kept from before a change of it are stale. The same for every robot of the world.
+  std::uint64_t physics_generation() const { return host_ != nullptr ? host_->generation_ : generation_; }
+  // The simulation that ticks this robot: itself for the first robot, the host for an other one.
+  Simulation& world_host() { return host_ != nullptr ? *host_ : *this; }
+  const Simulation& world_host() const { return host_ != nullptr ? *host_ : *this; }
 
   const description::RobotModel& robot() const { return robot_; }
   const World& world() const { return world_; }
@@ -242,7 +250,10 @@ class Simulation {
   sensors::SensorSet& sensors() { return sensors_; }
   const sensors::SensorSet& sensors() const { return sensors_; }
   // Forces from outside (Gazebo's apply_body_wrench, apply_joint_effort), applied before each
-  // physics step while any is queued; reset() clears them. Loop thread (a posted command).
+  // physics step while any is queued; reset() clears them, and so does deleting an other robot
+  // (they are held by physics index). Only the first robot's are applied: forces on an other
+  // robot go into world_host().external_forces() under its physics names. Loop thread (a posted
+  // command).
   ExternalForces& external_forces() { return external_; }
   // After a command wrote the physics state (a pose, joint positions): the mechanism state and
   // the sensors are brought to it, so that they describe time() again. Loop thread.
@@ -381,6 +392,7 @@ class Simulation {
   std::vector<std::uint64_t> notice_ticks_;  // the tick that raised each physics notice
   StartupTimes startup_times_;
   std::uint64_t ticks_ = 0, resets_ = 0, divergences_ = 0;
+  std::uint64_t generation_ = 0;  // physics rebuilds (the first robot's)
   // The controller manager updates on ticks that are multiples of this (gazebo_ros_control's
   // <controlPeriod> in ticks; 1 without one).
   std::uint64_t control_every_ = 1;

@@ -17,12 +17,19 @@ struct SimBridge::Impl {
   explicit Impl(BridgeOptions o) : options(std::move(o)) {}
   // Runs `command` in the loop thread between ticks and waits for it (model_api.cpp).
   BridgeResult in_loop(const std::function<BridgeResult(sim::Simulation&)>& command) const;
+  // Loop thread: the physics indices below looked up again when the world's physics was rebuilt
+  // (a robot spawned or deleted) since they were.
+  void refresh();
   BridgeOptions options;
   control::Params params;
-  std::unique_ptr<sim::Simulation> simulation;
+  std::unique_ptr<sim::Simulation> owned;  // the first robot's simulation (it ticks the world)
+  sim::Simulation* simulation = nullptr;   // this robot's: owned, or an other robot of host's world
+  Impl* host = nullptr;                    // an other robot's: the bridge of the world's first robot
+  std::uint64_t generation = 0;            // physics_generation() the indices below are of
+  bool resolved = false;
   std::vector<int> physics_joint;  // per description joint; -1 when the physics has none
   std::shared_ptr<MechanismStatistics> statistics;  // PR2 controller manager outputs; null: off
-  std::vector<std::string> link_names;  // description links the physics has (model_api.cpp)
+  std::vector<std::string> link_names;  // description links the physics has (fixed at the spawn)
   std::vector<std::size_t> link_index;  // their physics links
   // Per World::sdf_model_frames: the physics body carrying the model, -1 for a static one.
   std::vector<int> world_model_body;

@@ -28,9 +28,15 @@ bool finite(const description::Pose& p) {
 
 BridgeResult refuse(const std::string& why) { return {false, why}; }
 
+// A link or joint of the robot in the physics (an other robot's under "<name>::").
 std::optional<std::size_t> link_of(const sim::Simulation& s, const std::string& link) {
   const physics::PhysicsModel& m = s.physics().model();
-  return m.link_index(link.empty() ? m.root_link() : link);
+  if (link.empty() && &s.world_host() == &s) return m.link_index(m.root_link());
+  return m.link_index(s.physics_name(link.empty() ? s.robot().root_link : link));
+}
+
+std::optional<std::size_t> joint_of(const sim::Simulation& s, const std::string& joint) {
+  return s.physics().model().joint_index(s.physics_name(joint));
 }
 
 }  // namespace
@@ -82,6 +88,7 @@ BridgeResult SimBridge::link_state(const std::string& link, EntityState& out) co
 const std::vector<std::string>& SimBridge::link_names() const { return impl_->link_names; }
 
 void SimBridge::link_states_now(std::vector<EntityState>& out) const {
+  impl_->refresh();
   const physics::Physics& p = impl_->simulation->physics();
   out.resize(impl_->link_index.size());
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -138,6 +145,7 @@ std::string unusable(const EntityState& state, EntityState& unit) {
 }  // namespace
 
 void SimBridge::world_model_states_now(std::vector<EntityState>& out) const {
+  impl_->refresh();
   const sim::Simulation& s = *impl_->simulation;
   out.resize(impl_->world_model_body.size());
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = world_model_state_of(s, impl_->world_model_body, i);
@@ -146,6 +154,7 @@ void SimBridge::world_model_states_now(std::vector<EntityState>& out) const {
 BridgeResult SimBridge::world_model_state(std::size_t index, EntityState& out) const {
   return read_in_loop<EntityState>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out,
                                    [this, index](sim::Simulation& s, EntityState& o) -> BridgeResult {
+                                     impl_->refresh();
                                      if (index >= impl_->world_model_body.size()) return refuse("no such world model");
                                      o = world_model_state_of(s, impl_->world_model_body, index);
                                      return {};
@@ -153,8 +162,21 @@ BridgeResult SimBridge::world_model_state(std::size_t index, EntityState& out) c
 }
 
 std::vector<std::string> SimBridge::stop_all_controllers_now() {
-  control::ControllerManager& cm = impl_->simulation->controllers();
-  const double now = impl_->simulation->time();
+  if (impl_->host != nullptr) {  // an other robot: the world's loop runs on, so there
+    std::vector<std::string> loaded;
+    read_in_loop<std::vector<std::string>>([this](const LoopCommand& c) { return impl_->in_loop(c); }, loaded,
+                                           [this](sim::Simulation&, std::vector<std::string>& o) -> BridgeResult {
+                                             o = stop_controllers(*impl_->simulation);
+                                             return {};
+                                           });
+    return loaded;
+  }
+  return stop_controllers(*impl_->simulation);
+}
+
+std::vector<std::string> SimBridge::stop_controllers(sim::Simulation& s) {
+  control::ControllerManager& cm = s.controllers();
+  const double now = s.time();
   cm.apply_pending_switch(now);  // a switch waiting for the next tick (paused) first
   std::vector<std::string> loaded, running;
   for (const control::ControllerInfo& info : cm.list_controllers()) {
@@ -171,6 +193,7 @@ BridgeResult SimBridge::set_world_model_state(std::size_t index, const EntitySta
   EntityState unit;
   if (const std::string why = unusable(state, unit); !why.empty()) return refuse(why);
   return impl_->in_loop([this, index, unit](sim::Simulation& s) -> BridgeResult {
+    impl_->refresh();
     if (index >= impl_->world_model_body.size()) return refuse("no such model of the world");
     const sim::World::ModelFrame& f = s.world().sdf_model_frames[index];
     const int body = impl_->world_model_body[index];
@@ -192,11 +215,15 @@ BridgeResult SimBridge::set_root_state(const EntityState& state) {
   EntityState unit;
   if (const std::string why = unusable(state, unit); !why.empty()) return refuse(why);
   return impl_->in_loop([unit](sim::Simulation& s) -> BridgeResult {
-    if (s.physics().model().fixed_to_world()) {
-      return refuse("model '" + s.robot().name + "' is fixed to the world: its pose cannot be set");
+    if (!s.floating()) return refuse("model '" + s.robot().name + "' is fixed to the world: its pose cannot be set");
+    if (&s.world_host() != &s) {  // an other robot: its root floats on a free joint of its own
+      const int body = s.physics().model().body_index(s.physics_name(s.robot().root_link));
+      if (body < 1 || !s.physics().set_free_body_state(body, unit.pose, {unit.linear, unit.angular}))
+        return refuse("model '" + s.robot().name + "': its root link does not float freely");
+    } else {
+      s.physics().set_base_pose(unit.pose);
+      s.physics().set_base_twist({unit.linear, unit.angular});
     }
-    s.physics().set_base_pose(unit.pose);
-    s.physics().set_base_twist({unit.linear, unit.angular});
     s.state_changed();
     return {};
   });
@@ -214,7 +241,7 @@ BridgeResult SimBridge::set_joint_positions(const std::vector<std::string>& join
   return impl_->in_loop([joints, positions](sim::Simulation& s) -> BridgeResult {
     std::vector<std::size_t> index;
     for (const std::string& j : joints) {
-      const auto p = s.physics().model().joint_index(j);
+      const auto p = joint_of(s, j);
       if (!p) return refuse("no joint '" + j + "' in model '" + s.robot().name + "'");
       index.push_back(*p);
     }
@@ -236,7 +263,7 @@ BridgeResult SimBridge::joint_properties(const std::string& joint, JointProperti
     }
     o.damping = j->dynamics ? j->dynamics->damping : 0.0;
     o.position = o.rate = 0.0;
-    if (const auto p = s.physics().model().joint_index(joint)) {
+    if (const auto p = joint_of(s, joint)) {
       o.position = s.physics().position(*p);
       o.rate = s.physics().velocity(*p);
     }
@@ -245,20 +272,22 @@ BridgeResult SimBridge::joint_properties(const std::string& joint, JointProperti
 }
 
 BridgeResult SimBridge::link_properties(const std::string& link, LinkPropertiesData& out) const {
-  // The description does not change: no need for the loop thread.
-  const sim::Simulation& s = *impl_->simulation;
-  const description::Link* l = s.robot().link(link);
-  if (l == nullptr) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
-  out = LinkPropertiesData{};
-  if (l->inertial) {
-    const description::Inertial& i = *l->inertial;
-    out.com = i.origin;
-    out.mass = i.mass;
-    out.ixx = i.ixx, out.ixy = i.ixy, out.ixz = i.ixz, out.iyy = i.iyy, out.iyz = i.iyz, out.izz = i.izz;
-  }
-  for (const std::string& off : s.physics().model().gravity_off_links())
-    if (off == link) out.gravity_mode = false;
-  return {};
+  // In the loop thread: a spawn or delete replaces the physics model read here.
+  return read_in_loop<LinkPropertiesData>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out,
+                                          [link](sim::Simulation& s, LinkPropertiesData& o) -> BridgeResult {
+    const description::Link* l = s.robot().link(link);
+    if (l == nullptr) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    o = LinkPropertiesData{};
+    if (l->inertial) {
+      const description::Inertial& i = *l->inertial;
+      o.com = i.origin;
+      o.mass = i.mass;
+      o.ixx = i.ixx, o.ixy = i.ixy, o.ixz = i.ixz, o.iyy = i.iyy, o.iyz = i.iyz, o.izz = i.izz;
+    }
+    for (const std::string& off : s.physics().model().gravity_off_links())
+      if (off == s.physics_name(link)) o.gravity_mode = false;
+    return {};
+  });
 }
 
 BridgeResult SimBridge::apply_link_wrench(const std::string& link, const description::Vec3& force_W,
@@ -267,10 +296,10 @@ BridgeResult SimBridge::apply_link_wrench(const std::string& link, const descrip
   if (!finite(force_W) || !finite(torque_W) || !finite(offset_W)) return refuse("the wrench and its point must be finite");
   if (!std::isfinite(start) || !std::isfinite(duration)) return refuse("start_time and duration must be finite");
   return impl_->in_loop([=](sim::Simulation& s) -> BridgeResult {
-    const auto l = s.physics().model().link_index(link);
-    if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
-    s.external_forces().add_wrench({*l, force_W, torque_W, offset_W},
-                                   sim::force_window(s.time(), s.period(), start, duration));
+    const auto l = link_of(s, link);
+    if (!l || link.empty()) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    s.world_host().external_forces().add_wrench({*l, force_W, torque_W, offset_W},
+                                                sim::force_window(s.time(), s.period(), start, duration));
     return {};
   });
 }
@@ -280,27 +309,27 @@ BridgeResult SimBridge::apply_joint_effort(const std::string& joint, double effo
     return refuse("effort, start_time and duration must be finite");
   }
   return impl_->in_loop([=](sim::Simulation& s) -> BridgeResult {
-    const auto j = s.physics().model().joint_index(joint);
+    const auto j = joint_of(s, joint);
     if (!j) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
-    s.external_forces().add_effort(*j, effort, sim::force_window(s.time(), s.period(), start, duration));
+    s.world_host().external_forces().add_effort(*j, effort, sim::force_window(s.time(), s.period(), start, duration));
     return {};
   });
 }
 
 BridgeResult SimBridge::clear_link_wrenches(const std::string& link) {
   return impl_->in_loop([link](sim::Simulation& s) -> BridgeResult {
-    const auto l = s.physics().model().link_index(link);
-    if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
-    s.external_forces().clear_wrenches(*l);  // gone from the next step on
+    const auto l = link_of(s, link);
+    if (!l || link.empty()) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    s.world_host().external_forces().clear_wrenches(*l);  // gone from the next step on
     return {};
   });
 }
 
 BridgeResult SimBridge::clear_joint_efforts(const std::string& joint) {
   return impl_->in_loop([joint](sim::Simulation& s) -> BridgeResult {
-    const auto j = s.physics().model().joint_index(joint);
+    const auto j = joint_of(s, joint);
     if (!j) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
-    s.external_forces().clear_efforts(*j);
+    s.world_host().external_forces().clear_efforts(*j);
     return {};
   });
 }
@@ -322,12 +351,12 @@ BridgeResult SimBridge::set_gravity(const description::Vec3& g_W) {
   });
 }
 
-bool SimBridge::fixed_to_world() const { return impl_->simulation->physics().model().fixed_to_world(); }
+bool SimBridge::fixed_to_world() const { return !impl_->simulation->floating(); }
 
 double SimBridge::real_time_factor() const {
   double f = 0.0;
   read_in_loop<double>([this](const LoopCommand& c) { return impl_->in_loop(c); }, f, [](sim::Simulation& s, double& o) -> BridgeResult {
-    o = s.options().real_time_factor;
+    o = s.world_host().options().real_time_factor;
     return {};
   });
   return f;
@@ -335,15 +364,17 @@ double SimBridge::real_time_factor() const {
 
 void SimBridge::set_real_time_factor(double factor) {
   impl_->in_loop([factor](sim::Simulation& s) -> BridgeResult {
-    s.set_real_time_factor(factor);
+    s.world_host().set_real_time_factor(factor);
     return {};
   });
 }
 
-double SimBridge::measured_real_time_factor() const { return impl_->simulation->measured_real_time_factor(); }
+double SimBridge::measured_real_time_factor() const {
+  return impl_->simulation->world_host().measured_real_time_factor();
+}
 
-void SimBridge::request_steps(std::uint64_t count) { impl_->simulation->request_steps(count); }
-std::uint64_t SimBridge::pending_steps() const { return impl_->simulation->pending_steps(); }
-void SimBridge::cancel_steps() { impl_->simulation->cancel_steps(); }
+void SimBridge::request_steps(std::uint64_t count) { impl_->simulation->world_host().request_steps(count); }
+std::uint64_t SimBridge::pending_steps() const { return impl_->simulation->world_host().pending_steps(); }
+void SimBridge::cancel_steps() { impl_->simulation->world_host().cancel_steps(); }
 
 }  // namespace mechsim::ros

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -61,38 +62,141 @@ PortType port_type(const control::Port& port) {
 
 }  // namespace
 
+namespace {
+
+sim::SimulationOptions simulation_options(const BridgeOptions& o) {
+  sim::SimulationOptions sim_options;
+  sim_options.period = o.period;
+  sim_options.spawn = {o.x, o.y, o.z, o.roll, o.pitch, o.yaw};
+  sim_options.start_paused = o.paused;
+  sim_options.real_time_factor = o.real_time_factor;
+  sim_options.start_time = o.start_time;
+  sim_options.initial_joints = o.initial_joints;
+  sim_options.parameter_root = o.parameter_root;
+  return sim_options;
+}
+
+// The description links the physics has (in the description's order).
+std::vector<std::string> physics_links(const sim::Simulation& s) {
+  std::vector<std::string> out;
+  for (const description::Link& link : s.robot().links)
+    if (s.physics().model().link_index(s.physics_name(link.name))) out.push_back(link.name);
+  return out;
+}
+
+}  // namespace
+
+void SimBridge::Impl::refresh() {
+  const std::uint64_t g = simulation->physics_generation();
+  if (resolved && g == generation) return;
+  resolved = true;
+  generation = g;
+  const physics::PhysicsModel& model = simulation->physics().model();
+  physics_joint.clear();
+  for (const description::Joint& joint : simulation->robot().joints) {
+    const auto index = model.joint_index(simulation->physics_name(joint.name));
+    physics_joint.push_back(index ? static_cast<int>(*index) : -1);
+  }
+  link_index.clear();
+  for (const std::string& link : link_names) link_index.push_back(model.link_index(simulation->physics_name(link)).value_or(0));
+  world_model_body.clear();
+  for (const sim::World::ModelFrame& f : simulation->world().sdf_model_frames)
+    world_model_body.push_back(f.body.empty() ? -1 : model.body_index(f.body));
+}
+
 SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& m = *impl_;
   sim::WorldConfig world_config;
   world_config.name = m.options.world;
   const sim::World world = sim::make_world(world_config);
-  sim::SimulationOptions sim_options;
-  sim_options.period = m.options.period;
-  sim_options.spawn = {m.options.x, m.options.y, m.options.z, m.options.roll, m.options.pitch, m.options.yaw};
-  sim_options.start_paused = m.options.paused;
-  sim_options.real_time_factor = m.options.real_time_factor;
-  sim_options.start_time = m.options.start_time;
-  sim_options.initial_joints = m.options.initial_joints;
-  sim_options.parameter_root = m.options.parameter_root;
   m.params = m.options.controller_params;
-  m.simulation = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, sim_options);
+  m.owned = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, simulation_options(m.options));
+  m.simulation = m.owned.get();
   if (m.options.paused) m.simulation->pause();
-  const description::RobotModel& robot = m.simulation->robot();
-  for (const description::Joint& joint : robot.joints) {
-    const auto index = m.simulation->physics().model().joint_index(joint.name);
-    m.physics_joint.push_back(index ? static_cast<int>(*index) : -1);
-  }
-  for (const description::Link& link : robot.links) {
-    if (const auto index = m.simulation->physics().model().link_index(link.name)) {
-      m.link_names.push_back(link.name);
-      m.link_index.push_back(*index);
-    }
-  }
-  for (const sim::World::ModelFrame& f : m.simulation->world().sdf_model_frames)
-    m.world_model_body.push_back(f.body.empty() ? -1 : m.simulation->physics().model().body_index(f.body));
+  m.link_names = physics_links(*m.simulation);
+  m.refresh();
 }
 
-SimBridge::~SimBridge() = default;
+SimBridge::SimBridge(SimBridge& host, BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
+  Impl& m = *impl_;
+  m.host = host.impl_->host != nullptr ? host.impl_->host : host.impl_.get();
+  m.params = m.options.controller_params;
+  sim::OtherRobot other;
+  other.name = m.options.robot.name;
+  other.robot = m.options.robot;
+  other.controllers = m.params;
+  other.parameter_root = m.options.parameter_root;
+  other.spawn = {m.options.x, m.options.y, m.options.z, m.options.roll, m.options.pitch, m.options.yaw};
+  other.initial_joints = m.options.initial_joints;
+  // The world's loop takes the robot in between two ticks. Should it not answer in time, the
+  // command, when it runs later, does nothing (`abandoned`): no robot appears unseen.
+  struct Taking {
+    std::mutex mutex;
+    bool done = false, abandoned = false;
+    sim::Simulation* robot = nullptr;
+    std::vector<std::string> links;
+    std::string error;
+  };
+  auto taking = std::make_shared<Taking>();
+  m.host->simulation->post([taking, other = std::move(other)](sim::Simulation& world) mutable {
+    std::lock_guard<std::mutex> lock(taking->mutex);
+    if (taking->abandoned) return;
+    try {
+      taking->robot = &world.add_other(std::move(other));
+      taking->links = physics_links(*taking->robot);
+    } catch (const std::exception& e) {
+      taking->error = e.what();
+    }
+    taking->done = true;
+  });
+  constexpr double kSpawnTimeout = 60.0;  // s (wall): building a robot's physics takes ~1 s
+  m.host->simulation->wait_for_commands(kSpawnTimeout);
+  std::lock_guard<std::mutex> lock(taking->mutex);
+  if (!taking->done) {
+    taking->abandoned = true;
+    throw std::runtime_error("the simulation loop did not take model '" + m.options.robot.name + "' in within 60 s");
+  }
+  if (!taking->error.empty()) throw std::runtime_error(taking->error);
+  m.simulation = taking->robot;
+  m.link_names = std::move(taking->links);
+  impl_->in_loop([&m](sim::Simulation&) {
+    m.refresh();
+    return BridgeResult{};
+  });
+}
+
+SimBridge::~SimBridge() {
+  // An other robot leaves the world with its bridge (a spawn that failed after the bridge was
+  // made); remove_from_world() did it already when the model was deleted.
+  if (impl_ && impl_->host != nullptr && impl_->simulation != nullptr) remove_from_world();
+}
+
+bool SimBridge::is_other_robot() const { return impl_->host != nullptr; }
+
+void SimBridge::wait_for_loop() {
+  if (impl_->simulation == nullptr) return;
+  impl_->in_loop([](sim::Simulation&) { return BridgeResult{}; });
+}
+
+void SimBridge::detach_from_world() {
+  if (impl_->host != nullptr) impl_->simulation = nullptr;
+}
+
+BridgeResult SimBridge::remove_from_world() {
+  Impl& m = *impl_;
+  if (m.host == nullptr) return {false, "the world's first robot holds its physics"};
+  if (m.simulation == nullptr) return {};
+  const std::string name = m.simulation->robot_name_in_world();
+  // Through the host's queue: the robot's own queue goes with it.
+  const BridgeResult r = m.host->in_loop([name](sim::Simulation& world) -> BridgeResult {
+    if (!world.remove_other(name)) return {false, "no robot '" + name + "' in the world"};
+    return {};
+  });
+  if (r.ok) m.simulation = nullptr;
+  return r;
+}
+
+
 
 WorldSummary describe_world(const std::string& name) {
   sim::WorldConfig config;
@@ -110,17 +214,24 @@ WorldSummary describe_world(const std::string& name) {
 }
 
 bool SimBridge::run_for(double duration, std::string* error) {
+  if (impl_->host != nullptr) throw std::logic_error("run_for: an other robot ticks with the world's first robot");
   const sim::TickResult r = impl_->simulation->run_for(duration);
   if (!r.ok && error) *error = r.error;
   return r.ok;
 }
 
 void SimBridge::add_observer(Observer observer) {
-  impl_->simulation->add_observer(
-      [obs = std::move(observer)](const sim::Simulation& s) { obs(s.time()); });
+  auto add = [obs = std::move(observer)](sim::Simulation& s) {
+    s.add_observer([obs](const sim::Simulation& t) { obs(t.time()); });
+    return BridgeResult{};
+  };
+  // An other robot's observers run in the world's loop, which is running: add it there.
+  if (impl_->host != nullptr) impl_->in_loop(add);
+  else add(*impl_->simulation);
 }
 
 void SimBridge::joint_positions(std::vector<double>& out) const {
+  impl_->refresh();
   const physics::Physics& p = impl_->simulation->physics();
   out.resize(impl_->physics_joint.size());
   for (std::size_t j = 0; j < out.size(); ++j) {
@@ -129,10 +240,11 @@ void SimBridge::joint_positions(std::vector<double>& out) const {
   }
 }
 
-description::Pose SimBridge::base_pose() const { return impl_->simulation->physics().base_pose(); }
+description::Pose SimBridge::base_pose() const { return impl_->simulation->base_pose(); }
 
 void SimBridge::enable_mechanism_statistics() {
   if (impl_->statistics) return;
+  if (impl_->host != nullptr) throw std::logic_error("mechanism statistics: only for the world's first robot");
   impl_->statistics = std::make_shared<MechanismStatistics>(*impl_->simulation);
   impl_->simulation->add_observer(
       [stats = impl_->statistics](const sim::Simulation& s) { stats->update(s); });
@@ -152,9 +264,10 @@ double SimBridge::time() const { return impl_->simulation->time(); }
 double SimBridge::period() const { return impl_->simulation->period(); }
 std::uint64_t SimBridge::ticks() const { return impl_->simulation->ticks(); }
 std::uint64_t SimBridge::resets() const { return impl_->simulation->resets(); }
-void SimBridge::pause() { impl_->simulation->pause(); }
-void SimBridge::unpause() { impl_->simulation->unpause(); }
-bool SimBridge::paused() const { return impl_->simulation->paused(); }
+// Time, pause and stepping are the world's: an other robot's are its host's.
+void SimBridge::pause() { impl_->simulation->world_host().pause(); }
+void SimBridge::unpause() { impl_->simulation->world_host().unpause(); }
+bool SimBridge::paused() const { return impl_->simulation->world_host().paused(); }
 void SimBridge::request_reset() { impl_->simulation->request_reset(); }
 void SimBridge::set_e_stop(bool active) { impl_->simulation->set_e_stop(active); }
 bool SimBridge::e_stop_active() const { return impl_->simulation->e_stop_active(); }

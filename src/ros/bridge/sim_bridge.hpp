@@ -25,6 +25,10 @@
 #include "description/sensor_spec.hpp"
 #include "sensors/sensor_output.hpp"
 
+namespace mechsim::sim {
+class Simulation;
+}
+
 namespace mechsim::ros {
 
 struct BridgeOptions {
@@ -224,7 +228,27 @@ class SimBridge {
   // Builds world, physics, mechanism and controller manager. Throws std::runtime_error with
   // what failed (world name, description, mechanism).
   explicit SimBridge(BridgeOptions options);
+  // Another robot in `host`'s world (Gazebo's second spawned model; sim::Simulation::add_other):
+  // taken into the running world between two ticks, every robot there going on undisturbed. Its
+  // controller manager, plugins and model API are its own; time, pause, stepping and the
+  // real-time factor are the world's (the host's); its sensors are not simulated. No run_for():
+  // the host's loop ticks it and runs its observers. options.robot.name is its name in the world;
+  // the world, period, start time and paused flag are the host's. Throws std::runtime_error
+  // (changing nothing) when it cannot be built or the loop does not take it within 60 s.
+  SimBridge(SimBridge& host, BridgeOptions options);
+  // An other robot leaves the world with its bridge (remove_from_world()).
   ~SimBridge();
+  bool is_other_robot() const;
+  // An other robot: out of the world (its controllers stopped and unloaded first, the physics
+  // rebuilt without it, in the loop between ticks); the bridge must not be used after. Refused
+  // for the world's first robot, whose simulation ticks the world.
+  BridgeResult remove_from_world();
+  // An other robot, once the host's loop has stopped for good (the world shutting down): forgets
+  // its simulation, which goes with the host's; the bridge must not be used after.
+  void detach_from_world();
+  // Returns once the loop has started a new tick (or, paused, run its requests): an observer
+  // that was running when it was called has returned. At most 5 s; at once after detach.
+  void wait_for_loop();
   SimBridge(const SimBridge&) = delete;
   SimBridge& operator=(const SimBridge&) = delete;
 
@@ -360,6 +384,7 @@ class SimBridge {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  static std::vector<std::string> stop_controllers(sim::Simulation& s);  // loop thread
 };
 
 // Port access (non-real-time, any thread). Writes return false with `error` when rejected (wrong

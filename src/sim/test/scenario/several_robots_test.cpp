@@ -192,9 +192,14 @@ TEST_F(SeveralRobots, ASpawnAndADeleteDuringARunLeaveTheFirstDrivingUndisturbed)
     EXPECT_TRUE(sim->run_for(3.0));
     if (with_second) {
       const double before = sim->time();
+      const std::uint64_t generation = sim->physics_generation();
       OtherRobot second = cc8("cc8_2", 0.0, 4.0, 0.0);
       second.initial_joints["steering_FL"] = 0.2;
       Simulation& two = sim->add_other(second);
+      EXPECT_EQ(sim->physics_generation(), generation + 1) << "indices into the old physics are stale";
+      EXPECT_EQ(two.physics_generation(), sim->physics_generation());
+      EXPECT_EQ(&two.world_host(), sim.get());
+      EXPECT_TRUE(two.floating());
       EXPECT_EQ(sim->time(), before);
       EXPECT_EQ(two.time(), before);
       EXPECT_NEAR(two.physics().position(*two.physics().model().joint_index("cc8_2::steering_FL")), 0.2, 1e-12);
