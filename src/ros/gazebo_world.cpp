@@ -267,13 +267,6 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
       return refuse(e.what());
     }
     for (const std::string& w : robot.node->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
-    std::string sensors;
-    for (const description::SensorSpec& sensor : robot.node->bridge().robot().sensors)
-      sensors += (sensors.empty() ? "" : ", ") + sensor.name;
-    if (!sensors.empty()) {
-      ROS_WARN_STREAM("mechsim: model '" << name << "': its sensors are not simulated (only the first robot of a "
-                                         << "world has its sensors): " << sensors);
-    }
     robot.node->start();
   } else {
     std::lock_guard<std::mutex> lock(clock_mutex_);  // the clock stands still while the robot comes in

@@ -9,8 +9,8 @@
 // into it, each a SimNode (sim_node.hpp: its controller manager under its robot namespace, topics,
 // model plugins). The first robot's SimNode ticks the world (its loop thread, /clock, its
 // sensors); each later one is another robot of that world (sim::Simulation::add_other): its own
-// controller manager and topics, in the same physics (they collide), ticked by the first one's
-// loop; its sensors are not simulated. Spawning one during a run takes it in between two ticks:
+// controller manager, topics and sensors, in the same physics (they collide), ticked by the first
+// one's loop. Spawning one during a run takes it in between two ticks:
 // the robots already there go on undisturbed (no time jump, no controller restart). A spawned
 // robot goes on from the world's time; deleting one stops and unloads its controllers first (the
 // others drive on); deleting the first robot while later ones are in is refused (its simulation

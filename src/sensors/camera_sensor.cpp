@@ -50,9 +50,12 @@ void undistort_point(const description::DistortionSpec& d, double xd, double yd,
 
 }  // namespace
 
-CameraSensor::CameraSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model)
-    : Sensor(spec), camera_(std::get<description::CameraSpec>(this->spec().details)) {
-  link_ = resolve_link(model);
+void CameraSensor::bind(const physics::PhysicsModel& model) { link_ = resolve_link(model); }
+
+CameraSensor::CameraSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model,
+                           const std::string& prefix)
+    : Sensor(spec, prefix), camera_(std::get<description::CameraSpec>(this->spec().details)) {
+  CameraSensor::bind(model);
   if (camera_.lenses.empty()) throw SensorError(spec.where() + ": a camera sensor without a <camera>");
   for (const description::CameraLens& l : camera_.lenses) {
     Lens lens;

@@ -46,13 +46,23 @@ std::string gazebo_name(const physics::PhysicsModel& model, int geom) {
 
 }  // namespace
 
-ContactSensor::ContactSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model) : Sensor(spec) {
+ContactSensor::ContactSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model,
+                             const std::string& prefix)
+    : Sensor(spec, prefix) {
+  ContactSensor::bind(model);
+}
+
+void ContactSensor::bind(const physics::PhysicsModel& model) {
+  const description::SensorSpec& spec = this->spec();
   link_ = resolve_link(model);
-  const auto& contact = std::get<description::ContactSpec>(this->spec().details);
+  geom_names_.clear();
+  geoms_.clear();
+  frame_link_.reset();
+  const auto& contact = std::get<description::ContactSpec>(spec.details);
   for (int g = 0; g < model.geom_count(); ++g) geom_names_.push_back(gazebo_name(model, g));
   for (const std::string& collision : contact.collisions) {
     const std::string link = collision_link(collision);
-    const std::string prefix = (link.empty() ? spec.link : link) + "/collision/";
+    const std::string prefix = physics_name(link.empty() ? spec.link : link) + "/collision/";
     bool found = false;
     for (int g = 0; g < model.geom_count(); ++g) {
       if (model.geom_name(g).rfind(prefix, 0) != 0) continue;
@@ -66,14 +76,14 @@ ContactSensor::ContactSensor(const description::SensorSpec& spec, const physics:
       // A link without shapes: its collision was a mesh the physics left out (said at start-up),
       // or it never had one; either way the sensor can report nothing, and Gazebo too runs on
       // without it. A link that does not exist is a mistake in the description.
-      if (model.link_index(owner) >= 0) throw SensorLeftOut(what + "; the sensor is left out");
+      if (model.link_index(physics_name(owner)) >= 0) throw SensorLeftOut(what + "; the sensor is left out");
       throw SensorError(what);
     }
   }
   std::sort(geoms_.begin(), geoms_.end());
   geoms_.erase(std::unique(geoms_.begin(), geoms_.end()), geoms_.end());
   const std::string frame = spec.plugin ? spec.plugin->frame : "world";
-  if (frame != "world" && frame != "/world" && frame != "map") frame_link_ = model.link_index(frame);
+  if (frame != "world" && frame != "/world" && frame != "map") frame_link_ = model.link_index(physics_name(frame));
 }
 
 std::unique_ptr<SensorState> ContactSensor::make_state(Rng rng) const {

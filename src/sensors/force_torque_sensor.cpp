@@ -5,10 +5,16 @@
 
 namespace mechsim::sensors {
 
-ForceTorqueSensor::ForceTorqueSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model)
-    : Sensor(spec), ft_(std::get<description::ForceTorqueSpec>(this->spec().details)) {
+ForceTorqueSensor::ForceTorqueSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model,
+                                     const std::string& prefix)
+    : Sensor(spec, prefix), ft_(std::get<description::ForceTorqueSpec>(this->spec().details)) {
+  ForceTorqueSensor::bind(model);
+}
+
+void ForceTorqueSensor::bind(const physics::PhysicsModel& model) {
+  const description::SensorSpec& spec = this->spec();
   child_ = resolve_link(model);
-  parent_ = model.link_index(ft_.parent_link);
+  parent_ = model.link_index(physics_name(ft_.parent_link));
   if (!parent_) throw SensorError(spec.where() + ": the physics has no link '" + ft_.parent_link + "'");
   if (model.links()[child_].body == model.links()[*parent_].body) {
     throw SensorError(spec.where() + ": joint '" + ft_.joint + "' joins links the physics merged into one body ('" +

@@ -4,12 +4,17 @@
 
 namespace mechsim::sensors {
 
-GroundTruthSensor::GroundTruthSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model)
-    : Sensor(spec), gt_(std::get<description::GroundTruthSpec>(this->spec().details)) {
+GroundTruthSensor::GroundTruthSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model,
+                                     const std::string& prefix)
+    : Sensor(spec, prefix), gt_(std::get<description::GroundTruthSpec>(this->spec().details)) {
+  GroundTruthSensor::bind(model);
+}
+
+void GroundTruthSensor::bind(const physics::PhysicsModel& model) {
   link_ = resolve_link(model);
   if (gt_.frame != "world" && gt_.frame != "map") {
-    reference_ = model.link_index(gt_.frame);
-    if (!reference_) throw SensorError(spec.where() + ": the physics has no link '" + gt_.frame + "'");
+    reference_ = model.link_index(physics_name(gt_.frame));
+    if (!reference_) throw SensorError(spec().where() + ": the physics has no link '" + gt_.frame + "'");
   }
 }
 

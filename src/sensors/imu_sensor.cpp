@@ -18,10 +18,12 @@ constexpr std::size_t kYaw = 6;  // channels: 0-2 angular velocity, 3-5 accelera
 
 }  // namespace
 
-ImuSensor::ImuSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model)
-    : Sensor(spec), imu_(std::get<description::ImuSpec>(this->spec().details)) {
-  link_ = resolve_link(model);
+ImuSensor::ImuSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix)
+    : Sensor(spec, prefix), imu_(std::get<description::ImuSpec>(this->spec().details)) {
+  ImuSensor::bind(model);
 }
+
+void ImuSensor::bind(const physics::PhysicsModel& model) { link_ = resolve_link(model); }
 
 std::unique_ptr<SensorState> ImuSensor::make_state(Rng rng) const {
   auto state = std::make_unique<ImuState>();

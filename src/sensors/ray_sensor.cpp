@@ -21,13 +21,9 @@ double step_of(const description::RayAxis& a) {
 
 }  // namespace
 
-RaySensor::RaySensor(const description::SensorSpec& spec, const physics::PhysicsModel& model)
-    : Sensor(spec), ray_(std::get<description::RaySpec>(this->spec().details)) {
-  link_ = resolve_link(model);
-  // Gazebo's ray sensor does not see its own link; the link lives in this MuJoCo body (with any
-  // massless links merged into it, as Gazebo lumps fixed links).
-  filter_ = physics::make_ray_filter(model, model.links()[link_].body,
-                                     ray_.gpu ? physics::RayTargets::Visual : physics::RayTargets::Collision);
+RaySensor::RaySensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix)
+    : Sensor(spec, prefix), ray_(std::get<description::RaySpec>(this->spec().details)) {
+  RaySensor::bind(model);
   const int nh = ray_.horizontal.count(), nv = ray_.vertical.count();
   const double dh = step_of(ray_.horizontal), dv = step_of(ray_.vertical);
   directions_S_.reserve(static_cast<std::size_t>(nh) * static_cast<std::size_t>(nv));
@@ -50,6 +46,14 @@ RaySensor::RaySensor(const description::SensorSpec& spec, const physics::Physics
   layout_.range_min = ray_.range_min;
   layout_.range_max = ray_.range_max;
   layout_.scan_time = spec.update_rate > 0.0 ? 1.0 / spec.update_rate : 0.0;
+}
+
+void RaySensor::bind(const physics::PhysicsModel& model) {
+  link_ = resolve_link(model);
+  // Gazebo's ray sensor does not see its own link; the link lives in this MuJoCo body (with any
+  // massless links merged into it, as Gazebo lumps fixed links).
+  filter_ = physics::make_ray_filter(model, model.links()[link_].body,
+                                     ray_.gpu ? physics::RayTargets::Visual : physics::RayTargets::Collision);
 }
 
 std::unique_ptr<SensorState> RaySensor::make_state(Rng rng) const {

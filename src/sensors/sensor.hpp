@@ -41,7 +41,10 @@ struct SensorState {
 
 class Sensor {
  public:
-  explicit Sensor(description::SensorSpec spec) : spec_(std::move(spec)) {}
+  // `physics_prefix`: what the physics puts before the robot's link names ("<name>::" for another
+  // robot of the world, sim::OtherRobot; "" for the first).
+  explicit Sensor(description::SensorSpec spec, std::string physics_prefix = "")
+      : spec_(std::move(spec)), prefix_(std::move(physics_prefix)) {}
   virtual ~Sensor() = default;
   Sensor(const Sensor&) = delete;
   Sensor& operator=(const Sensor&) = delete;
@@ -63,17 +66,27 @@ class Sensor {
   // sample's time (the caller updates it afterwards).
   virtual void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const = 0;
 
+  // Looks the sensor's links, bodies and geoms up in `model` (the constructor does it first): for
+  // another robot's sensors once the world's physics was rebuilt with more or fewer robots, which
+  // moves their indices. Throws SensorError as the constructor does. Loop thread, between samples.
+  virtual void bind(const physics::PhysicsModel& model) = 0;
+
  protected:
   // The physics link of spec().link (throws SensorError when the physics has none).
   std::size_t resolve_link(const physics::PhysicsModel& model) const;
+  // The physics' name of the robot's link (or geom prefix) `name`.
+  std::string physics_name(const std::string& name) const { return prefix_ + name; }
+  const std::string& physics_prefix() const { return prefix_; }
 
  private:
   description::SensorSpec spec_;
+  std::string prefix_;
 };
 
 // The Sensor of a simulated spec (sensor_factory.cpp: one line per type). Throws SensorError
 // when the spec cannot be simulated on this model (UnsupportedSpec; a link the physics merged
 // away where a body is needed).
-std::unique_ptr<Sensor> make_sensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+std::unique_ptr<Sensor> make_sensor(const description::SensorSpec& spec, const physics::PhysicsModel& model,
+                                    const std::string& physics_prefix = "");
 
 }  // namespace mechsim::sensors

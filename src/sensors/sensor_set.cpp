@@ -31,15 +31,15 @@ double next_due_after(double rate, double time) {
 
 SensorSet::SensorSet(const std::vector<description::SensorSpec>& specs,
                      std::shared_ptr<const physics::PhysicsModel> model, std::uint64_t seed,
-                     RenderModelFactory render_model)
-    : model_(std::move(model)) {
+                     RenderModelFactory render_model, std::string physics_prefix)
+    : model_(std::move(model)), prefix_(std::move(physics_prefix)) {
   for (const description::SensorSpec& spec : specs) {
     if (!spec.simulated()) {
       skipped_.push_back({spec, std::get<description::UnsupportedSpec>(spec.details).reason});
       continue;
     }
     try {
-      sensors_.push_back(make_sensor(spec, *model_));
+      sensors_.push_back(make_sensor(spec, *model_, prefix_));
     } catch (const SensorLeftOut& e) {
       skipped_.push_back({spec, e.what(), true});
       continue;
@@ -81,6 +81,9 @@ void SensorSet::share_camera_renders() {
 
 void SensorSet::set_model(std::shared_ptr<const physics::PhysicsModel> model, RenderModelFactory render_model) {
   model_ = std::move(model);
+  // The first robot's links, geoms and bodies come first in the physics and keep their indices.
+  if (!prefix_.empty())
+    for (const std::unique_ptr<Sensor>& s : sensors_) s->bind(*model_);
   if (hub_) hub_->set_model(model_, std::move(render_model));
 }
 

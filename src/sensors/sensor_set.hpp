@@ -41,8 +41,10 @@ class SensorSet {
   // Builds every simulated spec against `model` (make_sensor); specs that cannot be simulated go
   // to skipped(). Throws SensorError for a spec that claims to be simulated but cannot be built.
   // Cameras draw `render_model()` when given (built on their first render), else `model`.
+  // `physics_prefix`: what the physics puts before the robot's names ("<name>::" for another robot
+  // of the world, sim::OtherRobot).
   SensorSet(const std::vector<description::SensorSpec>& specs, std::shared_ptr<const physics::PhysicsModel> model,
-            std::uint64_t seed, RenderModelFactory render_model = {});
+            std::uint64_t seed, RenderModelFactory render_model = {}, std::string physics_prefix = "");
 
   std::size_t size() const { return sensors_.size(); }
   bool empty() const { return sensors_.empty(); }
@@ -54,9 +56,9 @@ class SensorSet {
   // The cameras' shared renderer (null without cameras): its error, scene updates, renders.
   const RenderHub* render_hub() const { return hub_.get(); }
 
-  // The physics was rebuilt with more or fewer robots or objects after this robot's (its links,
-  // joints and geoms keep their indices): the cameras render the new model from their next frame.
-  // Readings, schedules and noise go on.
+  // The physics was rebuilt with more or fewer robots or objects: the cameras render the new model
+  // from their next frame; another robot's sensors (a physics prefix), whose links and geoms move
+  // in it, look them up again (Sensor::bind). Readings, schedules, noise and enabled flags go on.
   void set_model(std::shared_ptr<const physics::PhysicsModel> model, RenderModelFactory render_model = {});
 
   // Samples every enabled sensor that is due at `time` (s). Returns how many were sampled.
@@ -82,6 +84,7 @@ class SensorSet {
   void share_camera_renders();
 
   std::shared_ptr<const physics::PhysicsModel> model_;
+  std::string prefix_;  // the robot's names in the physics (Sensor's physics_prefix)
   std::vector<std::unique_ptr<Sensor>> sensors_;
   std::vector<std::unique_ptr<SensorState>> states_;
   std::vector<SensorReading> readings_;

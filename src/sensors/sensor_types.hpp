@@ -16,8 +16,9 @@ namespace mechsim::sensors {
 // time (Gazebo's instantaneous scan).
 class RaySensor final : public Sensor {
  public:
-  RaySensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  RaySensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
   std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void bind(const physics::PhysicsModel& model) override;
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
 
  private:
@@ -31,8 +32,9 @@ class RaySensor final : public Sensor {
 // imu: orientation, angular velocity and specific force of the sensor frame.
 class ImuSensor final : public Sensor {
  public:
-  ImuSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  ImuSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
   std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void bind(const physics::PhysicsModel& model) override;
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
 
  private:
@@ -43,8 +45,9 @@ class ImuSensor final : public Sensor {
 // contact (gazebo_ros_bumper): what the sensor's collisions touch.
 class ContactSensor final : public Sensor {
  public:
-  ContactSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  ContactSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
   std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void bind(const physics::PhysicsModel& model) override;
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
 
  private:
@@ -57,8 +60,9 @@ class ContactSensor final : public Sensor {
 // force_torque (SDF sensor, gazebo_ros_ft_sensor): the wrench a joint transmits.
 class ForceTorqueSensor final : public Sensor {
  public:
-  ForceTorqueSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  ForceTorqueSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
   std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void bind(const physics::PhysicsModel& model) override;
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
 
  private:
@@ -70,8 +74,9 @@ class ForceTorqueSensor final : public Sensor {
 // gazebo_ros_p3d: the true pose and twist of a link.
 class GroundTruthSensor final : public Sensor {
  public:
-  GroundTruthSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  GroundTruthSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
   std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void bind(const physics::PhysicsModel& model) override;
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
 
  private:
@@ -83,8 +88,9 @@ class GroundTruthSensor final : public Sensor {
 // camera / depth / multicamera / wideanglecamera: images rendered on the set's RenderHub.
 class CameraSensor final : public Sensor {
  public:
-  CameraSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model);
+  CameraSensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
   std::unique_ptr<SensorState> make_state(Rng rng) const override;
+  void bind(const physics::PhysicsModel& model) override;
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
   bool renders() const override { return true; }
   std::pair<int, int> render_size() const override;

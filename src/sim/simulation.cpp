@@ -126,7 +126,6 @@ Simulation::Simulation(Simulation& host, OtherRobot other)
   options_.initial_joints = std::move(other.initial_joints);
   options_.parameter_root = std::move(other.parameter_root);
   options_.settle_on_ground = false;
-  options_.sensors = false;
   ticks_ = host.ticks_;
   physics_model_ = host.physics_model_;
   physics_ = host.physics_;
@@ -241,7 +240,9 @@ bool Simulation::remove_other(const std::string& name) {
 
 sensors::RenderModelFactory Simulation::render_factory() const {
   if (!has_cameras(robot_) || !world_.spec.terrain) return {};
-  return [robot = robot_, b = build_]() mutable {
+  // The world's model (the first robot's, which holds the others): what every camera sees.
+  const Simulation& world = world_host();
+  return [robot = world.robot_, b = world.build_]() mutable {
     b.render_terrain = true;
     return physics::PhysicsModel::build(robot, b);
   };
@@ -376,7 +377,7 @@ void Simulation::build_robot(control::Params controller_params) {
   if (host_ == nullptr) notice_ticks_.assign(physics_->notices().size(), 0);  // raised by the spawn state: tick 0
   startup_times_.mechanism += timer.lap();
   if (options_.sensors) {
-    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, render_factory());
+    sensors_ = sensors::SensorSet(robot_.sensors, physics_model_, options_.sensor_seed, render_factory(), prefix_);
     sensors_.sample_all(*physics_, time());
     sensor_handles_ = SensorHandles(sensors_);
     sensor_handles_.fill(sensors_);

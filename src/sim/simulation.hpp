@@ -148,8 +148,8 @@ class Simulation {
   // Throws on a description the physics, the mechanism or its model plugins cannot build (a model
   // plugin's error names its file, line and plugin).
   // `others`: more robots in the same world, each with its own mechanism, controller manager and
-  // model plugins (other()); they collide with this robot and each other. Their sensors are not
-  // simulated, and they are not settled on a slope.
+  // model plugins and sensors (other()); they collide with this robot and each other. They are
+  // not settled on a slope.
   Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
              SimulationOptions options = {}, std::vector<OtherRobot> others = {});
   ~Simulation();

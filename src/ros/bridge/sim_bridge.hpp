@@ -230,8 +230,8 @@ class SimBridge {
   explicit SimBridge(BridgeOptions options);
   // Another robot in `host`'s world (Gazebo's second spawned model; sim::Simulation::add_other):
   // taken into the running world between two ticks, every robot there going on undisturbed. Its
-  // controller manager, plugins and model API are its own; time, pause, stepping and the
-  // real-time factor are the world's (the host's); its sensors are not simulated. No run_for():
+  // controller manager, plugins, sensors and model API are its own; time, pause, stepping and the
+  // real-time factor are the world's (the host's). No run_for():
   // the host's loop ticks it and runs its observers. options.robot.name is its name in the world;
   // the world, period, start time and paused flag are the host's. Throws std::runtime_error
   // (changing nothing) when it cannot be built or the loop does not take it within 60 s.

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <deque>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -24,6 +25,7 @@
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/Imu.h>
 
 #include "param_snapshot.hpp"
 #include "ros_fixture.hpp"
@@ -228,6 +230,23 @@ TEST_F(SeveralRobotsNode, TwoCc8sDriveUnderTheirOwnNamespacesAndOneIsDeletedWhil
     gazebo_msgs::GetWorldProperties w;
     ASSERT_TRUE(call("/gazebo/get_world_properties", w));
     EXPECT_THAT(w.response.model_names, ::testing::ElementsAre("ground_plane", "cc8_a", "cc8_b"));
+  }
+  // Each rover's sensors are its own, on its own topics: the ZED2 IMUs give their own headings.
+  {
+    std::mutex m;
+    std::map<std::string, double> yaw;
+    std::vector<::ros::Subscriber> subs;
+    for (const std::string& ns : {a.ns, b.ns}) {
+      subs.push_back(nh_.subscribe<sensor_msgs::Imu>(ns + "/zed2/imu/data", 10, [&, ns](const sensor_msgs::Imu::ConstPtr& msg) {
+        const auto& q = msg->orientation;
+        std::lock_guard<std::mutex> l(m);
+        yaw[ns] = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+      }));
+    }
+    EXPECT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return yaw.size() == 2; }, 10.0))
+        << "no IMU message from one of the rovers";
+    std::lock_guard<std::mutex> l(m);
+    EXPECT_NEAR(yaw[b.ns] - yaw[a.ns], M_PI / 2, 0.05) << "the second rover faces +y, the first +x";
   }
   // A third under a namespace in use is refused, and the world runs on.
   const auto refused = spawn("cc8_c", a.ns, 5.0, -4.0, 0.0);

@@ -236,6 +236,40 @@ TEST_F(SeveralRobots, ASpawnAndADeleteDuringARunLeaveTheFirstDrivingUndisturbed)
   EXPECT_LT(with.odometry_error, 0.03 * with.distance);
 }
 
+// Each robot's sensors are its own: another robot's IMU (the ZED2's, world-referenced) reports its
+// own heading, and still does once a robot spawned before it is deleted (its links move in the
+// rebuilt physics, and the sensors look them up again).
+TEST_F(SeveralRobots, OtherRobotsSensorsReadTheirOwnLinksThroughADelete) {
+  Simulation sim(load_shared_cc8(shared), make_world({}), drive_params(), options,
+                 {cc8("cc8_2", 0.0, 3.0, -kPi / 2), cc8("cc8_3", 0.0, 6.0, kPi / 2)});
+  const auto imu = [](const Simulation& s, std::uint64_t* count = nullptr) {
+    const auto i = s.sensors().find("zed2_imu_sensor");
+    EXPECT_TRUE(i.has_value()) << "robot '" << s.robot_name_in_world() << "' has no ZED2 IMU";
+    const sensors::SensorReading& r = s.sensors().reading(i.value_or(0));
+    if (count != nullptr) *count = r.count;
+    return std::get<sensors::ImuReading>(r.value);
+  };
+  const auto yaw = [](const sensors::ImuReading& m) {
+    const auto& q = m.orientation;
+    return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  };
+  ASSERT_TRUE(sim.run_for(0.5));
+  EXPECT_EQ(sim.other(0).sensors().size(), sim.sensors().size());
+  const double host = yaw(imu(sim));
+  EXPECT_NEAR(std::remainder(yaw(imu(sim.other(0))) - host, 2 * kPi), -kPi / 2, 0.02);
+  EXPECT_NEAR(std::remainder(yaw(imu(sim.other(1))) - host, 2 * kPi), kPi / 2, 0.02);
+  EXPECT_NEAR(imu(sim.other(1)).linear_acceleration.z, 9.81, 0.3) << "at rest: the specific force of gravity";
+  std::uint64_t before = 0, after = 0;
+  imu(sim.other(1), &before);
+  ASSERT_TRUE(sim.remove_other("cc8_2"));
+  ASSERT_TRUE(sim.run_for(0.5));
+  ASSERT_EQ(sim.other(0).robot_name_in_world(), "cc8_3");
+  const sensors::ImuReading third = imu(sim.other(0), &after);
+  EXPECT_GT(after, before) << "cc8_3's IMU stopped sampling after the delete";
+  EXPECT_NEAR(std::remainder(yaw(third) - host, 2 * kPi), kPi / 2, 0.02);
+  EXPECT_NEAR(third.linear_acceleration.z, 9.81, 0.3);
+}
+
 // A second robot whose name cannot be a namespace, or clashes with another's, is an error naming it.
 TEST_F(SeveralRobots, BadNamesAreErrors) {
   for (const std::vector<std::string>& names : std::vector<std::vector<std::string>>{{""}, {"a::b"}, {"r", "r"}}) {
