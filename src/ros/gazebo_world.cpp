@@ -87,20 +87,22 @@ void GazeboWorld::stop() {
   stop_.store(true);
   if (clock_thread_.joinable()) clock_thread_.join();
   std::lock_guard<std::mutex> lock(mutex_);
-  if (robots_.empty()) return;
-  robots_.front().node->stop();  // the world's loop: the other robots stop with it
-  // The later robots' simulations go with the first one's: they are forgotten, not deleted.
-  std::vector<Robot> others;
+  if (!world_) return;
+  world_->stop();  // the world's loop: every robot stops with it
+  // The robots' simulations go with the world's: they are forgotten, not deleted.
+  std::vector<Robot> robots;
   {
     std::lock_guard<std::mutex> clock(clock_mutex_);
-    std::lock_guard<std::mutex> robots(robots_mutex_);
-    for (std::size_t i = robots_.size(); i-- > 1;) {
-      robots_[i].node->bridge().detach_from_world();
-      others.push_back(std::move(robots_[i]));
+    std::lock_guard<std::mutex> guard(robots_mutex_);
+    for (Robot& r : robots_) {
+      r.node->bridge().detach_from_world();
+      robots.push_back(std::move(r));
     }
-    robots_.resize(1);
+    robots_.clear();
   }
-  others.clear();
+  robots.clear();
+  std::lock_guard<std::mutex> clock(clock_mutex_);
+  world_.reset();
 }
 
 const GazeboWorld::Robot* GazeboWorld::find_robot(const std::string& name) const {
@@ -137,7 +139,7 @@ void GazeboWorld::clock_loop() {
   while (!stop_.load() && ::ros::ok()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
     std::lock_guard<std::mutex> lock(clock_mutex_);
-    if (host() != nullptr) {  // the first robot's loop runs the clock
+    if (host() != nullptr) {  // the world's loop runs the clock
       anchored = false;
       continue;
     }
@@ -228,20 +230,16 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   if (ns.front() != '/') ns = "/" + ns;
   node.robot_namespace = ns;
   node.pr2 = node.pr2 || pr2;
+  node.controller_manager = has_controller_manager_plugin(bridge.robot);
   for (const Robot& r : robots_) {
     // Two controller managers cannot answer under one name.
-    if (r.ns == ns) {
+    if (node.controller_manager && r.controller_manager && r.ns == ns) {
       return refuse("robot namespace '" + ns + "' is model '" + r.name + "'s: give each robot its own (spawn_model " +
                     "-robot_namespace, or the gazebo_ros_control plugin's <robotNamespace>)");
     }
     if (r.pr2 && node.pr2) {
       return refuse("model '" + r.name + "' has /pr2_controller_manager already: one PR2 controller manager per world");
     }
-  }
-  SimNode* first = host();
-  if (first != nullptr && node.pr2) {
-    return refuse("a PR2 (pr2_controller_manager, mechanism statistics, sensors) can only be the first robot of a "
-                  "world in mechsim: spawn it before model '" + robots_.front().name + "'");
   }
   bridge.world = world_name_;
   bridge.x = X_WM.position.x;
@@ -255,45 +253,77 @@ bool GazeboWorld::spawn(const std::string& name, const std::string& xml, const s
   bridge.controller_params = key.empty() ? root : root.child_or_create(key);
   bridge.parameter_root = root;
 
+  if (!world_) open_world(status);
+  if (!world_) return refuse(*status);
   Robot robot;
   robot.name = name;
   robot.ns = ns;
   robot.pr2 = node.pr2;
-  if (first != nullptr) {
-    // Another robot of the running world: taken in between two ticks of the first one's loop.
-    try {
-      robot.node = std::make_unique<SimNode>(private_nh_, std::move(bridge), node, first);
-    } catch (const std::exception& e) {
-      return refuse(e.what());
-    }
-    for (const std::string& w : robot.node->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
-    robot.node->start();
-  } else {
-    std::lock_guard<std::mutex> lock(clock_mutex_);  // the clock stands still while the robot comes in
-    bridge.start_time = static_cast<double>(ticks_) * options_.period;
-    bridge.paused = paused_.load();
-    try {
-      robot.node = std::make_unique<SimNode>(private_nh_, std::move(bridge), node);
-      for (const std::string& w : robot.node->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
-      if (std::abs(gravity_.z + 9.81) > 1e-12 || gravity_.x != 0.0 || gravity_.y != 0.0) robot.node->bridge().set_gravity(gravity_);
-      robot.node->bridge().add_observer([this](double t) { publish_states(t); });
-    } catch (const std::exception& e) {
-      return refuse(e.what());
-    }
+  robot.controller_manager = node.controller_manager;
+  try {
+    // Taken into the running world between two ticks of its loop.
+    robot.node = std::make_unique<SimNode>(private_nh_, std::move(bridge), node, world_.get());
+  } catch (const std::exception& e) {
+    close_world_if_empty();
+    return refuse(e.what());
   }
+  for (const std::string& w : robot.node->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
+  robot.node->start();
   SimNode& added = *robot.node;
   {
     std::lock_guard<std::mutex> clock(clock_mutex_);
     std::lock_guard<std::mutex> robots(robots_mutex_);
     robots_.push_back(std::move(robot));
   }
-  if (first == nullptr) added.start();
   ROS_INFO_STREAM("mechsim: spawned '" << name << "' at t = " << added.bridge().time() << " s"
                                        << ", controller manager at " << ns << (ns.back() == '/' ? "" : "/")
-                                       << "controller_manager" << (paused() ? " (paused)" : "")
-                                       << (first != nullptr ? " (ticked with '" + robots_.front().name + "')" : ""));
+                                       << "controller_manager" << (paused() ? " (paused)" : ""));
   *status = "SpawnModel: Successfully spawned entity";
   return true;
+}
+
+void GazeboWorld::open_world(std::string* status) {
+  // A world with no robot of its own: the robots come in as its other robots.
+  BridgeOptions bridge;
+  try {
+    bridge.robot = description::parse_urdf_string("<robot name=\"world\"><link name=\"world\"/></robot>", "the world",
+                                                  description::UrdfOptions{});
+  } catch (const std::exception& e) {
+    *status = e.what();
+    return;
+  }
+  bridge.world = world_name_;
+  bridge.real_time_factor = real_time_factor_.load();
+  bridge.period = options_.period;
+  NodeOptions node = options_.node;
+  node.gazebo_services = false;
+  node.world_only = true;
+  node.pr2 = false;
+  node.publish_tf = false;
+  std::lock_guard<std::mutex> lock(clock_mutex_);  // the clock stands still while the world's loop takes over
+  bridge.start_time = static_cast<double>(ticks_) * options_.period;
+  bridge.paused = paused_.load();
+  try {
+    auto world = std::make_unique<SimNode>(private_nh_, std::move(bridge), node);
+    for (const std::string& w : world->bridge().physics_warnings()) ROS_WARN_STREAM("mechsim: physics: " << w);
+    if (std::abs(gravity_.z + 9.81) > 1e-12 || gravity_.x != 0.0 || gravity_.y != 0.0) world->bridge().set_gravity(gravity_);
+    world->bridge().add_observer([this](double t) { publish_states(t); });
+    world_ = std::move(world);
+  } catch (const std::exception& e) {
+    *status = e.what();
+    return;
+  }
+  world_->start();
+}
+
+void GazeboWorld::close_world_if_empty() {
+  if (!world_ || !robots_.empty()) return;
+  std::lock_guard<std::mutex> lock(clock_mutex_);
+  world_->stop();
+  const double t = world_->bridge().time();
+  paused_.store(world_->bridge().paused());
+  world_.reset();
+  ticks_ = static_cast<std::uint64_t>(std::llround(t / options_.period));
 }
 
 bool GazeboWorld::remove(const std::string& name, std::string* status) {
@@ -308,13 +338,6 @@ bool GazeboWorld::remove(const std::string& name, std::string* status) {
     *status = "DeleteModel: model [" + name + "] does not exist";
     return false;
   }
-  if (it == robots_.begin() && robots_.size() > 1) {
-    std::string later;
-    for (std::size_t i = 1; i < robots_.size(); ++i) later += (i > 1 ? ", " : "") + robots_[i].name;
-    *status = "DeleteModel: model '" + name + "' was spawned first and holds the world's physics in mechsim: delete " +
-              "the models spawned after it first (" + later + ")";
-    return false;
-  }
   Robot gone;
   {
     std::lock_guard<std::mutex> clock(clock_mutex_);
@@ -322,23 +345,14 @@ bool GazeboWorld::remove(const std::string& name, std::string* status) {
     gone = std::move(*it);
     robots_.erase(it);
   }
-  std::vector<std::string> controllers;
-  if (gone.node->bridge().is_other_robot()) {
-    // The world goes on: outputs off, controllers stopped and unloaded, then out of the physics.
-    gone.node->stop();
-    controllers = gone.node->unload_all_controllers();
-    const BridgeResult r = gone.node->bridge().remove_from_world();
-    if (!r.ok) ROS_ERROR_STREAM("mechsim: deleting '" << name << "': " << r.error);
-    gone.node.reset();
-  } else {
-    std::lock_guard<std::mutex> lock(clock_mutex_);
-    gone.node->stop();
-    controllers = gone.node->unload_all_controllers();
-    const double t = gone.node->bridge().time();
-    paused_.store(gone.node->bridge().paused());
-    gone.node.reset();
-    ticks_ = static_cast<std::uint64_t>(std::llround(t / options_.period));
-  }
+  // The world goes on: the robot's outputs off, its controllers stopped and unloaded (topics
+  // first), then out of the physics.
+  gone.node->stop();
+  const std::vector<std::string> controllers = gone.node->unload_all_controllers();
+  const BridgeResult r = gone.node->bridge().remove_from_world();
+  if (!r.ok) ROS_ERROR_STREAM("mechsim: deleting '" << name << "': " << r.error);
+  gone.node.reset();
+  close_world_if_empty();
   ROS_INFO_STREAM("mechsim: deleted '" << name << "' (" << controllers.size() << " controllers stopped and unloaded)");
   *status = "DeleteModel: successfully deleted model";
   return true;

@@ -6,20 +6,19 @@
 // and topics (gazebo_topics.cpp).
 //
 // Models: the world's own (a ground plane, static boxes of an SDF world) and the robots spawned
-// into it, each a SimNode (sim_node.hpp: its controller manager under its robot namespace, topics,
-// model plugins). The first robot's SimNode ticks the world (its loop thread, /clock, its
-// sensors); each later one is another robot of that world (sim::Simulation::add_other): its own
-// controller manager, topics and sensors, in the same physics (they collide), ticked by the first
-// one's loop. Spawning one during a run takes it in between two ticks:
-// the robots already there go on undisturbed (no time jump, no controller restart). A spawned
-// robot goes on from the world's time; deleting one stops and unloads its controllers first (the
-// others drive on); deleting the first robot while later ones are in is refused (its simulation
-// holds the world's physics), and once it is gone the world's clock goes on from its time.
+// into it. While any robot is in, the world is a SimNode of its own with no robot (`world_`,
+// NodeOptions::world_only: the loop thread, /clock, the world's physics), and each robot is
+// another robot of it (sim::Simulation::add_other; SimNode with a host): its own controller
+// manager under its robot namespace, topics, model plugins and sensors, in the one physics (they
+// collide). Spawning one during a run takes it in between two ticks: the robots already there go
+// on undisturbed (no time jump, no controller restart); deleting one stops and unloads its
+// controllers first, the others going on. The world's SimNode comes with the first robot (from
+// the world's time) and goes with the last (the clock goes on from its time).
 //
 // Threads: while no robot is in, the clock thread advances time (paced at the real-time factor,
-// real time when that is 0) and publishes /clock; the first robot's SimNode runs the loop thread,
-// and everything that reads or changes the physics runs there between ticks (SimBridge's model
-// API). Services run on the node's spinner threads, one at a time (`mutex_`).
+// real time when that is 0) and publishes /clock; while one is, the world's SimNode runs the loop
+// thread, and everything that reads or changes the physics runs there between ticks (SimBridge's
+// model API). Services run on the node's spinner threads, one at a time (`mutex_`).
 
 #include <atomic>
 #include <chrono>
@@ -102,15 +101,22 @@ class GazeboWorld {
     std::string name;       // the model's name
     std::string ns;         // its controller manager's namespace
     bool pr2 = false;       // pr2_controller_manager's services (one per world: they have fixed names)
+    bool controller_manager = false;  // <ns>/controller_manager/* (gazebo_ros_control's plugin)
     std::unique_ptr<SimNode> node;
   };
-  // In spawn order; the first ticks the world. Changed by services under mutex_ and, since the
-  // loop thread reads it (publish_states), also under robots_mutex_, never held while waiting
-  // for the loop.
+  // The world's loop while a robot is in (no robot of its own); null otherwise. Set and reset
+  // under mutex_ and clock_mutex_.
+  std::unique_ptr<SimNode> world_;
+  // In spawn order. Changed by services under mutex_ and, since the loop thread reads it
+  // (publish_states), also under robots_mutex_, never held while waiting for the loop.
   std::vector<Robot> robots_;
   mutable std::mutex robots_mutex_;
-  SimNode* host() const { return robots_.empty() ? nullptr : robots_.front().node.get(); }
+  SimNode* host() const { return world_.get(); }
   const Robot* find_robot(const std::string& name) const;
+  // The world's SimNode, from the clock's time (spawn of the first robot; `status` says why not);
+  // and back to the clock thread when no robot is left.
+  void open_world(std::string* status);
+  void close_world_if_empty();
 
   // The clock while no robot is in (clock_mutex_ guards ticks_ against the spawn's handover).
   mutable std::mutex clock_mutex_;

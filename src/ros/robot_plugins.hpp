@@ -21,4 +21,15 @@ inline std::string plugin_namespace(const description::RobotModel& robot, bool* 
   return ns;
 }
 
+// Whether the robot runs a controller manager in Gazebo: gazebo_ros_control's plugin or the PR2's.
+inline bool has_controller_manager_plugin(const description::RobotModel& robot) {
+  for (const auto& plugin : robot.plugins) {
+    if (plugin.filename.find("gazebo_ros_control") != std::string::npos ||
+        plugin.filename.find("gazebo_ros_controller_manager") != std::string::npos) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace mechsim::ros

@@ -19,7 +19,7 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
       other_robot_(host != nullptr) {
   // The controllers' parameters as they are now; each load re-reads its own namespace.
   XmlRpc::XmlRpcValue all;
-  if (robot_nh_.getParam(robot_nh_.getNamespace(), all) && all.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
+  if (!options_.world_only && robot_nh_.getParam(robot_nh_.getNamespace(), all) && all.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
     std::string warning;
     fill_params_from_xmlrpc(bridge.controller_params, all, &warning);
     if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
@@ -54,27 +54,29 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
         });
     ROS_INFO_STREAM("mechsim: gazebo_ros_control e-stop on " << e_stop_sub_.getTopic());
   }
-  if (options_.publish_tf) {
+  if (options_.publish_tf && !options_.world_only) {
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
     tf_->publish_static(bridge_->time());
   }
-  if (options_.foxglove_port >= 0 && other_robot_) {
-    ROS_WARN_STREAM("mechsim: model '" << bridge_->robot().name << "': no live view of its own (the world's first robot has it)");
+  if (options_.foxglove_port >= 0 && options_.world_only) {
+    // no robot to show
+  } else if (options_.foxglove_port >= 0 && other_robot_) {
+    ROS_WARN_STREAM("mechsim: model '" << bridge_->robot().name << "': ~foxglove_port: no live view of a model spawned into a world (gzserver mode); mechsim_node with ~model has one");
   } else if (options_.foxglove_port >= 0) {
     const std::string url = bridge_->start_live_view(options_.foxglove_address, options_.foxglove_port,
                                                      options_.robot_description, options_.foxglove_rate);
     ROS_INFO_STREAM("mechsim: live view on " << url << " (Foxglove WebSocket protocol: Foxglove Studio, Lichtblick)");
   }
   // The statistics observer runs before on_tick, so that a tick's statistics include it.
-  if (options_.pr2) bridge_->enable_mechanism_statistics();
+  if (options_.pr2 && !options_.world_only) bridge_->enable_mechanism_statistics();
   sensors_ = std::make_unique<SensorPublishers>(root_nh_, *bridge_);
   plugins_ = std::make_unique<ModelPluginTopics>(root_nh_, *bridge_);
   bridge_->add_observer([this](double time) {
     if (!other_robot_ || outputs_on_.load(std::memory_order_acquire)) on_tick(time);
   });
   if (options_.gazebo_services) advertise_sim_services();
-  advertise_controller_manager();
-  if (options_.pr2) {
+  if (!options_.world_only && options_.controller_manager) advertise_controller_manager();
+  if (options_.pr2 && !options_.world_only) {
     advertise_pr2_controller_manager();
     advertise_pr2_outputs();
   }

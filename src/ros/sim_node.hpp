@@ -58,6 +58,12 @@ struct NodeOptions {
   std::string foxglove_address = "127.0.0.1";
   double foxglove_rate = 30.0;   // Hz (sim time) of its /tf, /joint_states, /odom
   std::string robot_description;  // its /robot_description (the URDF)
+  // The world's loop with no robot of its own (GazeboWorld: every spawned model is another robot
+  // of it): the loop and /clock only; no controller manager services, TF or live view.
+  bool world_only = false;
+  // <ns>/controller_manager/* (GazeboWorld: only for a model with gazebo_ros_control's plugin, as
+  // Gazebo; a model without one, a spawned SDF box, has none to clash with another's).
+  bool controller_manager = true;
 };
 
 class SimNode {

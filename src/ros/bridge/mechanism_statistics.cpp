@@ -27,7 +27,8 @@ MechanismStatistics::MechanismStatistics(const sim::Simulation& simulation) {
     }
     Source s;
     s.mechanism = mechanism.joint_index(joint.name);
-    if (auto index = simulation.physics().model().joint_index(joint.name)) s.physics = static_cast<int>(*index);
+    if (auto index = simulation.physics().model().joint_index(simulation.physics_name(joint.name)))
+      s.physics = static_cast<int>(*index);
     if (s.mechanism < 0 && s.physics < 0) continue;  // nothing simulates it
     s.lower = 1.0;
     s.upper = -1.0;
@@ -43,6 +44,7 @@ MechanismStatistics::MechanismStatistics(const sim::Simulation& simulation) {
   }
   windows_.resize(sources_.size());
   resets_seen_ = simulation.resets();
+  generation_ = simulation.physics_generation();
 }
 
 MechanismStatistics::Sample MechanismStatistics::sample(const sim::Simulation& simulation,
@@ -54,7 +56,7 @@ MechanismStatistics::Sample MechanismStatistics::sample(const sim::Simulation& s
     out.velocity = j.velocity;
     out.measured_effort = j.measured_effort;
     out.commanded_effort = j.commanded_effort;
-  } else {
+  } else if (source.physics >= 0) {
     const auto index = static_cast<std::size_t>(source.physics);
     out.position = simulation.physics().position(index);
     out.velocity = simulation.physics().velocity(index);
@@ -64,6 +66,14 @@ MechanismStatistics::Sample MechanismStatistics::sample(const sim::Simulation& s
 }
 
 void MechanismStatistics::update(const sim::Simulation& simulation) noexcept {
+  // A robot spawned or deleted rebuilt the world's physics: joints of another robot move in it.
+  if (simulation.physics_generation() != generation_) {
+    generation_ = simulation.physics_generation();
+    for (std::size_t k = 0; k < sources_.size(); ++k) {
+      const auto index = simulation.physics().model().joint_index(simulation.physics_name(names_[k]));
+      sources_[k].physics = index ? static_cast<int>(*index) : -1;
+    }
+  }
   // A reset moves every joint at once: no distance travelled.
   const bool reset = simulation.resets() != resets_seen_;
   resets_seen_ = simulation.resets();

@@ -50,6 +50,7 @@ class MechanismStatistics {
   std::vector<Source> sources_;
   std::vector<Window> windows_;
   std::uint64_t resets_seen_ = 0;
+  std::uint64_t generation_ = 0;  // the physics' generation the physics indices are of
 };
 
 }  // namespace mechsim::ros

@@ -244,10 +244,14 @@ description::Pose SimBridge::base_pose() const { return impl_->simulation->base_
 
 void SimBridge::enable_mechanism_statistics() {
   if (impl_->statistics) return;
-  if (impl_->host != nullptr) throw std::logic_error("mechanism statistics: only for the world's first robot");
-  impl_->statistics = std::make_shared<MechanismStatistics>(*impl_->simulation);
-  impl_->simulation->add_observer(
-      [stats = impl_->statistics](const sim::Simulation& s) { stats->update(s); });
+  auto enable = [this](sim::Simulation& simulation) {
+    impl_->statistics = std::make_shared<MechanismStatistics>(simulation);
+    simulation.add_observer([stats = impl_->statistics](const sim::Simulation& s) { stats->update(s); });
+    return BridgeResult{};
+  };
+  // Another robot's observers run in the world's loop, which is running: add it there.
+  if (impl_->host != nullptr) impl_->in_loop(enable);
+  else enable(*impl_->simulation);
 }
 
 void SimBridge::mechanism_joint_states(JointStatesData& out) const {
