@@ -519,6 +519,50 @@ TEST_F(GazeboWorldNode, DeleteUnloadsTheControllersAndTheClockGoesOn) {
   spawner.stop();
 }
 
+// Models without a controller manager (SDF boxes) come in beside a robot in any order, and any
+// model can go, the first spawned too: the others stay where the physics has them, the robot's
+// controller manager answers on.
+TEST_F(GazeboWorldNode, ModelsComeAndGoInAnyOrder) {
+  start(false);
+  auto box = [](const std::string& name) {
+    return "<?xml version='1.0'?><sdf version='1.6'><model name='" + name + "'><link name='link'><inertial><mass>1</mass>"
+           "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial><collision name='c'><geometry>"
+           "<box><size>0.3 0.3 0.3</size></box></geometry></collision></link></model></sdf>";
+  };
+  auto spawn_sdf = [&](const std::string& name, double x) {
+    gazebo_msgs::SpawnModel s;
+    s.request.model_name = name;
+    s.request.model_xml = box(name);
+    s.request.initial_pose = pose_at(x, -2.0, 0.15);
+    EXPECT_TRUE(call("/gazebo/spawn_sdf_model", s));
+    return s;
+  };
+  auto s1 = spawn_sdf("box1", 0.0);
+  ASSERT_TRUE(s1.response.success) << s1.response.status_message << "\n" << node_->log();
+  ASSERT_TRUE(spawn("bot", kBot, pose_at(0, 0, 0.2)).response.success) << node_->log();
+  auto s2 = spawn_sdf("box2", 1.0);
+  ASSERT_TRUE(s2.response.success) << s2.response.status_message;
+  gazebo_msgs::GetWorldProperties w;
+  ASSERT_TRUE(call("/gazebo/get_world_properties", w));
+  EXPECT_THAT(w.response.model_names, ::testing::ElementsAre("ground_plane", "box1", "bot", "box2"));
+  gazebo_msgs::DeleteModel d;
+  d.request.model_name = "box1";
+  ASSERT_TRUE(call("/gazebo/delete_model", d));
+  ASSERT_TRUE(d.response.success) << d.response.status_message;
+  const double t = clock_now();
+  EXPECT_TRUE(wait_until([&] { return clock_now() > t + 0.2; }, 5.0)) << "the clock stopped";
+  ASSERT_TRUE(call("/gazebo/get_world_properties", w));
+  EXPECT_THAT(w.response.model_names, ::testing::ElementsAre("ground_plane", "bot", "box2"));
+  const auto g = model_state("box2");
+  ASSERT_TRUE(g.response.success) << g.response.status_message;
+  EXPECT_NEAR(g.response.pose.position.x, 1.0, 0.01);
+  EXPECT_NEAR(g.response.pose.position.z, 0.15, 0.01) << "box2 rests on the ground";
+  controller_manager_msgs::ListControllers list;
+  EXPECT_TRUE(call("/bot/controller_manager/list_controllers", list, 5.0));
+  EXPECT_FALSE(::ros::service::exists("/controller_manager/list_controllers", false))
+      << "a model without gazebo_ros_control's plugin has no controller manager";
+}
+
 // spawn_model -J (gazebo_ros_pkgs#93): the joints are where -J puts them before the world runs,
 // in get_joint_properties and in the first joint_states (3 steps, still paused).
 TEST_F(GazeboWorldNode, SpawnModelJSetsInitialJointPositionsBeforeUnpause) {

@@ -202,10 +202,10 @@ TEST_F(Pr2GazeboHztest, ScanPasses) { run("hztest_pr2_scan.launch", 2, 200.0); }
 // Six cameras at 20 Hz (+-10): the stereo pairs' and forearm cameras' images, and the forearm
 // cameras' camera_info alone (published at the camera's rate without rendering).
 // rostest brings the launch file up afresh for each of its 8 tests, and each renders six cameras
-// for 12 s of simulated time: about 4 minutes here, too long for every CI run.
+// for 12 s of simulated time: about 1.5 minutes here, too long for every CI run.
 TEST_F(Pr2GazeboHztest, ImagePasses) {
   if (std::getenv("MECHSIM_SLOW_TESTS") == nullptr) {
-    GTEST_SKIP() << "about 4 minutes (rostest relaunches the PR2 for each of its 8 rate tests): run with MECHSIM_SLOW_TESTS=1";
+    GTEST_SKIP() << "about 1.5 minutes (rostest relaunches the PR2 for each of its 8 rate tests): run with MECHSIM_SLOW_TESTS=1";
   }
   run("hztest_pr2_image.launch", 8, 420.0);
 }
