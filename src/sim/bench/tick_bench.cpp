@@ -17,7 +17,9 @@
 // running: against CC8/FullTick, what a second robot costs a tick. CC8/SpawnAndDelete: a second
 // CC8 spawned beside a running one and deleted again (Simulation::add_other, remove_other: two
 // physics rebuilds with the state carried over, its controllers loaded and started): the pause a
-// /gazebo/spawn_urdf_model plus delete_model puts in the loop.
+// /gazebo/spawn_urdf_model plus delete_model puts in the loop. CC8/InARobotlessWorld/FullTick: the
+// CC8 as the other robot of a world with no robot of its own, the form mechsim_node's gzserver
+// mode gives every spawned model: against CC8/FullTick, what that form costs.
 
 #include <benchmark/benchmark.h>
 
@@ -73,6 +75,17 @@ std::unique_ptr<sim::Simulation> make_cc8_with(std::vector<sim::OtherRobot> othe
 }
 
 std::unique_ptr<sim::Simulation> make_cc8() { return make_cc8_with({}); }
+
+std::unique_ptr<sim::Simulation> make_cc8_in_robotless_world() {
+  auto world = description::parse_urdf_string("<robot name='world'><link name='world'/></robot>", "world",
+                                              description::UrdfOptions{});
+  sim::OtherRobot cc8 = second_cc8(0.0);
+  cc8.name = "cc8";
+  auto sim = std::make_unique<sim::Simulation>(std::move(world), sim::make_world({}), control::Params{},
+                                               sim::SimulationOptions{}, std::vector<sim::OtherRobot>{cc8});
+  sim->other(0).load_and_start(cc8_controllers());
+  return sim;
+}
 std::unique_ptr<sim::Simulation> make_two_cc8s() { return make_cc8_with({second_cc8(3.0)}); }
 
 void BM_SpawnAndDelete(benchmark::State& state) {
@@ -186,6 +199,8 @@ void BM_LasersImuShare(benchmark::State& state) {
 
 BENCHMARK(BM_BareStep<make_cc8>)->Name("CC8/BareStep")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_cc8>)->Name("CC8/FullTick")->MinTime(2.0);
+BENCHMARK(BM_BareStep<make_cc8_in_robotless_world>)->Name("CC8/InARobotlessWorld/BareStep")->MinTime(2.0);
+BENCHMARK(BM_FullTick<make_cc8_in_robotless_world>)->Name("CC8/InARobotlessWorld/FullTick")->MinTime(2.0);
 BENCHMARK(BM_FullTick<make_two_cc8s>)->Name("CC8/TwoInOneWorld/FullTick")->MinTime(2.0);
 BENCHMARK(BM_SpawnAndDelete)->Name("CC8/SpawnAndDelete")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareStep<make_pr2_with_sensors>)->Name("PR2/BareStep")->MinTime(2.0);
