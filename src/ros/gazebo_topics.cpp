@@ -49,8 +49,8 @@ void GazeboWorld::publish_states(double time) {
   const bool links = t.link_subscribers.load(std::memory_order_relaxed) > 0;
   if ((!models && !links) || time + 1e-9 < t.next_states) return;
   t.next_states = time + (options_.model_states_rate > 0.0 ? 1.0 / options_.model_states_rate : 0.0);
-  // The world's loop thread: robots_ changes only under robots_mutex_ (spawn, delete), and the
-  // first robot, whose loop this is, stays while others are in.
+  // The world's loop thread: robots_ changes only under robots_mutex_ (spawn, delete); it may be
+  // empty (a model on its way in or out).
   std::lock_guard<std::mutex> lock(robots_mutex_);
   t.robot_links.resize(robots_.size());
   for (std::size_t r = 0; r < robots_.size(); ++r) robots_[r].node->bridge().link_states_now(t.robot_links[r]);
@@ -60,7 +60,8 @@ void GazeboWorld::publish_states(double time) {
     m.name.resize(n);
     m.pose.resize(n);
     m.twist.resize(n);
-    robots_.front().node->bridge().world_model_states_now(t.world_models);
+    // The world's own SimNode runs this loop: it stays until the loop has stopped.
+    world_->bridge().world_model_states_now(t.world_models);
     for (std::size_t i = 0; i < world_models_.size(); ++i) {
       m.name[i] = world_models_[i];
       // An SDF world's models where the physics has them; the ground plane of mechsim's own

@@ -524,6 +524,18 @@ TEST_F(GazeboWorldNode, DeleteUnloadsTheControllersAndTheClockGoesOn) {
 // controller manager answers on.
 TEST_F(GazeboWorldNode, ModelsComeAndGoInAnyOrder) {
   start(false);
+  // Subscribed before anything is in: the states are published through every spawn and delete
+  // (the world's loop runs while a model is on its way in, with no model listed yet).
+  std::mutex m;
+  gazebo_msgs::ModelStates states;
+  int state_messages = 0;
+  ::ros::Subscriber sub = nh_.subscribe<gazebo_msgs::ModelStates>(
+      "/gazebo/model_states", 1, [&](const gazebo_msgs::ModelStates::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        states = *msg;
+        ++state_messages;
+      });
+  ASSERT_TRUE(wait_until([&] { return sub.getNumPublishers() > 0; }, 5.0));
   auto box = [](const std::string& name) {
     return "<?xml version='1.0'?><sdf version='1.6'><model name='" + name + "'><link name='link'><inertial><mass>1</mass>"
            "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial><collision name='c'><geometry>"
@@ -561,6 +573,10 @@ TEST_F(GazeboWorldNode, ModelsComeAndGoInAnyOrder) {
   EXPECT_TRUE(call("/bot/controller_manager/list_controllers", list, 5.0));
   EXPECT_FALSE(::ros::service::exists("/controller_manager/list_controllers", false))
       << "a model without gazebo_ros_control's plugin has no controller manager";
+  const int seen = [&] { std::lock_guard<std::mutex> l(m); return state_messages; }();
+  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return state_messages > seen; }, 5.0)) << node_->log();
+  std::lock_guard<std::mutex> l(m);
+  EXPECT_THAT(states.name, ::testing::ElementsAre("ground_plane", "bot", "box2"));
 }
 
 // spawn_model -J (gazebo_ros_pkgs#93): the joints are where -J puts them before the world runs,
