@@ -341,6 +341,24 @@ void Physics::set_spawn_pose(const Pose& X_WB) {
   reset();
 }
 
+bool Physics::set_free_link_spawn_pose(std::size_t link, const Pose& X_WL) {
+  mjModel* m = data_->m;
+  if (link >= model_->links().size()) return false;
+  const LinkInfo& info = model_->links()[link];
+  if (info.body < 1 || m->body_jntnum[info.body] < 1) return false;
+  const int j = m->body_jntadr[info.body];
+  if (m->jnt_type[j] != mjJNT_FREE) return false;
+  const Pose X_WBody = compose(X_WL, inverse(info.X_BL));
+  const Quat r = quat_normalized(X_WBody.orientation);
+  const mjtNum values[7] = {X_WBody.position.x, X_WBody.position.y, X_WBody.position.z, r.w, r.x, r.y, r.z};
+  std::copy(values, values + 7, m->qpos0 + m->jnt_qposadr[j]);
+  mj_resetData(m, data_->d);
+  mj_setConst(m, data_->d);
+  data_->constants_stale = false;
+  reset();
+  return true;
+}
+
 void Physics::set_base_twist(const Twist& V) {
   const int j = detail::robot_free_joint(*model_, data_->m);
   if (j < 0) return;
@@ -436,12 +454,13 @@ std::size_t Physics::contacts(std::vector<Contact>& out) const {
   return out.size();
 }
 
-Bounds Physics::robot_bounds() const {
-  refresh_kinematics();
-  const mjModel* m = data_->m;
-  const mjData* d = data_->d;
+namespace {
+
+// The box around collision geoms `geoms` in the current pose (meshes by their bounding spheres).
+template <class Geoms>
+Bounds geom_bounds(const mjModel* m, const mjData* d, const Geoms& geoms) {
   Bounds b;
-  for (const int g : data_->robot_collision_geoms) {
+  for (const int g : geoms) {
     const mjtNum* p = d->geom_xpos + 3 * g;
     const mjtNum* R = d->geom_xmat + 9 * g;  // row-major: R[3 i + j] = world axis i . geom axis j
     const mjtNum* s = m->geom_size + 3 * g;
@@ -461,6 +480,23 @@ Bounds Physics::robot_bounds() const {
     b.max = {std::max(b.max.x, p[0] + half[0]), std::max(b.max.y, p[1] + half[1]), std::max(b.max.z, p[2] + half[2])};
   }
   return b;
+}
+
+}  // namespace
+
+Bounds Physics::robot_bounds() const {
+  refresh_kinematics();
+  return geom_bounds(data_->m, data_->d, data_->robot_collision_geoms);
+}
+
+Bounds Physics::collision_bounds(const std::string& link_prefix) const {
+  refresh_kinematics();
+  std::vector<int> geoms;
+  for (const int g : data_->robot_collision_geoms) {
+    const std::string& link = data_->geom_links[static_cast<std::size_t>(g)];
+    if (link_prefix.empty() ? link.find("::") == std::string::npos : link.rfind(link_prefix, 0) == 0) geoms.push_back(g);
+  }
+  return geom_bounds(data_->m, data_->d, geoms);
 }
 
 double Physics::ground_height(double x, double y) const {

@@ -232,6 +232,11 @@ class Physics {
   // set-up only (recomputes the model's constants, allocates nothing but is not for a loop).
   // Ignored when the robot is fixed to the world.
   void set_spawn_pose(const description::Pose& X_WB);
+  // The same for a link floating on a free joint of its own (another robot's root): its spawn
+  // pose becomes X_WL and every body goes back to its spawn state, so only for a physics just
+  // built (a world rebuilt with another robot, before take_state_from). False, changing nothing,
+  // for a link without one.
+  bool set_free_link_spawn_pose(std::size_t link, const description::Pose& X_WL);
 
   // Forces from outside (Gazebo's apply_body_wrench / apply_joint_effort; sim/external_forces.hpp
   // keeps their timing): they act in every step until changed, on top of everything else, and
@@ -267,6 +272,9 @@ class Physics {
   // spheres); empty for a robot without collision geometry. The robot's footprint on the ground
   // is its x-y extent.
   Bounds robot_bounds() const;
+  // The same for the collision geometry of the links whose names begin with `link_prefix`
+  // (another robot's: "<name>::"); "" for the first robot's alone (links without "::").
+  Bounds collision_bounds(const std::string& link_prefix) const;
 
   // Wheel-soil: with a soil, every wheel of the model (PhysicsModel::wheels()) meets the ground
   // through the Bekker-Wong model (terramechanics.hpp) instead of rigid contact: step() computes

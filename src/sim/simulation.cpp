@@ -23,6 +23,10 @@
 #include "sim/ground_plane.hpp"
 
 namespace mechsim::sim {
+
+namespace {
+constexpr double kLevelSlope = 1e-4;  // rad: a fitted slope below this is level ground
+}  // namespace
 namespace {
 
 using mechanism::HardwareInterface;
@@ -107,6 +111,8 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   physics_->set_soil(world_.soil);
   startup_times_.data = timer.lap();
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
+  if (options_.settle_on_ground)
+    for (const OtherRobot& o : others) fit_to_ground(*physics_model_, *physics_, o);
   floating_ = !physics_model_->fixed_to_world();
   spawn_pose_ = physics_->base_pose();
   startup_times_.mechanism = timer.lap();
@@ -169,10 +175,11 @@ void Simulation::bind_physics() {
   sensors_.set_model(physics_model_, render_factory());
 }
 
-void Simulation::rebuild_physics(const std::vector<OtherRobot>& others) {
+void Simulation::rebuild_physics(const std::vector<OtherRobot>& others, const OtherRobot* arriving) {
   const physics::BuildOptions build = build_options(world_, options_, others);
   auto model = physics::PhysicsModel::build(robot_, build);
   auto physics = std::make_shared<physics::Physics>(model);
+  if (arriving != nullptr) fit_to_ground(*model, *physics, *arriving);
   physics->take_state_from(*physics_);
   // Nothing below throws: the world changes as a whole or not at all.
   for (const std::string& w : physics_warnings_of_physics()) earlier_notices_.push_back(w);
@@ -197,7 +204,7 @@ Simulation& Simulation::add_other(OtherRobot other) {
   specs.push_back(std::move(spec));
   const std::shared_ptr<physics::Physics> before = physics_;
   const std::shared_ptr<const physics::PhysicsModel> model_before = physics_model_;
-  rebuild_physics(specs);
+  rebuild_physics(specs, options_.settle_on_ground ? &specs.back() : nullptr);
   try {
     others_.push_back(std::unique_ptr<Simulation>(new Simulation(*this, std::move(other))));
   } catch (...) {
@@ -386,21 +393,30 @@ void Simulation::build_robot(control::Params controller_params) {
   startup_times_.sensors = timer.lap();
 }
 
-namespace {
-constexpr double kLevel = 1e-4;  // rad: a fitted slope below this is level ground
-}  // namespace
 
-void Simulation::settle_on_ground() {
-  const physics::Bounds robot = physics_->robot_bounds();  // spawned level
-  if (robot.empty()) return;
-  const physics::SpawnPose& spawn = options_.spawn;
+std::optional<description::Pose> Simulation::fitted_spawn(const physics::Bounds& robot,
+                                                          const physics::SpawnPose& spawn) const {
+  if (!world_.spec.terrain || robot.empty()) return std::nullopt;
   const GroundPlane plane = fit_ground_plane(*world_.spec.terrain, {robot.min.x, robot.max.x, robot.min.y, robot.max.y},
                                              spawn.x, spawn.y);
-  if (plane.slope() < kLevel) return;  // level ground (the Mars Yard's start pad): as built
+  if (plane.slope() < kLevelSlope) return std::nullopt;  // level ground (the Mars Yard's start pad): as built
   const RollPitch rp = roll_pitch_on(plane, spawn.yaw);
   // The clearance spawn.z along the normal (as on level ground) is spawn.z / cos(slope) upright.
   const double z = plane.z0 + spawn.z / std::cos(plane.slope());
-  physics_->set_spawn_pose({{spawn.x, spawn.y, z}, physics::quat_from_rpy(rp.roll, rp.pitch, spawn.yaw)});
+  return description::Pose{{spawn.x, spawn.y, z}, physics::quat_from_rpy(rp.roll, rp.pitch, spawn.yaw)};
+}
+
+void Simulation::fit_to_ground(const physics::PhysicsModel& model, physics::Physics& physics,
+                               const OtherRobot& other) const {
+  const std::string prefix = other.name + "::";
+  const auto root = model.link_index(prefix + other.robot.root_link);
+  if (!root) return;
+  if (const auto X = fitted_spawn(physics.collision_bounds(prefix), other.spawn)) physics.set_free_link_spawn_pose(*root, *X);
+}
+
+void Simulation::settle_on_ground() {
+  const physics::Bounds robot = physics_->collision_bounds("");  // spawned level; without other robots
+  if (const auto X = fitted_spawn(robot, options_.spawn)) physics_->set_spawn_pose(*X);
 }
 
 void Simulation::apply_initial_joints() {

@@ -148,8 +148,9 @@ class Simulation {
   // Throws on a description the physics, the mechanism or its model plugins cannot build (a model
   // plugin's error names its file, line and plugin).
   // `others`: more robots in the same world, each with its own mechanism, controller manager and
-  // model plugins and sensors (other()); they collide with this robot and each other. They are
-  // not settled on a slope.
+  // model plugins and sensors (other()); they collide with this robot and each other. With
+  // options.settle_on_ground they stand on a terrain's slope as this robot does, here and when
+  // add_other() spawns them.
   Simulation(description::RobotModel robot, const World& world, control::Params controller_params,
              SimulationOptions options = {}, std::vector<OtherRobot> others = {});
   ~Simulation();
@@ -319,7 +320,8 @@ class Simulation {
   // reset() for this robot, after the physics was reset.
   void reset_robot();
   // The world's physics rebuilt with `others` (Physics::take_state_from), and every robot bound to it.
-  void rebuild_physics(const std::vector<OtherRobot>& others);
+  // `arriving`: a robot that comes in with this rebuild, fitted to the terrain's slope under it.
+  void rebuild_physics(const std::vector<OtherRobot>& others, const OtherRobot* arriving = nullptr);
   // This robot's joints and root looked up in the (new) physics.
   void bind_physics();
   std::vector<OtherRobot> other_specs() const;  // what rebuilds the others' part of the physics
@@ -336,6 +338,11 @@ class Simulation {
   void apply_requests();
   void apply_initial_joints();
   void settle_on_ground();
+  // The spawn pose on the ground plane fitted under `robot` (its collision bounds, spawned level)
+  // at `spawn`; none on level ground or without a terrain.
+  std::optional<description::Pose> fitted_spawn(const physics::Bounds& robot, const physics::SpawnPose& spawn) const;
+  // An other robot in a just-built `physics` fitted so (settle_on_ground's rule for it).
+  void fit_to_ground(const physics::PhysicsModel& model, physics::Physics& physics, const OtherRobot& other) const;
 
   description::RobotModel robot_;
   std::string name_, prefix_;       // an other robot's name and "<name>::"; "" for the first

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -268,6 +269,40 @@ TEST_F(SeveralRobots, OtherRobotsSensorsReadTheirOwnLinksThroughADelete) {
   EXPECT_GT(after, before) << "cc8_3's IMU stopped sampling after the delete";
   EXPECT_NEAR(std::remainder(yaw(third) - host, 2 * kPi), kPi / 2, 0.02);
   EXPECT_NEAR(third.linear_acceleration.z, 9.81, 0.3);
+}
+
+// With settle_on_ground (scenarios' default), robots given at the start and a CC8 spawned into the
+// running world on a 10-degree slope stand on it as the first one does: the same tilt, and the
+// spawned one stays where it was put (no drop, no slide while its drive holds it).
+TEST_F(SeveralRobots, ASpawnOnASlopeIsFittedToItAsTheFirstRobotIs) {
+  WorldConfig slope;
+  slope.name = "slope";
+  options.settle_on_ground = true;
+  Simulation sim(load_shared_cc8(shared), make_world(slope), drive_params(), options, {cc8("cc8_1", 0.0, -3.0, 0.0)});
+  sim.load_and_start(kDrive);
+  ASSERT_TRUE(sim.run_for(0.2));
+  Simulation& two = sim.add_other(cc8("cc8_2", 0.0, 3.0, 0.0));
+  two.load_and_start(kDrive);
+  const auto pitch = [](const description::Pose& p) {
+    const auto& q = p.orientation;
+    return std::asin(std::clamp(2.0 * (q.w * q.y - q.z * q.x), -1.0, 1.0));
+  };
+  const description::Pose first = sim.spawn_pose(), spawned = two.base_pose();
+  std::cout << "[ figures  ] on the 10-degree slope: first robot pitch " << pitch(first) * 180 / kPi
+            << " deg, spawned robot pitch " << pitch(spawned) * 180 / kPi << " deg\n";
+  EXPECT_NEAR(pitch(spawned), pitch(first), 0.5 * kPi / 180);
+  EXPECT_NEAR(pitch(sim.other(0).spawn_pose()), pitch(first), 0.5 * kPi / 180) << "the robot given at the start";
+  EXPECT_GT(std::abs(pitch(spawned)), 5.0 * kPi / 180) << "the spawned robot stands level on the slope";
+  ASSERT_TRUE(sim.run_for(1.0));
+  const description::Pose later = two.base_pose();
+  // Both were put spawn.z (2 cm) clear of the ground and settle onto their suspensions alike.
+  const double drop_first = first.position.z - sim.base_pose().position.z;
+  const double drop_spawned = spawned.position.z - later.position.z;
+  std::cout << "[ figures  ] settling: first robot " << drop_first * 1000 << " mm, spawned robot " << drop_spawned * 1000
+            << " mm\n";
+  EXPECT_NEAR(drop_spawned, drop_first, 0.01) << "it dropped or bounced";
+  EXPECT_NEAR(later.position.x, spawned.position.x, 0.02) << "it slid";
+  EXPECT_NEAR(pitch(later), pitch(spawned), 1.0 * kPi / 180);
 }
 
 // A second robot whose name cannot be a namespace, or clashes with another's, is an error naming it.
