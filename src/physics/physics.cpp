@@ -326,13 +326,11 @@ void Physics::set_base_pose(const Pose& X_WB) {
   data_->stale = true;
 }
 
-void Physics::set_spawn_pose(const Pose& X_WB) {
+void Physics::set_free_joint_spawn(int joint, const Pose& X_WBody) {
   mjModel* m = data_->m;
-  const int j = detail::robot_free_joint(*model_, m);
-  if (j < 0) return;
-  const Quat r = quat_normalized(X_WB.orientation);
-  const mjtNum values[7] = {X_WB.position.x, X_WB.position.y, X_WB.position.z, r.w, r.x, r.y, r.z};
-  std::copy(values, values + 7, m->qpos0 + m->jnt_qposadr[j]);
+  const Quat r = quat_normalized(X_WBody.orientation);
+  const mjtNum values[7] = {X_WBody.position.x, X_WBody.position.y, X_WBody.position.z, r.w, r.x, r.y, r.z};
+  std::copy(values, values + 7, m->qpos0 + m->jnt_qposadr[joint]);
   // The constants the compiler derives at qpos0 (inverse inertias that scale constraint
   // softness), as if the model had been compiled at this pose.
   mj_resetData(m, data_->d);
@@ -341,21 +339,19 @@ void Physics::set_spawn_pose(const Pose& X_WB) {
   reset();
 }
 
+void Physics::set_spawn_pose(const Pose& X_WB) {
+  const int j = detail::robot_free_joint(*model_, data_->m);
+  if (j >= 0) set_free_joint_spawn(j, X_WB);
+}
+
 bool Physics::set_free_link_spawn_pose(std::size_t link, const Pose& X_WL) {
-  mjModel* m = data_->m;
+  const mjModel* m = data_->m;
   if (link >= model_->links().size()) return false;
   const LinkInfo& info = model_->links()[link];
   if (info.body < 1 || m->body_jntnum[info.body] < 1) return false;
   const int j = m->body_jntadr[info.body];
   if (m->jnt_type[j] != mjJNT_FREE) return false;
-  const Pose X_WBody = compose(X_WL, inverse(info.X_BL));
-  const Quat r = quat_normalized(X_WBody.orientation);
-  const mjtNum values[7] = {X_WBody.position.x, X_WBody.position.y, X_WBody.position.z, r.w, r.x, r.y, r.z};
-  std::copy(values, values + 7, m->qpos0 + m->jnt_qposadr[j]);
-  mj_resetData(m, data_->d);
-  mj_setConst(m, data_->d);
-  data_->constants_stale = false;
-  reset();
+  set_free_joint_spawn(j, compose(X_WL, inverse(info.X_BL)));
   return true;
 }
 

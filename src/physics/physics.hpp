@@ -325,6 +325,10 @@ class Physics {
   const Data& data() const { return *data_; }  // for physics/ only (physics_data.hpp)
 
  private:
+  // Free joint `joint`'s spawn configuration (qpos0) becomes X_WBody; every body back to its spawn
+  // state (set_spawn_pose, set_free_link_spawn_pose).
+  void set_free_joint_spawn(int joint, const description::Pose& X_WBody);
+
   void refresh_kinematics() const;
   // The twist of the point p_W (world frame) moving with body b.
   Twist point_twist(int b, const description::Vec3& p_W) const;
