@@ -180,7 +180,7 @@ void Pr2Abuse::gazebo_request(AbuseInputs& in) {
         case 0: s.request.model_xml = "<robot name='x'><link name='a'/>"; break;  // not closed
         case 1: s.request.model_xml = ""; break;
         case 2: s.request.model_xml = std::string(100000, '<'); break;
-        default: s.request.model_xml = "<robot name='y'><link name='a'/></robot>"; break;  // a second robot
+        default: s.request.model_xml = "<robot name='y'><link name='a'/></robot>"; break;  // well formed (the pose is not)
       }
       s.request.initial_pose = bad_pose(in);
       s.request.reference_frame = in.bad_name();
