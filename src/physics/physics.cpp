@@ -345,13 +345,9 @@ void Physics::set_spawn_pose(const Pose& X_WB) {
 }
 
 bool Physics::set_free_link_spawn_pose(std::size_t link, const Pose& X_WL) {
-  const mjModel* m = data_->m;
-  if (link >= model_->links().size()) return false;
-  const LinkInfo& info = model_->links()[link];
-  if (info.body < 1 || m->body_jntnum[info.body] < 1) return false;
-  const int j = m->body_jntadr[info.body];
-  if (m->jnt_type[j] != mjJNT_FREE) return false;
-  set_free_joint_spawn(j, compose(X_WL, inverse(info.X_BL)));
+  const int j = detail::free_joint_of_link(*model_, data_->m, link);
+  if (j < 0) return false;
+  set_free_joint_spawn(j, compose(X_WL, inverse(model_->links()[link].X_BL)));
   return true;
 }
 

@@ -83,6 +83,16 @@ inline int robot_free_joint(const PhysicsModel& model, const mjModel* m) {
   return -1;
 }
 
+// The free joint of link `link`'s own body (another robot's root), or -1 for a link whose body
+// does not float on one.
+inline int free_joint_of_link(const PhysicsModel& model, const mjModel* m, std::size_t link) {
+  if (link >= model.links().size()) return -1;
+  const int body = model.links()[link].body;
+  if (body < 1 || m->body_jntnum[body] < 1) return -1;
+  const int j = m->body_jntadr[body];
+  return m->jnt_type[j] == mjJNT_FREE ? j : -1;
+}
+
 inline std::string_view joint_of_dof(const mjModel* m, int dof) {
   if (dof < 0 || dof >= m->nv) return "?";
   const int j = m->dof_jntid[dof];

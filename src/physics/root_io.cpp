@@ -61,13 +61,9 @@ bool Physics::root_state(Pose& X_WB, Twist& V_WB) const noexcept {
 }
 
 bool Physics::free_link_state(std::size_t link, Pose& X_WL, Twist& V_WL) const noexcept {
-  const mjModel* m = data_->m;
-  if (link >= model_->links().size()) return false;
-  const LinkInfo& info = model_->links()[link];
-  if (info.body < 1 || m->body_jntnum[info.body] < 1) return false;
-  const int j = m->body_jntadr[info.body];
-  if (m->jnt_type[j] != mjJNT_FREE) return false;
-  free_joint_state(m, data_->d, j, info.X_BL, X_WL, V_WL);
+  const int j = detail::free_joint_of_link(*model_, data_->m, link);
+  if (j < 0) return false;
+  free_joint_state(data_->m, data_->d, j, model_->links()[link].X_BL, X_WL, V_WL);
   return true;
 }
 
@@ -96,13 +92,9 @@ void Physics::command_root_velocity(const Twist& V_WB) noexcept {
 }
 
 void Physics::command_free_link_velocity(std::size_t link, const Twist& V_WL) noexcept {
-  const mjModel* m = data_->m;
-  if (link >= model_->links().size()) return;
-  const LinkInfo& info = model_->links()[link];
-  if (info.body < 1 || m->body_jntnum[info.body] < 1) return;
-  const int j = m->body_jntadr[info.body];
-  if (m->jnt_type[j] != mjJNT_FREE) return;
-  command_free_joint(m, data_->d, j, info.X_BL, V_WL);
+  const int j = detail::free_joint_of_link(*model_, data_->m, link);
+  if (j < 0) return;
+  command_free_joint(data_->m, data_->d, j, model_->links()[link].X_BL, V_WL);
   data_->stale = true;
 }
 

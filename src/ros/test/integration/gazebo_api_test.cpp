@@ -34,120 +34,10 @@
 #include <sensor_msgs/JointState.h>
 #include <std_srvs/Empty.h>
 
-#include "param_snapshot.hpp"
-#include "ros_fixture.hpp"
+#include "gazebo_world_fixture.hpp"
 
 namespace mechsim::ros::test {
 namespace {
-
-// 2.5 kg in all: a 2 kg box and a 0.5 kg arm 0.15 m above its centre.
-const char* const kBot = R"(<robot name="bot">
-  <link name="base">
-    <inertial><mass value="2"/><inertia ixx="0.0134" iyy="0.0134" izz="0.0134" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision>
-  </link>
-  <joint name="arm_joint" type="revolute">
-    <parent link="base"/><child link="arm"/><origin xyz="0 0 0.15"/><axis xyz="0 0 1"/>
-    <limit lower="-3" upper="3" effort="10" velocity="5"/>
-  </joint>
-  <link name="arm">
-    <inertial><origin xyz="0.1 0 0"/><mass value="0.5"/>
-      <inertia ixx="0.0001" iyy="0.0017" izz="0.0017" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin xyz="0.1 0 0"/><geometry><box size="0.2 0.04 0.04"/></geometry></collision>
-  </link>
-  <transmission name="arm_transmission">
-    <type>transmission_interface/SimpleTransmission</type>
-    <joint name="arm_joint"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
-    <actuator name="arm_motor"><mechanicalReduction>1</mechanicalReduction></actuator>
-  </transmission>
-  <gazebo><plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so"><robotNamespace>/bot</robotNamespace></plugin></gazebo>
-</robot>)";
-
-geometry_msgs::Pose pose_at(double x, double y, double z) {
-  geometry_msgs::Pose p;
-  p.position.x = x;
-  p.position.y = y;
-  p.position.z = z;
-  p.orientation.w = 1.0;
-  return p;
-}
-
-class GazeboWorldNode : public ::testing::Test {
- protected:
-  void start(bool paused, const std::string& world = "") {
-    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    std::vector<std::string> argv{MECHSIM_NODE_EXE, "__name:=gazebo", "_gazebo:=true", "_real_time_factor:=1.0",
-                                  std::string("_paused:=") + (paused ? "true" : "false")};
-    if (!world.empty()) argv.push_back("_world:=" + world);
-    node_ = std::make_unique<ChildProcess>(argv, log_dir() + "/gazebo_" + name + ".log");
-    clock_sub_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 10, [this](const rosgraph_msgs::Clock::ConstPtr& m) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      clock_ = m->clock.toSec();
-    });
-    ASSERT_TRUE(::ros::service::waitForService("/gazebo/spawn_urdf_model", ::ros::Duration(20.0)))
-        << "the node did not come up; its log:\n" << node_->log();
-  }
-
-  void TearDown() override {
-    clock_sub_.shutdown();
-    if (node_) {
-      EXPECT_EQ(node_->stop(10.0), 0) << "mechsim_node did not stop cleanly; its log:\n" << node_->log();
-    }
-    params_.forget_new();
-  }
-
-  double clock_now() {
-    double t = -1.0;
-    wait_until(
-        [&] {
-          std::lock_guard<std::mutex> lock(mutex_);
-          t = clock_;
-          return t >= 0.0;
-        },
-        5.0);
-    return t;
-  }
-
-  gazebo_msgs::SpawnModel spawn(const std::string& name, const std::string& xml, const geometry_msgs::Pose& pose) {
-    gazebo_msgs::SpawnModel s;
-    s.request.model_name = name;
-    s.request.model_xml = xml;
-    s.request.initial_pose = pose;
-    EXPECT_TRUE(call("/gazebo/spawn_urdf_model", s));
-    return s;
-  }
-
-  gazebo_msgs::GetModelState model_state(const std::string& name, const std::string& frame = "") {
-    gazebo_msgs::GetModelState g;
-    g.request.model_name = name;
-    g.request.relative_entity_name = frame;
-    EXPECT_TRUE(call("/gazebo/get_model_state", g));
-    return g;
-  }
-
-  double step(std::uint64_t steps) {
-    mechsim_msgs::StepSimulation s;
-    s.request.steps = steps;
-    EXPECT_TRUE(call("/gazebo/step_simulation", s));
-    EXPECT_TRUE(s.response.success) << s.response.status_message;
-    return s.response.sim_time;
-  }
-
-  void zero_gravity() {
-    gazebo_msgs::SetPhysicsProperties p;
-    p.request.time_step = 0.001;
-    p.request.max_update_rate = 1000.0;
-    ASSERT_TRUE(call("/gazebo/set_physics_properties", p));
-    ASSERT_TRUE(p.response.success) << p.response.status_message;
-  }
-
-  std::unique_ptr<ChildProcess> node_;
-  ParamSnapshot params_;
-  ::ros::NodeHandle nh_;
-  ::ros::Subscriber clock_sub_;
-  std::mutex mutex_;
-  double clock_ = -1.0;
-};
 
 TEST_F(GazeboWorldNode, SpawnsIntoARunningWorldWithoutATimeJump) {
   start(false);
@@ -462,22 +352,15 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsAreWhereThePhysicsHasThem) {
   EXPECT_FALSE(set.response.success);
   EXPECT_THAT(set.response.status_message, ::testing::HasSubstr("static"));
 
-  std::mutex m;
-  gazebo_msgs::ModelStates states;
-  ::ros::Subscriber sub = nh_.subscribe<gazebo_msgs::ModelStates>(
-      "/gazebo/model_states", 1, [&](const gazebo_msgs::ModelStates::ConstPtr& msg) {
-        std::lock_guard<std::mutex> l(m);
-        states = *msg;
-      });
-  ASSERT_TRUE(wait_until([&] { return sub.getNumPublishers() > 0; }, 5.0));
+  ModelStatesWatch watch(nh_);
+  ASSERT_TRUE(wait_until([&] { return watch.connected(); }, 5.0));
   ASSERT_TRUE(wait_until(
       [&] {
         step(1);
-        std::lock_guard<std::mutex> l(m);
-        return !states.name.empty();
+        return watch.count() > 0;
       },
       10.0));
-  std::lock_guard<std::mutex> l(m);
+  const gazebo_msgs::ModelStates states = watch.latest();
   EXPECT_THAT(states.name, ::testing::ElementsAre("ground", "pillar", "crate", "bot"));
   ASSERT_EQ(states.pose.size(), 4u);
   EXPECT_NEAR(states.pose[1].position.x, -2.0, 1e-9);
@@ -517,66 +400,6 @@ TEST_F(GazeboWorldNode, DeleteUnloadsTheControllersAndTheClockGoesOn) {
   // In again under the same name.
   EXPECT_TRUE(spawn("bot", kBot, pose_at(0, 0, 0.2)).response.success);
   spawner.stop();
-}
-
-// Models without a controller manager (SDF boxes) come in beside a robot in any order, and any
-// model can go, the first spawned too: the others stay where the physics has them, the robot's
-// controller manager answers on.
-TEST_F(GazeboWorldNode, ModelsComeAndGoInAnyOrder) {
-  start(false);
-  // Subscribed before anything is in: the states are published through every spawn and delete
-  // (the world's loop runs while a model is on its way in, with no model listed yet).
-  std::mutex m;
-  gazebo_msgs::ModelStates states;
-  int state_messages = 0;
-  ::ros::Subscriber sub = nh_.subscribe<gazebo_msgs::ModelStates>(
-      "/gazebo/model_states", 1, [&](const gazebo_msgs::ModelStates::ConstPtr& msg) {
-        std::lock_guard<std::mutex> l(m);
-        states = *msg;
-        ++state_messages;
-      });
-  ASSERT_TRUE(wait_until([&] { return sub.getNumPublishers() > 0; }, 5.0));
-  auto box = [](const std::string& name) {
-    return "<?xml version='1.0'?><sdf version='1.6'><model name='" + name + "'><link name='link'><inertial><mass>1</mass>"
-           "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial><collision name='c'><geometry>"
-           "<box><size>0.3 0.3 0.3</size></box></geometry></collision></link></model></sdf>";
-  };
-  auto spawn_sdf = [&](const std::string& name, double x) {
-    gazebo_msgs::SpawnModel s;
-    s.request.model_name = name;
-    s.request.model_xml = box(name);
-    s.request.initial_pose = pose_at(x, -2.0, 0.15);
-    EXPECT_TRUE(call("/gazebo/spawn_sdf_model", s));
-    return s;
-  };
-  auto s1 = spawn_sdf("box1", 0.0);
-  ASSERT_TRUE(s1.response.success) << s1.response.status_message << "\n" << node_->log();
-  ASSERT_TRUE(spawn("bot", kBot, pose_at(0, 0, 0.2)).response.success) << node_->log();
-  auto s2 = spawn_sdf("box2", 1.0);
-  ASSERT_TRUE(s2.response.success) << s2.response.status_message;
-  gazebo_msgs::GetWorldProperties w;
-  ASSERT_TRUE(call("/gazebo/get_world_properties", w));
-  EXPECT_THAT(w.response.model_names, ::testing::ElementsAre("ground_plane", "box1", "bot", "box2"));
-  gazebo_msgs::DeleteModel d;
-  d.request.model_name = "box1";
-  ASSERT_TRUE(call("/gazebo/delete_model", d));
-  ASSERT_TRUE(d.response.success) << d.response.status_message;
-  const double t = clock_now();
-  EXPECT_TRUE(wait_until([&] { return clock_now() > t + 0.2; }, 5.0)) << "the clock stopped";
-  ASSERT_TRUE(call("/gazebo/get_world_properties", w));
-  EXPECT_THAT(w.response.model_names, ::testing::ElementsAre("ground_plane", "bot", "box2"));
-  const auto g = model_state("box2");
-  ASSERT_TRUE(g.response.success) << g.response.status_message;
-  EXPECT_NEAR(g.response.pose.position.x, 1.0, 0.01);
-  EXPECT_NEAR(g.response.pose.position.z, 0.15, 0.01) << "box2 rests on the ground";
-  controller_manager_msgs::ListControllers list;
-  EXPECT_TRUE(call("/bot/controller_manager/list_controllers", list, 5.0));
-  EXPECT_FALSE(::ros::service::exists("/controller_manager/list_controllers", false))
-      << "a model without gazebo_ros_control's plugin has no controller manager";
-  const int seen = [&] { std::lock_guard<std::mutex> l(m); return state_messages; }();
-  ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return state_messages > seen; }, 5.0)) << node_->log();
-  std::lock_guard<std::mutex> l(m);
-  EXPECT_THAT(states.name, ::testing::ElementsAre("ground_plane", "bot", "box2"));
 }
 
 // spawn_model -J (gazebo_ros_pkgs#93): the joints are where -J puts them before the world runs,

@@ -27,8 +27,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/Imu.h>
 
-#include "param_snapshot.hpp"
-#include "ros_fixture.hpp"
+#include "gazebo_world_fixture.hpp"
 
 namespace mechsim::ros::test {
 namespace {
@@ -273,15 +272,9 @@ TEST_F(SeveralRobotsNode, TwoCc8sDriveUnderTheirOwnNamespacesAndTheFirstIsDelete
   EXPECT_LT(b3.x, -0.3) << "the second rover turns left (from facing +y towards -x)";
   // /gazebo/model_states holds both.
   {
-    std::mutex m;
-    gazebo_msgs::ModelStates states;
-    ::ros::Subscriber sub = nh_.subscribe<gazebo_msgs::ModelStates>(
-        "/gazebo/model_states", 1, [&](const gazebo_msgs::ModelStates::ConstPtr& msg) {
-          std::lock_guard<std::mutex> l(m);
-          states = *msg;
-        });
-    ASSERT_TRUE(wait_until([&] { std::lock_guard<std::mutex> l(m); return !states.name.empty(); }, 5.0));
-    std::lock_guard<std::mutex> l(m);
+    ModelStatesWatch watch(nh_);
+    ASSERT_TRUE(watch.wait_for_more_than(0, 5.0));
+    const gazebo_msgs::ModelStates states = watch.latest();
     ASSERT_THAT(states.name, ::testing::ElementsAre("ground_plane", "cc8_a", "cc8_b"));
     EXPECT_NEAR(states.pose[2].position.x, b3.x, 0.2);
   }
