@@ -159,10 +159,7 @@ SimBridge::SimBridge(SimBridge& host, BridgeOptions options) : impl_(std::make_u
   if (!taking->error.empty()) throw std::runtime_error(taking->error);
   m.simulation = taking->robot;
   m.link_names = std::move(taking->links);
-  impl_->in_loop([&m](sim::Simulation&) {
-    m.refresh();
-    return BridgeResult{};
-  });
+  // Its physics indices are looked up at their first use, in the loop (Impl::refresh).
 }
 
 SimBridge::~SimBridge() {
