@@ -41,11 +41,15 @@ class MasterWatch {
     }
     if (unreachable_) ROS_INFO_STREAM(name_ << ": the ROS master at " << uri_ << " answers again");
     unreachable_ = false;
-    XmlRpc::XmlRpcValue args, result, payload;
-    args[0] = name_;
-    args[1] = name_;
     if (pid_ < 0) pid_ = pid;  // the master was not up at start
-    const bool known = ::ros::master::execute("lookupNode", args, result, payload, false);
+    bool known = knows_this_node();
+    // The same master (its pid) not knowing the node: a lookup that failed on a loaded machine
+    // (a node of the CI's tests once exited so), as a restarted master has another pid. Asked
+    // again before it is believed.
+    for (int retry = 0; retry < 3 && !known && pid == pid_ && ::ros::ok(); ++retry) {
+      ::ros::WallDuration(0.2).sleep();
+      known = knows_this_node();
+    }
     if (known && pid == pid_) return State::Registered;
     // A node shutting down unregisters itself: the master forgets it without having restarted.
     if (::ros::isShuttingDown() || !::ros::ok()) return State::Registered;
@@ -63,6 +67,13 @@ class MasterWatch {
   }
 
  private:
+  bool knows_this_node() const {
+    XmlRpc::XmlRpcValue args, result, payload;
+    args[0] = name_;
+    args[1] = name_;
+    return ::ros::master::execute("lookupNode", args, result, payload, false);
+  }
+
   static int master_pid() {
     XmlRpc::XmlRpcValue args, result, payload;
     args[0] = ::ros::this_node::getName();
