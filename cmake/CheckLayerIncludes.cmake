@@ -24,9 +24,11 @@ set(deps_batch sim)
 set(deps_live sim sensors)
 # web/: `mechsim view`, the replay page's server and export (the replay half of live/'s row).
 set(deps_web sim)
-set(deps_ros sim sensors controllers live)
-set(deps_apps description mechanism control controllers physics sensors sim batch live web ros)
-set(layers description mechanism control controllers physics sensors sim batch live web ros apps)
+# bridge/: the Gazebo world and controller-manager API both ROS bindings map their messages onto.
+set(deps_bridge sim sensors controllers live)
+set(deps_ros bridge sim sensors controllers live)
+set(deps_apps description mechanism control controllers physics sensors sim batch live web bridge ros)
+set(layers description mechanism control controllers physics sensors sim batch live web bridge ros apps)
 
 # What each layer may include: itself and everything its dependencies reach.
 foreach(layer IN LISTS layers)

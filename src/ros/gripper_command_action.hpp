@@ -12,7 +12,7 @@
 
 #include <control_msgs/GripperCommandAction.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 #include "ros/polled_action_server.hpp"
 
 namespace mechsim::ros {

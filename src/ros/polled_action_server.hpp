@@ -32,7 +32,7 @@
 
 #include <actionlib/server/action_server.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 
 namespace mechsim::ros {
 

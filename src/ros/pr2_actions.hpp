@@ -25,7 +25,7 @@
 #include <pr2_controllers_msgs/JointTrajectoryAction.h>
 #include <pr2_controllers_msgs/Pr2GripperCommandAction.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 #include "ros/polled_action_server.hpp"
 #include "ros/trajectory_action.hpp"
 

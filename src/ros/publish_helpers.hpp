@@ -5,7 +5,7 @@
 
 #include <sensor_msgs/JointState.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 
 namespace mechsim::ros {
 

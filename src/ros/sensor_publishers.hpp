@@ -31,7 +31,7 @@
 
 #include <ros/ros.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 
 namespace mechsim::ros {
 

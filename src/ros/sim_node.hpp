@@ -26,7 +26,7 @@
 
 #include <ros/ros.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 #include "ros/model_plugin_topics.hpp"
 #include "ros/sensor_publishers.hpp"
 #include "ros/tf_publisher.hpp"

@@ -13,7 +13,7 @@
 #include <control_msgs/JointTrajectoryControllerState.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "ros/bridge_names.hpp"
 #include "ros/polled_action_server.hpp"
 
 namespace mechsim::ros {

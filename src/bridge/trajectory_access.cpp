@@ -1,12 +1,12 @@
 // Trajectory ports through the opaque PortRef (C++20 side of the bridge).
 #include "controllers/trajectory/trajectory_goal.hpp"
 #include "controllers/trajectory/trajectory_query.hpp"
-#include "ros/bridge/port_cast.hpp"
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/port_cast.hpp"
+#include "bridge/sim_bridge.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
-using bridge_detail::port_as;
+using detail::port_as;
 
 bool write_trajectory(const PortRef& port, const control::JointTrajectory& trajectory, std::string* error) {
   auto* p = port_as<control::TrajectoryCommandPort>(port);
@@ -19,7 +19,7 @@ bool write_trajectory(const PortRef& port, const control::JointTrajectory& traje
 
 bool read_trajectory_state(const PortRef& port, control::JointTrajectoryControllerState& out,
                            std::uint64_t* sequence) {
-  const auto* p = bridge_detail::fresh_state<control::JointTrajectoryControllerState>(port, sequence);
+  const auto* p = detail::fresh_state<control::JointTrajectoryControllerState>(port, sequence);
   if (!p) return false;
   out = p->read();
   return true;
@@ -56,11 +56,11 @@ bool query_trajectory(const PortRef& port, double time, TrajectorySample& out, s
 }
 
 bool cancel_goal(const PortRef& port, std::uint64_t id) {
-  return bridge_detail::cancel_goal_on<control::TrajectoryGoalPort>(port, id);
+  return detail::cancel_goal_on<control::TrajectoryGoalPort>(port, id);
 }
 
 std::optional<control::GoalStatus> goal_status(const PortRef& port, std::uint64_t id) {
-  return bridge_detail::goal_status_on<control::TrajectoryGoalPort>(port, id);
+  return detail::goal_status_on<control::TrajectoryGoalPort>(port, id);
 }
 
 std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::uint64_t id) {
@@ -71,9 +71,9 @@ std::optional<control::TrajectoryResult> goal_result(const PortRef& port, std::u
 
 bool read_goal_feedback(const PortRef& port, control::FollowJointTrajectoryFeedback& out, std::uint64_t* sequence) {
   const auto* p = port_as<control::TrajectoryGoalPort>(port);
-  if (!p || !bridge_detail::take_newer(p->feedback_sequence(), sequence)) return false;
+  if (!p || !detail::take_newer(p->feedback_sequence(), sequence)) return false;
   out = p->feedback();
   return true;
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

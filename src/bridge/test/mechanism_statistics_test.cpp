@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "description/urdf/urdf_parser.hpp"
-#include "ros/bridge/sim_bridge.hpp"
-#include "ros/test/pendulum_robot.hpp"
+#include "bridge/sim_bridge.hpp"
+#include "bridge/test/pendulum_robot.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 namespace {
 
 const std::string kPendulum = test::pendulum_urdf(10);
@@ -100,4 +100,4 @@ TEST(MechanismStatistics, ReadsNeedEnabling) {
 }
 
 }  // namespace
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "live/live_stream.hpp"
-#include "ros/bridge/mechanism_statistics.hpp"
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/mechanism_statistics.hpp"
+#include "bridge/sim_bridge.hpp"
 #include "sim/simulation.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 struct SimBridge::Impl {
   explicit Impl(BridgeOptions o) : options(std::move(o)) {}
@@ -37,4 +37,4 @@ struct SimBridge::Impl {
   std::unique_ptr<live::LiveStream> live;
 };
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -8,9 +8,9 @@
 
 #include "control/ports.hpp"
 #include "controllers/trajectory/trajectory_msgs.hpp"  // GoalStatus
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/sim_bridge.hpp"
 
-namespace mechsim::ros::bridge_detail {
+namespace mechsim::bridge::detail {
 
 // The port as P, or null; then *error (when given) says the port has another type.
 template <class P>
@@ -51,4 +51,4 @@ std::optional<control::GoalStatus> goal_status_on(const PortRef& ref, std::uint6
   return p->status(id);
 }
 
-}  // namespace mechsim::ros::bridge_detail
+}  // namespace mechsim::bridge::detail

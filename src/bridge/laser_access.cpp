@@ -1,12 +1,12 @@
 // The PR2 laser tilt controller's profile port through the opaque PortRef (C++20 side of the
 // bridge).
 #include "controllers/pr2/laser_scanner_traj_controller.hpp"
-#include "ros/bridge/port_cast.hpp"
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/port_cast.hpp"
+#include "bridge/sim_bridge.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
-using bridge_detail::port_as;
+using detail::port_as;
 
 bool write_periodic_command(const PortRef& port, const std::string& profile, double period, double amplitude,
                             double offset, std::string* error) {
@@ -31,4 +31,4 @@ bool write_laser_traj_command(const PortRef& port, const std::string& profile, c
   return p->write(c, error);
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

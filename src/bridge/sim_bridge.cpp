@@ -1,5 +1,5 @@
 // SimBridge over sim::Simulation (C++20; see sim_bridge.hpp for why it exists).
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/sim_bridge.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,13 +10,13 @@
 
 #include "controllers/drive/rover_drive_params.hpp"
 #include "controllers/plugins/model_plugins.hpp"
-#include "ros/bridge/bridge_impl.hpp"
-#include "ros/bridge/mechanism_statistics.hpp"
+#include "bridge/bridge_impl.hpp"
+#include "bridge/mechanism_statistics.hpp"
 #include "sensors/sensor_types.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 namespace {
 
@@ -431,4 +431,4 @@ std::vector<std::string> SimBridge::skipped_sensors() const {
   return out;
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -1,14 +1,15 @@
 #pragma once
-// SimBridge: the C++17-clean face of the simulation for the ROS node. ROS headers do not compile
-// as C++20 and the sim/control headers do not compile as C++17 (std::span, defaulted
-// comparisons), so the node (C++17) reaches Simulation, ControllerManager and the controllers'
-// ports only through this header; its implementation (bridge/*.cpp) is C++20 and lives in the
-// small library mechsim_ros_bridge.
+// SimBridge: one robot of a simulated world as the ROS bindings see it (ros/ for ROS 1, ros2/ for
+// ROS 2): its controller manager, the controllers' ports, its model plugins and sensors, and
+// Gazebo's model API over it. ROS 1 headers do not compile as C++20 and the sim/control headers
+// do not compile as C++17 (std::span, defaulted comparisons), so this header is C++17-clean: the
+// bindings reach Simulation, ControllerManager and the ports only through it; its implementation
+// (bridge/*.cpp, library mechsim_bridge) is C++20.
 //
-// Threads: run_for() and the tick observers belong to the node's loop thread. pause(),
-// unpause(), request_reset() and the controller-manager calls may come from any thread (the
-// simulation and the manager serialise them). A PortRef is valid while its controller is loaded:
-// the node drops every PortRef of a controller before unloading it.
+// Threads: run_for() and the tick observers belong to the loop thread. pause(), unpause(),
+// request_reset() and the controller-manager calls may come from any thread (the simulation and
+// the manager serialise them). A PortRef is valid while its controller is loaded: a binding drops
+// every PortRef of a controller before unloading it.
 
 #include <cstddef>
 #include <cstdint>
@@ -29,7 +30,7 @@ namespace mechsim::sim {
 class Simulation;
 }
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 struct BridgeOptions {
   description::RobotModel robot;       // parsed robot_description
@@ -459,4 +460,4 @@ bool write_laser_traj_command(const PortRef& port, const std::string& profile, c
                               const std::vector<double>& times_from_start, double max_velocity,
                               double max_acceleration, std::string* error);
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -10,10 +10,10 @@
 #include <thread>
 
 #include "description/urdf/urdf_parser.hpp"
-#include "ros/bridge/sim_bridge.hpp"
-#include "ros/test/pendulum_robot.hpp"
+#include "bridge/sim_bridge.hpp"
+#include "bridge/test/pendulum_robot.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 namespace {
 
 const std::string kPendulum = test::pendulum_urdf(1);
@@ -80,4 +80,4 @@ TEST(SwitchWait, PausingWhileASwitchWaitsEndsTheWait) {
 }
 
 }  // namespace
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

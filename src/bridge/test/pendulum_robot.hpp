@@ -5,8 +5,8 @@
 
 #include "../../sim/test/pendulum_urdf.hpp"
 
-namespace mechsim::ros::test {
+namespace mechsim::bridge::test {
 
 inline std::string pendulum_urdf(int reduction) { return mechsim::test::pendulum_urdf(reduction, true); }
 
-}  // namespace mechsim::ros::test
+}  // namespace mechsim::bridge::test

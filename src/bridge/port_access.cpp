@@ -4,13 +4,13 @@
 #include "control/ports.hpp"
 #include "controllers/drive/rover_drive_ports.hpp"
 #include "controllers/sensor/sensor_state_controllers.hpp"
-#include "ros/bridge/port_cast.hpp"
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/port_cast.hpp"
+#include "bridge/sim_bridge.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
-using bridge_detail::fresh_state;
-using bridge_detail::port_as;
+using detail::fresh_state;
+using detail::port_as;
 
 bool write_scalar(const PortRef& port, double value, std::string* error) {
   auto* p = port_as<control::ScalarCommandPort>(port, error);
@@ -135,4 +135,4 @@ bool read_wrench_state(const PortRef& port, double& stamp, std::string& frame_id
   return true;
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -1,11 +1,11 @@
 // The PR2 gripper's ports through the opaque PortRef (C++20 side of the bridge).
 #include "controllers/gripper/pr2_gripper_ports.hpp"
-#include "ros/bridge/port_cast.hpp"
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/port_cast.hpp"
+#include "bridge/sim_bridge.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
-using bridge_detail::port_as;
+using detail::port_as;
 
 namespace {
 
@@ -33,11 +33,11 @@ bool submit_gripper_goal(const PortRef& port, double position, double max_effort
 }
 
 bool cancel_gripper_goal(const PortRef& port, std::uint64_t id) {
-  return bridge_detail::cancel_goal_on<control::GripperGoalPort>(port, id);
+  return detail::cancel_goal_on<control::GripperGoalPort>(port, id);
 }
 
 std::optional<control::GoalStatus> gripper_goal_status(const PortRef& port, std::uint64_t id) {
-  return bridge_detail::goal_status_on<control::GripperGoalPort>(port, id);
+  return detail::goal_status_on<control::GripperGoalPort>(port, id);
 }
 
 std::optional<GripperStateData> gripper_goal_result(const PortRef& port, std::uint64_t id) {
@@ -51,11 +51,11 @@ std::optional<GripperStateData> gripper_goal_result(const PortRef& port, std::ui
 bool read_gripper_feedback(const PortRef& port, GripperStateData& out, std::uint64_t* goal_id,
                            std::uint64_t* sequence) {
   const auto* p = port_as<control::GripperGoalPort>(port);
-  if (!p || !bridge_detail::take_newer(p->feedback_sequence(), sequence)) return false;
+  if (!p || !detail::take_newer(p->feedback_sequence(), sequence)) return false;
   const control::GripperFeedback f = p->feedback();
   out = to_data(f.state);
   if (goal_id) *goal_id = f.goal_id;
   return true;
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

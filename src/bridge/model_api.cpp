@@ -4,9 +4,9 @@
 #include <mutex>
 
 #include "physics/transform.hpp"
-#include "ros/bridge/bridge_impl.hpp"
+#include "bridge/bridge_impl.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 namespace {
 
@@ -377,4 +377,4 @@ void SimBridge::request_steps(std::uint64_t count) { impl_->simulation->world_ho
 std::uint64_t SimBridge::pending_steps() const { return impl_->simulation->world_host().pending_steps(); }
 void SimBridge::cancel_steps() { impl_->simulation->world_host().cancel_steps(); }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

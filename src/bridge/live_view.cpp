@@ -2,9 +2,9 @@
 #include <string>
 
 #include "live/live_stream.hpp"
-#include "ros/bridge/bridge_impl.hpp"
+#include "bridge/bridge_impl.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 std::string SimBridge::start_live_view(const std::string& address, int port, const std::string& urdf, double rate) {
   if (port < 0 || port > 65535) throw std::runtime_error("~foxglove_port: " + std::to_string(port) + " is not a TCP port (0..65535)");
@@ -27,4 +27,4 @@ std::string SimBridge::live_view_summary() const {
          std::to_string(s.server.peak_queued_bytes) + " bytes";
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -10,13 +10,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "ros/bridge/sim_bridge.hpp"
+#include "bridge/sim_bridge.hpp"
 
 namespace mechsim::sim {
 class Simulation;
 }
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 class MechanismStatistics {
  public:
@@ -53,4 +53,4 @@ class MechanismStatistics {
   std::uint64_t generation_ = 0;  // the physics' generation the physics indices are of
 };
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge

@@ -1,12 +1,12 @@
 // MechanismStatistics (see mechanism_statistics.hpp).
-#include "ros/bridge/mechanism_statistics.hpp"
+#include "bridge/mechanism_statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "sim/simulation.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 namespace {
 
@@ -168,4 +168,4 @@ void MechanismStatistics::take(const sim::Simulation& simulation, MechanismStati
   }
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge
