@@ -40,6 +40,9 @@ if ((with_ros)); then
              ros-trajectory-msgs ros-actionlib-msgs ros-tf2-msgs ros-rosgraph-msgs
              python3-genmsg python3-gencpp python3-empy
              libtopic-tools-dev
+             # gazebo_ros' physics dynamic_reconfigure interface (/gazebo/set_parameters, ...): the
+             # server library and its config generator; dynparam for the tests.
+             libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
              # Python message modules (<build>/ros_python) for rostopic/rosservice: genpy, and
              # the Debian types the generated ones import.
              python3-genpy python3-std-msgs python3-geometry-msgs python3-trajectory-msgs

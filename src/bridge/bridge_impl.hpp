@@ -2,6 +2,8 @@
 // SimBridge's state (C++20; bridge/*.cpp only): shared by sim_bridge.cpp and model_api.cpp.
 
 #include <functional>
+#include <map>
+#include <mutex>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +22,7 @@ struct SimBridge::Impl {
   // Loop thread: the physics indices below looked up again when the world's physics was rebuilt
   // (a robot spawned or deleted) since they were.
   void refresh();
+  void reapply_overrides();  // loop thread, from refresh()
   BridgeOptions options;
   control::Params params;
   std::unique_ptr<sim::Simulation> owned;  // the first robot's simulation (it ticks the world)
@@ -33,6 +36,11 @@ struct SimBridge::Impl {
   std::vector<std::size_t> link_index;  // their physics links
   // Per World::sdf_model_frames: the physics body carrying the model, -1 for a static one.
   std::vector<int> world_model_body;
+  // set_joint_properties / set_link_properties, by joint and link name: applied again by refresh()
+  // when the physics is built again.
+  std::mutex overrides_mutex;
+  std::map<std::string, JointPropertyChange> joint_overrides;
+  std::map<std::string, LinkPropertiesData> link_overrides;
   // After `simulation`: its observer refers to the stream, which goes first (after the ticks).
   std::unique_ptr<live::LiveStream> live;
 };

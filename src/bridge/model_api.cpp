@@ -74,6 +74,11 @@ BridgeResult read_in_loop(const InLoop& in_loop, T& out, std::function<BridgeRes
 }
 
 BridgeResult SimBridge::link_state(const std::string& link, EntityState& out) const {
+  if (link.empty() && fixed_in_world()) {
+    out = EntityState{};
+    out.pose = spawn_pose();
+    return {};
+  }
   return read_in_loop<EntityState>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out, [link](sim::Simulation& s, EntityState& o) -> BridgeResult {
     const auto l = link_of(s, link);
     if (!l) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
@@ -86,6 +91,31 @@ BridgeResult SimBridge::link_state(const std::string& link, EntityState& out) co
 }
 
 const std::vector<std::string>& SimBridge::link_names() const { return impl_->link_names; }
+
+bool SimBridge::fixed_in_world() const {
+  return impl_->host != nullptr && impl_->options.robot.root_link == "world";
+}
+
+description::Pose SimBridge::spawn_pose() const {
+  const BridgeOptions& o = impl_->options;
+  return {{o.x, o.y, o.z}, physics::quat_from_rpy(o.roll, o.pitch, o.yaw)};
+}
+
+void SimBridge::model_state_now(EntityState& out) const {
+  out = EntityState{};
+  if (fixed_in_world()) {
+    out.pose = spawn_pose();
+    return;
+  }
+  impl_->refresh();
+  const physics::Physics& p = impl_->simulation->physics();
+  const auto l = link_of(*impl_->simulation, "");
+  if (!l) return;
+  out.pose = p.link_pose(*l);
+  const physics::Twist v = p.link_twist(*l);
+  out.linear = v.linear;
+  out.angular = v.angular;
+}
 
 void SimBridge::link_states_now(std::vector<EntityState>& out) const {
   impl_->refresh();
@@ -266,6 +296,7 @@ BridgeResult SimBridge::joint_properties(const std::string& joint, JointProperti
     if (const auto p = joint_of(s, joint)) {
       o.position = s.physics().position(*p);
       o.rate = s.physics().velocity(*p);
+      o.damping = s.physics().joint_damping(*p);
     }
     return {};
   });
@@ -273,7 +304,7 @@ BridgeResult SimBridge::joint_properties(const std::string& joint, JointProperti
 
 BridgeResult SimBridge::link_properties(const std::string& link, LinkPropertiesData& out) const {
   // In the loop thread: a spawn or delete replaces the physics model read here.
-  return read_in_loop<LinkPropertiesData>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out,
+  const BridgeResult r = read_in_loop<LinkPropertiesData>([this](const LoopCommand& c) { return impl_->in_loop(c); }, out,
                                           [link](sim::Simulation& s, LinkPropertiesData& o) -> BridgeResult {
     const description::Link* l = s.robot().link(link);
     if (l == nullptr) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
@@ -288,6 +319,60 @@ BridgeResult SimBridge::link_properties(const std::string& link, LinkPropertiesD
       if (off == s.physics_name(link)) o.gravity_mode = false;
     return {};
   });
+  if (r.ok) {
+    std::lock_guard<std::mutex> lock(impl_->overrides_mutex);
+    if (const auto it = impl_->link_overrides.find(link); it != impl_->link_overrides.end()) out = it->second;
+  }
+  return r;
+}
+
+BridgeResult SimBridge::set_joint_properties(const std::string& joint, const JointPropertyChange& change) {
+  if ((change.damping && !(std::isfinite(*change.damping) && *change.damping >= 0.0)))
+    return refuse("damping must be finite and >= 0");
+  if ((change.lower && !std::isfinite(*change.lower)) || (change.upper && !std::isfinite(*change.upper)))
+    return refuse("hiStop and loStop must be finite");
+  const BridgeResult r = impl_->in_loop([joint, change](sim::Simulation& s) -> BridgeResult {
+    const auto j = joint_of(s, joint);
+    if (!j) return refuse("no joint '" + joint + "' in model '" + s.robot().name + "'");
+    physics::Physics& p = s.physics();
+    auto [lower, upper] = p.joint_limits(*j);
+    if (change.lower) lower = *change.lower;
+    if (change.upper) upper = *change.upper;
+    if ((change.lower || change.upper) && lower > upper)
+      return refuse("loStop " + std::to_string(lower) + " is above hiStop " + std::to_string(upper));
+    if (change.damping) p.set_joint_damping(*j, *change.damping);
+    if (change.lower || change.upper) p.set_joint_limits(*j, lower, upper);
+    return {};
+  });
+  if (r.ok) {
+    // Kept for the physics built again when a model comes or goes (Impl::refresh applies them).
+    std::lock_guard<std::mutex> lock(impl_->overrides_mutex);
+    JointPropertyChange& kept = impl_->joint_overrides[joint];
+    if (change.damping) kept.damping = change.damping;
+    if (change.lower) kept.lower = change.lower;
+    if (change.upper) kept.upper = change.upper;
+  }
+  return r;
+}
+
+BridgeResult SimBridge::set_link_properties(const std::string& link, const LinkPropertiesData& p) {
+  LinkPropertiesData now;
+  if (const BridgeResult r = link_properties(link, now); !r.ok) return r;
+  if (p.gravity_mode != now.gravity_mode) {
+    return refuse(std::string("gravity_mode: mechsim sets a link's gravity when the model is built (<gravity> / ") +
+                  "<turnGravityOff> in its description), not while it runs");
+  }
+  const BridgeResult r = impl_->in_loop([link, p](sim::Simulation& s) -> BridgeResult {
+    const auto l = link_of(s, link);
+    if (!l || link.empty()) return refuse("no link '" + link + "' in model '" + s.robot().name + "'");
+    const std::string why = s.physics().set_link_inertial(*l, p.mass, p.com, {p.ixx, p.ixy, p.ixz, p.iyy, p.iyz, p.izz});
+    return why.empty() ? BridgeResult{} : refuse(why);
+  });
+  if (r.ok) {
+    std::lock_guard<std::mutex> lock(impl_->overrides_mutex);
+    impl_->link_overrides[link] = p;
+  }
+  return r;
 }
 
 BridgeResult SimBridge::apply_link_wrench(const std::string& link, const description::Vec3& force_W,

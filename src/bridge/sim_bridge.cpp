@@ -1,5 +1,6 @@
 // SimBridge over sim::Simulation (C++20; see sim_bridge.hpp for why it exists).
 #include "bridge/sim_bridge.hpp"
+#include "description/sdf/sdf_model.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -79,8 +80,11 @@ sim::SimulationOptions simulation_options(const BridgeOptions& o) {
 // The description links the physics has (in the description's order).
 std::vector<std::string> physics_links(const sim::Simulation& s) {
   std::vector<std::string> out;
-  for (const description::Link& link : s.robot().links)
+  for (const description::Link& link : s.robot().links) {
+    // A robot fixed to the world hangs from a `world` link: Gazebo's world, not a link of the model.
+    if (link.name == "world" && s.robot().root_link == "world" && &s.world_host() != &s) continue;
     if (s.physics().model().link_index(s.physics_name(link.name))) out.push_back(link.name);
+  }
   return out;
 }
 
@@ -102,12 +106,33 @@ void SimBridge::Impl::refresh() {
   world_model_body.clear();
   for (const sim::World::ModelFrame& f : simulation->world().sdf_model_frames)
     world_model_body.push_back(f.body.empty() ? -1 : model.body_index(f.body));
+  reapply_overrides();
+}
+
+void SimBridge::Impl::reapply_overrides() {
+  // A rebuilt physics starts from the description: what the model API changed goes in again.
+  std::lock_guard<std::mutex> lock(overrides_mutex);
+  physics::Physics& p = simulation->physics();
+  const physics::PhysicsModel& model = p.model();
+  for (const auto& [joint, change] : joint_overrides) {
+    const auto j = model.joint_index(simulation->physics_name(joint));
+    if (!j) continue;
+    if (change.damping) p.set_joint_damping(*j, *change.damping);
+    if (change.lower || change.upper) {
+      auto [lower, upper] = p.joint_limits(*j);
+      p.set_joint_limits(*j, change.lower.value_or(lower), change.upper.value_or(upper));
+    }
+  }
+  for (const auto& [link, l] : link_overrides)
+    if (const auto i = model.link_index(simulation->physics_name(link)))
+      p.set_link_inertial(*i, l.mass, l.com, {l.ixx, l.ixy, l.ixz, l.iyy, l.iyz, l.izz});
 }
 
 SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& m = *impl_;
   sim::WorldConfig world_config;
   world_config.name = m.options.world;
+  world_config.sdf_active_models_apart = m.options.world_models_apart;
   const sim::World world = sim::make_world(world_config);
   m.params = m.options.controller_params;
   m.owned = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, simulation_options(m.options));
@@ -195,9 +220,10 @@ BridgeResult SimBridge::remove_from_world() {
 
 
 
-WorldSummary describe_world(const std::string& name) {
+WorldSummary describe_world(const std::string& name, bool models_apart) {
   sim::WorldConfig config;
   config.name = name;
+  config.sdf_active_models_apart = models_apart;
   const sim::World world = sim::make_world(config);
   WorldSummary out;
   out.has_ground = world.spec.ground_plane || world.spec.terrain.has_value();
@@ -205,8 +231,23 @@ WorldSummary describe_world(const std::string& name) {
   out.sdf_models = world.sdf_models;
   for (const sim::World::ModelFrame& f : world.sdf_model_frames) out.sdf_model_poses.push_back(f.pose);
   out.not_simulated = world.not_simulated;
+  out.warnings = world.warnings;
   out.max_step_size = world.max_step_size.value_or(0.0);
   out.real_time_factor = world.real_time_factor.value_or(0.0);
+  for (const sim::SdfRobot& r : world.sdf_robots) out.robots.push_back({r.name, r.robot, r.X_WR, r.is_static});
+  for (const description::SdfLight& l : world.lights) {
+    WorldSummary::Light light;
+    light.name = l.name;
+    light.type = l.type;
+    light.cast_shadows = l.cast_shadows;
+    for (int i = 0; i < 4; ++i) light.diffuse[i] = l.diffuse[static_cast<std::size_t>(i)], light.specular[i] = l.specular[static_cast<std::size_t>(i)];
+    light.attenuation_constant = l.attenuation_constant;
+    light.attenuation_linear = l.attenuation_linear;
+    light.attenuation_quadratic = l.attenuation_quadratic;
+    light.direction = l.direction;
+    light.pose = l.pose;
+    out.lights.push_back(std::move(light));
+  }
   return out;
 }
 

@@ -46,6 +46,10 @@ struct BridgeOptions {
   double period = 0.001;          // s
   double start_time = 0.0;        // s: the world's time when the robot is spawned into it
   std::map<std::string, double> initial_joints;  // rad or m by joint (spawn_model -J)
+  // An SDF world's models with sensors or model plugins are left out of the world's objects: the
+  // caller brings them in as robots of their own (describe_world's WorldSummary::robots; as
+  // bridge::World does).
+  bool world_models_apart = false;
 };
 
 // A link's (or a model's root link's) state in the world frame: pose X_WL, and the twist of the
@@ -63,6 +67,12 @@ struct JointPropertiesData {
   double position = 0.0, rate = 0.0;  // rad or m, rad/s or m/s
 };
 
+// gazebo_msgs/SetJointProperties' content mechsim honours (ODEJointProperties' first entries):
+// damping (N m s/rad or N s/m), hiStop and loStop (rad or m). Unset: unchanged.
+struct JointPropertyChange {
+  std::optional<double> damping, lower, upper;
+};
+
 // gazebo_msgs/GetLinkProperties' content: the URDF inertial (zero mass when it has none).
 struct LinkPropertiesData {
   description::Pose com;  // X_L<centre of mass frame>
@@ -71,18 +81,39 @@ struct LinkPropertiesData {
   double ixx = 0.0, ixy = 0.0, ixz = 0.0, iyy = 0.0, iyz = 0.0, izz = 0.0;  // kg m^2, at the com frame
 };
 
-// What a world (BridgeOptions::world) holds, for the Gazebo world node (gazebo_world.hpp).
+// An SDF world's model that is a robot of its own (BridgeOptions::world_models_apart): its sensors
+// and model plugins run. A static one is welded to the world (its root link is `world`).
+struct WorldRobot {
+  std::string name;
+  description::RobotModel robot;
+  description::Pose X_WR;  // the root link frame in the world: its spawn pose
+  bool is_static = false;
+};
+
+// What a world (BridgeOptions::world) holds, for the Gazebo world (world.hpp).
 struct WorldSummary {
   bool has_ground = true;
   description::Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
   std::vector<std::string> sdf_models;         // an SDF world's models that are simulated
   std::vector<description::Pose> sdf_model_poses;  // each one's pose in the SDF (X_WM)
   std::vector<std::string> not_simulated;      // one line each
+  std::vector<std::string> warnings;           // what Gazebo tolerates, taken as it does; one line each
   double max_step_size = 0.0;                  // s; 0: unset
   double real_time_factor = 0.0;               // 0: unset
+  std::vector<WorldRobot> robots;              // with models_apart: the models that are robots
+  struct Light {
+    std::string name, type;
+    bool cast_shadows = true;
+    double diffuse[4] = {1, 1, 1, 1}, specular[4] = {0.1, 0.1, 0.1, 1};
+    double attenuation_constant = 1.0, attenuation_linear = 0.0, attenuation_quadratic = 0.0;
+    description::Vec3 direction{0.0, 0.0, -1.0};
+    description::Pose pose;
+  };
+  std::vector<Light> lights;  // an SDF world's <light>s
 };
-// Builds the world once; throws std::runtime_error naming the world or file.
-WorldSummary describe_world(const std::string& world);
+// Builds the world once; throws std::runtime_error naming the world or file. models_apart: as
+// BridgeOptions::world_models_apart.
+WorldSummary describe_world(const std::string& world, bool models_apart = false);
 
 // What a controller port is, as far as ROS binding goes.
 enum class PortType : std::uint8_t {
@@ -318,6 +349,12 @@ class SimBridge {
   // the physics has, in link_names() order, world frame.
   const std::vector<std::string>& link_names() const;
   void link_states_now(std::vector<EntityState>& out) const;
+  // The model's state (its root link's; a model fixed to the world: where its spawn put it, as
+  // Gazebo reports a static model), world frame. Loop thread, like link_states_now.
+  void model_state_now(EntityState& out) const;
+  // Another robot welded to the world (its root link is `world`): its model frame is its spawn pose.
+  bool fixed_in_world() const;
+  description::Pose spawn_pose() const;  // X_W<root> as spawned
   // The world's SDF models now (WorldSummary::sdf_models order): a moving one where the physics
   // has it, a static one where the SDF put it. Loop thread only (an observer), like
   // link_states_now.
@@ -342,6 +379,11 @@ class SimBridge {
   BridgeResult set_joint_positions(const std::vector<std::string>& joints, const std::vector<double>& positions);
   BridgeResult joint_properties(const std::string& joint, JointPropertiesData& out) const;
   BridgeResult link_properties(const std::string& link, LinkPropertiesData& out) const;
+  // Gazebo's set_joint_properties / set_link_properties: kept for the life of the model (over
+  // spawns and deletes of others, which build the physics again). A link's mass, centre of mass
+  // and inertia; gravity_mode cannot change while the model runs (refused when it would).
+  BridgeResult set_joint_properties(const std::string& joint, const JointPropertyChange& change);
+  BridgeResult set_link_properties(const std::string& link, const LinkPropertiesData& properties);
   // Forces from outside, from `start` (s, sim time; past: now) for `duration` s (< 0: no end; 0:
   // nothing; shorter than a tick: one tick). Wrench in the world frame: force (N) acting at the
   // link's centre of mass moved by offset_W (m), torque (N m).

@@ -79,6 +79,28 @@ class Planner {
     return it == robot_.gazebo_links.end() ? no_gazebo_ : it->second;
   }
 
+  // Why a shape has no volume MuJoCo can hold ("" when it has one): a box, cylinder or sphere
+  // with a zero (or negative) size, or a mesh scaled to nothing. MuJoCo refuses such geoms.
+  static std::string degenerate(const description::Geometry& g) {
+    switch (g.type) {
+      case description::GeometryType::Box:
+        if (!(g.size.x > 0.0 && g.size.y > 0.0 && g.size.z > 0.0)) return "a box of size zero";
+        break;
+      case description::GeometryType::Cylinder:
+        if (!(g.radius > 0.0 && g.length > 0.0)) return "a cylinder of radius or length zero";
+        break;
+      case description::GeometryType::Sphere:
+        if (!(g.radius > 0.0)) return "a sphere of radius zero";
+        break;
+      case description::GeometryType::Mesh:
+        if (!(g.mesh_scale.x != 0.0 && g.mesh_scale.y != 0.0 && g.mesh_scale.z != 0.0)) return "a mesh scaled by zero";
+        break;
+      default:
+        break;
+    }
+    return "";
+  }
+
   // The link frame is its parent joint's frame, so the joint axis is given in it.
   bool is_narrow_wheel(const Link& link, const description::Collision& c) const {
     return is_wheel(link, c) && c.geometry.length <= c.geometry.radius;
@@ -111,6 +133,11 @@ class Planner {
     if (g.gravity && !*g.gravity && !massless(link)) plan_.gravity_off_links.push_back(link.name);
     std::vector<PlannedGeom>& out = body < 0 ? plan_.world_geoms : plan_.bodies[body].geoms;
     for (std::size_t i = 0; i < link.collisions.size(); ++i) {
+      if (const std::string why = degenerate(link.collisions[i].geometry); !why.empty()) {
+        plan_.warnings.push_back("link '" + link.name + "': collision " + std::to_string(i) + " left out: " + why +
+                                 " (Gazebo loads it and it never touches anything)");
+        continue;
+      }
       PlannedGeom geom;
       geom.name = link.name + "/collision/" + std::to_string(i);
       geom.link = link.name;
@@ -124,6 +151,7 @@ class Planner {
     }
     if (!options_.visuals) return;
     for (std::size_t i = 0; i < link.visuals.size(); ++i) {
+      if (!degenerate(link.visuals[i].geometry).empty()) continue;  // nothing to draw
       PlannedGeom geom;
       geom.name = link.name + "/visual/" + std::to_string(i);
       geom.link = link.name;

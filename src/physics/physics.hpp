@@ -7,6 +7,7 @@
 // throw nothing. Deterministic: the same model, commands and call sequence give bit-identical
 // trajectories.
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -193,6 +194,17 @@ class Physics {
   // for the control loop (they allocate and recompute the mass matrix).
   double effective_inertia(std::size_t joint) const;
   double joint_damping(std::size_t joint) const;
+  // Gazebo's set_joint_properties and set_link_properties on a running model (this instance's
+  // copy only; physics_properties.cpp). Damping (N m s/rad or N s/m) throws std::invalid_argument
+  // when negative or not finite; limits (rad or m) when not finite or lower > upper (they bound the
+  // joint from the next step on). A link's inertial: mass (kg), its centre-of-mass frame X_LC and
+  // the tensor there (kg m^2: ixx ixy ixz iyy iyz izz); "" when set, else why not (a link sharing
+  // its physics body with another, a non-physical tensor).
+  void set_joint_damping(std::size_t joint, double damping);
+  void set_joint_limits(std::size_t joint, double lower, double upper);
+  std::pair<double, double> joint_limits(std::size_t joint) const;  // (-inf, inf) when unlimited
+  std::string set_link_inertial(std::size_t link, double mass, const description::Pose& X_LC,
+                                const std::array<double, 6>& inertia);
 
   // Bounds the joint's actuator effort in every mode to +-limit (N m or N), for the following
   // steps: a Gazebo model plugin's velocity motor torque (Gazebo's joint "fmax"). 0 gives back the

@@ -43,63 +43,39 @@ void GazeboWorld::advertise_topics() {
   });
 }
 
+// Fills a ModelStates or LinkStates message from the world's named states.
+template <class Message>
+void fill_states(const std::vector<bridge::NamedState>& states, Message& m) {
+  m.name.resize(states.size());
+  m.pose.resize(states.size());
+  m.twist.resize(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    m.name[i] = states[i].name;
+    fill(states[i].state, m.pose[i], m.twist[i]);
+  }
+}
+
 void GazeboWorld::publish_states(double time) {
   Topics& t = *topics_;
   const bool models = t.model_subscribers.load(std::memory_order_relaxed) > 0;
   const bool links = t.link_subscribers.load(std::memory_order_relaxed) > 0;
   if ((!models && !links) || time + 1e-9 < t.next_states) return;
   t.next_states = time + (options_.model_states_rate > 0.0 ? 1.0 / options_.model_states_rate : 0.0);
-  // The world's loop thread: robots_ changes only under robots_mutex_ (spawn, delete); it may be
-  // empty (a model on its way in or out).
-  std::lock_guard<std::mutex> lock(robots_mutex_);
-  t.robot_links.resize(robots_.size());
-  for (std::size_t r = 0; r < robots_.size(); ++r) robots_[r].node->bridge().link_states_now(t.robot_links[r]);
   if (models) {
-    gazebo_msgs::ModelStates& m = t.model_msg;
-    const std::size_t n = world_models_.size() + robots_.size();
-    m.name.resize(n);
-    m.pose.resize(n);
-    m.twist.resize(n);
-    // The world's own SimNode runs this loop: it stays until the loop has stopped.
-    world_->bridge().world_model_states_now(t.world_models);
-    for (std::size_t i = 0; i < world_models_.size(); ++i) {
-      m.name[i] = world_models_[i];
-      // An SDF world's models where the physics has them; the ground plane of mechsim's own
-      // worlds at the origin.
-      fill(i < t.world_models.size() ? t.world_models[i] : EntityState{}, m.pose[i], m.twist[i]);
-    }
-    for (std::size_t r = 0; r < robots_.size(); ++r) {
-      const std::size_t k = world_models_.size() + r;
-      const SimBridge& bridge = robots_[r].node->bridge();
-      const std::vector<std::string>& names = bridge.link_names();
-      m.name[k] = robots_[r].name;
-      for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == bridge.robot().root_link) fill(t.robot_links[r][i], m.pose[k], m.twist[k]);
-    }
-    t.model_states.publish(m);
+    world_.model_states_now(t.models);
+    fill_states(t.models, t.model_msg);
+    t.model_states.publish(t.model_msg);
   }
   if (links) {
-    gazebo_msgs::LinkStates& l = t.link_msg;
-    std::size_t count = 0;
-    for (const auto& links_of : t.robot_links) count += links_of.size();
-    l.name.resize(count);
-    l.pose.resize(count);
-    l.twist.resize(count);
-    std::size_t k = 0;
-    for (std::size_t r = 0; r < robots_.size(); ++r) {
-      const std::vector<std::string>& names = robots_[r].node->bridge().link_names();
-      for (std::size_t i = 0; i < names.size(); ++i, ++k) {
-        l.name[k] = robots_[r].name + "::" + names[i];
-        fill(t.robot_links[r][i], l.pose[k], l.twist[k]);
-      }
-    }
-    t.link_states.publish(l);
+    world_.link_states_now(t.links);
+    fill_states(t.links, t.link_msg);
+    t.link_states.publish(t.link_msg);
   }
 }
 
 void GazeboWorld::publish_performance() {
   Topics& t = *topics_;
-  const double sim = time();
+  const double sim = world_.time();
   const ::ros::WallTime wall = ::ros::WallTime::now();
   if (t.last_sim >= 0.0) {
     const double dwall = (wall - t.last_wall).toSec();

@@ -1,5 +1,5 @@
 #pragma once
-// GazeboWorld's topics (gazebo_topics.cpp): what the robot's loop thread and the 1 Hz timer keep.
+// GazeboWorld's topics (gazebo_topics.cpp): what the world's loop thread and the 1 Hz timer keep.
 
 #include <atomic>
 #include <vector>
@@ -18,8 +18,7 @@ struct GazeboWorld::Topics {
   std::atomic<int> model_subscribers{0}, link_subscribers{0};
   double next_states = 0.0;  // s, sim time (loop thread)
   // The world's loop thread fills these (reused: no allocation once sized).
-  std::vector<std::vector<EntityState>> robot_links;  // per robot, SimBridge::link_names() order
-  std::vector<EntityState> world_models;  // the SDF world's models (SimBridge::world_model_states_now)
+  std::vector<bridge::NamedState> models, links;
   gazebo_msgs::ModelStates model_msg;
   gazebo_msgs::LinkStates link_msg;
   ::ros::WallTimer performance_timer;

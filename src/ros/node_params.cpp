@@ -41,7 +41,13 @@ const std::vector<PrivateParam>& private_params() {
        "port, logged); unset: off"},
       {"foxglove_address", "string", "127.0.0.1", "the live view's address (0.0.0.0: every interface)"},
       {"foxglove_rate", "double", "30", "Hz (sim time) of the live view's /tf, /joint_states and /odom"},
-      {"clock_publish_rate", "double", "100", "Hz (sim time) of /clock (Gazebo's pub_clock_frequency); 0: every tick"},
+      {"pub_clock_frequency", "double", "0",
+       "Hz (sim time) of /clock; 0: every step (gazebo_ros' default; empty_world.launch sets it with "
+       "use_clock_frequency)"},
+      {"clock_publish_rate", "double", "(unset)", "the same as pub_clock_frequency (mechsim's earlier name)"},
+      {"enable_ros_network", "bool", "true",
+       "gazebo mode: false leaves /clock only: no /gazebo services, topics or dynamic_reconfigure (gazebo_ros')"},
+      {"step_service", "bool", "true", "gazebo mode: mechsim's /mechsim/step_simulation (stepping while paused)"},
       {"gazebo", "bool", "false",
        "gzserver mode (gazebo_ros' empty_world.launch): an empty world, robots come and go through "
        "/gazebo/spawn_urdf_model and delete_model; ~model, ~robot_description, x..Y and robot_namespace are "

@@ -14,12 +14,11 @@
 
 namespace mechsim::ros {
 
-SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options, SimNode* host)
-    : private_nh_(std::move(nh)), root_nh_("/"), robot_nh_(options.robot_namespace), options_(std::move(options)),
-      other_robot_(host != nullptr) {
+void SimNode::load_parameters(const std::string& robot_namespace, BridgeOptions& bridge) {
+  ::ros::NodeHandle robot_nh(robot_namespace);
   // The controllers' parameters as they are now; each load re-reads its own namespace.
   XmlRpc::XmlRpcValue all;
-  if (!options_.world_only && robot_nh_.getParam(robot_nh_.getNamespace(), all) && all.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
+  if (robot_nh.getParam(robot_nh.getNamespace(), all) && all.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
     std::string warning;
     fill_params_from_xmlrpc(bridge.controller_params, all, &warning);
     if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
@@ -27,24 +26,40 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
   // gazebo_ros_control's legacy pid_gains live at the absolute /gazebo_ros_control (outside a
   // robot namespace other than /).
   XmlRpc::XmlRpcValue gains;
-  if (bridge.parameter_root && robot_nh_.getNamespace() != "/" && root_nh_.getParam("/gazebo_ros_control", gains) &&
+  if (bridge.parameter_root && robot_nh.getNamespace() != "/" && ::ros::NodeHandle("/").getParam("/gazebo_ros_control", gains) &&
       gains.getType() == XmlRpc::XmlRpcValue::TypeStruct) {
     std::string warning;
     set_param_from_xmlrpc(*bridge.parameter_root, "gazebo_ros_control", gains, &warning);
     if (!warning.empty()) ROS_WARN_STREAM("mechsim: parameters not taken: " << warning);
   }
-  bridge_ = host != nullptr ? std::make_unique<SimBridge>(host->bridge(), std::move(bridge))
-                            : std::make_unique<SimBridge>(std::move(bridge));
+}
+
+SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options)
+    : private_nh_(std::move(nh)), root_nh_("/"), robot_nh_(options.robot_namespace), options_(std::move(options)) {
+  load_parameters(options_.robot_namespace, bridge);
+  owned_bridge_ = std::make_unique<SimBridge>(std::move(bridge));
+  bridge_ = owned_bridge_.get();
+  clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  set_up();
+}
+
+SimNode::SimNode(::ros::NodeHandle nh, SimBridge& model, NodeOptions options)
+    : private_nh_(std::move(nh)), root_nh_("/"), robot_nh_(options.robot_namespace), options_(std::move(options)),
+      bridge_(&model), other_robot_(true) {
+  options_.gazebo_services = false;  // the world offers them
+  set_up();
+}
+
+void SimNode::set_up() {
   for (const std::string& note : bridge_->joint_drive_notes()) ROS_INFO_STREAM("mechsim: " << note);
   if (const auto plugin = description::find_ros_control_plugin(bridge_->robot()); plugin && !plugin->default_hw()) {
     ROS_WARN_STREAM("mechsim: " << plugin->origin << ": gazebo_ros_control robotSimType '" << plugin->robot_sim_type
                                 << "' is not simulated (mechsim cannot load a RobotHWSim plugin): the transmissions' "
                                    "joints get gazebo_ros_control/DefaultRobotHWSim's behaviour instead");
   }
-  if (!other_robot_) clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);  // the host's loop has it
   if (!bridge_->e_stop_topic().empty()) {
     // gazebo_ros_control subscribes to its <eStopTopic> in the robot's namespace, queue 1.
-    SimBridge* sim = bridge_.get();
+    SimBridge* sim = bridge_;
     e_stop_sub_ = robot_nh_.subscribe<std_msgs::Bool>(
         bridge_->e_stop_topic(), 1, [sim](const std_msgs::Bool::ConstPtr& msg) {
           if (msg->data != sim->e_stop_active()) {
@@ -54,13 +69,11 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
         });
     ROS_INFO_STREAM("mechsim: gazebo_ros_control e-stop on " << e_stop_sub_.getTopic());
   }
-  if (options_.publish_tf && !options_.world_only) {
+  if (options_.publish_tf) {
     tf_ = std::make_unique<TfPublisher>(root_nh_, bridge_->robot(), options_.publish_odom_tf ? options_.odom_frame : "");
     tf_->publish_static(bridge_->time());
   }
-  if (options_.foxglove_port >= 0 && options_.world_only) {
-    // no robot to show
-  } else if (options_.foxglove_port >= 0 && other_robot_) {
+  if (options_.foxglove_port >= 0 && other_robot_) {
     ROS_WARN_STREAM("mechsim: model '" << bridge_->robot().name << "': ~foxglove_port: no live view of a model spawned into a world (gzserver mode); mechsim_node with ~model has one");
   } else if (options_.foxglove_port >= 0) {
     const std::string url = bridge_->start_live_view(options_.foxglove_address, options_.foxglove_port,
@@ -68,29 +81,27 @@ SimNode::SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options
     ROS_INFO_STREAM("mechsim: live view on " << url << " (Foxglove WebSocket protocol: Foxglove Studio, Lichtblick)");
   }
   // The statistics observer runs before on_tick, so that a tick's statistics include it.
-  if (options_.pr2 && !options_.world_only) bridge_->enable_mechanism_statistics();
+  if (options_.pr2) bridge_->enable_mechanism_statistics();
   sensors_ = std::make_unique<SensorPublishers>(root_nh_, *bridge_);
   plugins_ = std::make_unique<ModelPluginTopics>(root_nh_, *bridge_);
-  bridge_->add_observer([this](double time) {
-    if (!other_robot_ || outputs_on_.load(std::memory_order_acquire)) on_tick(time);
+  // Another robot's bridge outlives this node (the world takes it out of the physics after the
+  // node has gone): its observer asks the shared flag before it touches the node.
+  bridge_->add_observer([this, other = other_robot_, on = outputs_on_](double time) {
+    if (!other || on->load(std::memory_order_acquire)) on_tick(time);
   });
   if (options_.gazebo_services) advertise_sim_services();
-  if (!options_.world_only && options_.controller_manager) advertise_controller_manager();
-  if (options_.pr2 && !options_.world_only) {
+  if (options_.controller_manager) advertise_controller_manager();
+  if (options_.pr2) {
     advertise_pr2_controller_manager();
     advertise_pr2_outputs();
   }
 }
 
-SimNode::~SimNode() {
-  stop();
-  // Out of the world before the members its observer reaches go.
-  if (other_robot_) bridge_->remove_from_world();
-}
+SimNode::~SimNode() { stop(); }
 
 void SimNode::start() {
   if (other_robot_) {
-    outputs_on_.store(true, std::memory_order_release);
+    outputs_on_->store(true, std::memory_order_release);
     return;
   }
   stop_.store(false);
@@ -99,7 +110,7 @@ void SimNode::start() {
 
 void SimNode::stop() {
   if (other_robot_) {
-    outputs_on_.store(false, std::memory_order_release);
+    outputs_on_->store(false, std::memory_order_release);
     bridge_->wait_for_loop();
     return;
   }

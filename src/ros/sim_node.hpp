@@ -42,9 +42,9 @@ struct NodeOptions {
   std::string robot_namespace = "/";  // where the controllers' parameters and topics live
   double state_publish_rate = 50.0;   // Hz (sim time) of <controller>/state; 0: every tick
   double odom_publish_rate = 50.0;    // Hz (sim time) of <controller>/odom; 0: every tick
-  // Hz (sim time) of /clock; 0: every tick. Gazebo's pub_clock_frequency default: at 1 kHz every
-  // use_sim_time node wakes 1000 times a second for nothing.
-  double clock_publish_rate = 100.0;
+  // Hz (sim time) of /clock; 0: every tick, as gazebo_ros publishes it unless its
+  // ~pub_clock_frequency is set (gazebo_ros_api_plugin.cpp: pub_clock_frequency_ starts at 0).
+  double clock_publish_rate = 0.0;
   bool publish_tf = true;
   bool publish_odom_tf = false;
   double tf_rate = 50.0;          // Hz (sim time)
@@ -58,9 +58,6 @@ struct NodeOptions {
   std::string foxglove_address = "127.0.0.1";
   double foxglove_rate = 30.0;   // Hz (sim time) of its /tf, /joint_states, /odom
   std::string robot_description;  // its /robot_description (the URDF)
-  // The world's loop with no robot of its own (GazeboWorld: every spawned model is another robot
-  // of it): the loop and /clock only; no controller manager services, TF or live view.
-  bool world_only = false;
   // <ns>/controller_manager/* (GazeboWorld: only for a model with gazebo_ros_control's plugin, as
   // Gazebo; a model without one, a spawned SDF box, has none to clash with another's).
   bool controller_manager = true;
@@ -68,16 +65,22 @@ struct NodeOptions {
 
 class SimNode {
  public:
-  // `nh` is the node's private handle (~). Throws std::runtime_error when the robot, world or
-  // parameters are unusable. With `host`, the robot is another robot of host's world
-  // (SimBridge's other-robot constructor; bridge.robot.name is its model name): it has no loop
-  // thread or /clock of its own, host's loop ticks it and runs its outputs after each tick; it
-  // leaves the world when the node goes (its controllers stopped and unloaded first).
-  SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options, SimNode* host = nullptr);
+  // `nh` is the node's private handle (~). The node's own simulation: its parameters from the
+  // parameter server (load_parameters), its loop thread and /clock. Throws std::runtime_error when
+  // the robot, world or parameters are unusable.
+  SimNode(::ros::NodeHandle nh, BridgeOptions bridge, NodeOptions options);
+  // A model of a Gazebo world (bridge::World, gazebo_world.hpp): the world owns `model` and its
+  // loop ticks it; the node has its outputs (topics, controller manager services), no loop thread
+  // or /clock. The model must outlive the node.
+  SimNode(::ros::NodeHandle nh, SimBridge& model, NodeOptions options);
   ~SimNode();
+  // The controllers' parameters under `robot_namespace` on the parameter server (and
+  // gazebo_ros_control's absolute /gazebo_ros_control) into bridge.controller_params /
+  // parameter_root, before the simulation is built.
+  static void load_parameters(const std::string& robot_namespace, BridgeOptions& bridge);
 
-  void start();  // loop thread (another robot: its outputs start)
-  void stop();   // joins it (another robot: its outputs stop; returns once the last ran)
+  void start();  // loop thread (a world's model: its outputs start)
+  void stop();   // joins it (a world's model: its outputs stop; returns once the last ran)
   // After stop(): stops every controller (their stopping() runs) and unloads them, topics first
   // (a model being deleted). Returns their names.
   std::vector<std::string> unload_all_controllers();
@@ -89,6 +92,7 @@ class SimNode {
   void on_tick(double time);
   void publish_controller_states(double time);
   void publish_tf(double time);  // loop thread  // loop thread (controller_bindings.cpp)
+  void set_up();  // both constructors' common part
   void advertise_sim_services();
   void advertise_controller_manager();
   void advertise_pr2_controller_manager();
@@ -107,7 +111,8 @@ class SimNode {
   ::ros::NodeHandle root_nh_;
   ::ros::NodeHandle robot_nh_;  // the robot namespace
   NodeOptions options_;
-  std::unique_ptr<SimBridge> bridge_;
+  std::unique_ptr<SimBridge> owned_bridge_;  // the node's own simulation; null for a world's model
+  SimBridge* bridge_ = nullptr;
   std::unique_ptr<TfPublisher> tf_;
   std::unique_ptr<SensorPublishers> sensors_;  // the robot's simulated sensors (loop thread)
   std::unique_ptr<ModelPluginTopics> plugins_;  // the robot's Gazebo model plugins (model_plugin_topics.hpp)
@@ -135,8 +140,9 @@ class SimNode {
 
   std::thread loop_thread_;
   std::atomic<bool> stop_{false};
-  bool other_robot_ = false;             // another robot of a host's world (no loop of its own)
-  std::atomic<bool> outputs_on_{false};  // another robot: on_tick runs (start() to stop())
+  bool other_robot_ = false;  // a model of a world (no loop of its own)
+  // A world's model: on_tick runs (start() to stop()); shared with the bridge's observer.
+  std::shared_ptr<std::atomic<bool>> outputs_on_ = std::make_shared<std::atomic<bool>>(false);
   std::string divergence_;
   double loop_cpu_seconds_ = 0.0;  // CPU time of the loop thread, set when it ends
 };

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "description/sdf/sdf_model.hpp"
+#include "description/sensor_spec.hpp"
 #include "physics/mesh_loader.hpp"
 #include "physics/transform.hpp"
 
@@ -54,7 +55,29 @@ void set_shape(const description::Geometry& g, physics::WorldBox& object) {
 
 // Gazebo's world file: the ground and the boxes, cylinders, spheres and meshes the physics can hold (sdf_model.hpp says how models
 // map to robots; a model's root link frame is its pose times root_offset).
-World make_sdf_world(const std::string& path) {
+// A static model as a robot of its own: its root welded to a `world` link at the model frame
+// (the converter does so already for a model jointed to the world or of several roots).
+description::RobotModel welded(const description::SdfModel& model) {
+  description::RobotModel robot = model.robot;
+  if (robot.root_link == "world") return robot;
+  description::Link world;
+  world.name = "world";
+  description::Joint weld;
+  weld.name = "__weld_" + robot.root_link;
+  weld.type = description::JointType::Fixed;
+  weld.parent_link = "world";
+  weld.child_link = robot.root_link;
+  weld.origin = model.root_offset;
+  world.child_joints.push_back(weld.name);
+  for (description::Link& l : robot.links)
+    if (l.name == robot.root_link) l.parent_joint = weld.name;
+  robot.links.insert(robot.links.begin(), std::move(world));
+  robot.joints.push_back(std::move(weld));
+  robot.root_link = "world";
+  return robot;
+}
+
+World make_sdf_world(const std::string& path, bool active_apart) {
   description::SdfWorld sdf;
   try {
     sdf = description::load_sdf_world(path);
@@ -71,7 +94,27 @@ World make_sdf_world(const std::string& path) {
     world.not_simulated.push_back("gravity's horizontal part (mechsim's worlds pull along -z only)");
   }
   for (const std::string& n : sdf.not_simulated) world.not_simulated.push_back(n);
+  world.warnings = sdf.warnings;
+  world.lights = sdf.lights;
   for (const description::SdfModel& model : sdf.models) {
+    const bool active = !model.robot.sensors.empty() || std::any_of(model.robot.plugins.begin(), model.robot.plugins.end(),
+                                                                    [](const description::GazeboPlugin& p) { return p.sensor.empty(); });
+    if (active && active_apart) {
+      SdfRobot robot;
+      robot.name = model.name;
+      robot.is_static = model.is_static || model.robot.root_link == "world";
+      robot.robot = robot.is_static ? welded(model) : model.robot;
+      robot.X_WR = robot.is_static ? model.pose : physics::compose(model.pose, model.root_offset);
+      world.sdf_robots.push_back(std::move(robot));
+      continue;
+    }
+    if (active) {
+      for (const description::SensorSpec& sensor : model.robot.sensors)
+        world.not_simulated.push_back("model '" + model.name + "': sensor '" + sensor.name + "'");
+      for (const description::GazeboPlugin& plugin : model.robot.plugins)
+        if (plugin.sensor.empty())
+          world.not_simulated.push_back("model '" + model.name + "': model plugin '" + plugin.name + "' (" + plugin.filename + ")");
+    }
     bool used = false;
     World::ModelFrame frame{model.name, model.pose, "", {}};  // static until a moving part is found
     for (const description::SdfPlane& plane : model.planes) {
@@ -160,7 +203,7 @@ World make_world(const WorldConfig& config) {
       throw WorldError("world '" + config.name + "': soil is for mechsim's own worlds (empty, slope, mars_yard_2024, "
                        "heightmaps); an SDF world's ground is rigid");
     }
-    return make_sdf_world(config.name);
+    return make_sdf_world(config.name, config.sdf_active_models_apart);
   }
   physics::WorldTerrainOptions options;
   if (config.name == "mars_yard_2024") options.seed = config.seed;

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "description/pose.hpp"
+#include "description/robot_model.hpp"
+#include "description/sdf/sdf_model.hpp"
 #include "physics/heightmap_io.hpp"
 #include "physics/mars_yard.hpp"
 #include "physics/physics_options.hpp"
@@ -32,6 +34,21 @@ struct WorldConfig {
   std::optional<double> slope_deg;                     // slope only (default 10)
   // The wheels meet soil (physics/soil.hpp) instead of rigid ground; nullopt: rigid.
   std::optional<physics::SoilParameters> soil;
+  // An SDF world's models with sensors or model plugins are left out of the world's own objects
+  // and listed in World::sdf_robots instead, for the caller to bring in as robots of their own
+  // (gazebo_ros' gzserver mode: bridge::World). False: their sensors and plugins are listed as
+  // not simulated and the model is a world object as any other.
+  bool sdf_active_models_apart = false;
+};
+
+// An SDF world's model that is a robot of its own (WorldConfig::sdf_active_models_apart): its
+// sensors and model plugins run. A static model is welded to the world: its root link is `world`,
+// at the model frame.
+struct SdfRobot {
+  std::string name;
+  description::RobotModel robot;
+  description::Pose X_WR;  // its root link frame in the world (the spawn pose)
+  bool is_static = false;
 };
 
 struct World {
@@ -57,7 +74,10 @@ struct World {
     description::Pose X_BM;
   };
   std::vector<ModelFrame> sdf_model_frames;
+  std::vector<SdfRobot> sdf_robots;  // WorldConfig::sdf_active_models_apart
+  std::vector<description::SdfLight> lights;  // an SDF world's
   std::vector<std::string> not_simulated;
+  std::vector<std::string> warnings;  // what an SDF world holds that Gazebo tolerates, one line each
   // <physics> of an SDF world: s per step and the real-time factor it asks for (absent: unset).
   std::optional<double> max_step_size, real_time_factor;
 };

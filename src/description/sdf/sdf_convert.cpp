@@ -20,6 +20,10 @@
 #include <sdf/Sensor.hh>
 #include <sdf/Sphere.hh>
 #include <sdf/Visual.hh>
+#include <tinyxml2.h>
+
+#include "description/sensor_spec.hpp"
+#include "description/urdf/urdf_reading.hpp"
 
 namespace mechsim::description::sdf_detail {
 namespace {
@@ -83,8 +87,6 @@ class Converter {
     if (model_.LinkCount() == 0) throw SdfError(where(model_.Element()) + ": " + m + " has no link");
     for (uint64_t i = 0; i < model_.ModelCount(); ++i)
       note(m + ": nested model '" + model_.ModelByIndex(i)->Name() + "' (mechsim simulates one level of models)");
-    if (model_.Element() && model_.Element()->HasElement("plugin"))
-      note(m + ": model plugins (" + plugin_names(model_.Element()) + ")");
 
     // Joints first: which link hangs from which, so that link frames can follow URDF's rule.
     for (uint64_t i = 0; i < model_.JointCount(); ++i) add_joint(*model_.JointByIndex(i));
@@ -97,18 +99,13 @@ class Converter {
     for (uint64_t i = 0; i < model_.LinkCount(); ++i) add_link(*model_.LinkByIndex(i));
     connect_roots();
     set_joint_origins();
+    read_sensors_and_plugins();
     return std::move(out_);
   }
 
  private:
   void note(const std::string& what) { out_.not_simulated.push_back(what); }
 
-  static std::string plugin_names(const sdf::ElementPtr& e) {
-    std::string names;
-    for (sdf::ElementPtr p = e->GetElement("plugin"); p; p = p->GetNextElement("plugin"))
-      names += (names.empty() ? "" : ", ") + p->Get<std::string>("name") + " " + p->Get<std::string>("filename");
-    return names;
-  }
 
   void add_joint(const sdf::Joint& j) {
     const std::string what = "model '" + out_.name + "' joint '" + j.Name() + "'";
@@ -264,7 +261,7 @@ class Converter {
       }
       link.visuals.push_back(std::move(visual));
     }
-    for (uint64_t i = 0; i < l.SensorCount(); ++i) note(lw + ": sensor '" + l.SensorByIndex(i)->Name() + "'");
+    for (uint64_t i = 0; i < l.SensorCount(); ++i) sensors_.push_back({l.Name(), l.SensorByIndex(i)});
     for (uint64_t i = 0; i < l.LightCount(); ++i) note(lw + ": light '" + l.LightByIndex(i)->Name() + "'");
     if (l.Element() && l.Element()->HasElement("gravity") && !l.Element()->Get<bool>("gravity")) gz.gravity = false;
     if (model_.SelfCollide() || (l.Element() && l.Element()->HasElement("self_collide") && l.Element()->Get<bool>("self_collide")))
@@ -308,6 +305,50 @@ class Converter {
     m.position = {h.Position().X(), h.Position().Y(), h.Position().Z()};
     m.pose = pose(X_MC);
     out_.heightmaps.push_back(std::move(m));
+  }
+
+  // The links' <sensor>s and the model's <plugin>s, read by the same code as a URDF's <gazebo>
+  // blocks (the elements are SDF in both): each one becomes <gazebo reference="LINK"> (a model
+  // plugin: <gazebo>) of a small URDF-like document. A sensor's pose is given in the SDF link's
+  // frame (or its relative_to frame); the RobotModel's link frame is the link's parent joint frame,
+  // so the pose is rewritten in that frame first.
+  void read_sensors_and_plugins() {
+    for (const auto& [link, sensor] : sensors_) {
+      const sdf::ElementPtr e = sensor->Element();
+      if (!e) continue;
+      const Iso X_MS = resolved(*sensor, "__model__", "link '" + link + "' sensor '" + sensor->Name() + "' pose");
+      const Iso X_LS = X_ML_frame_.at(link).inverse() * X_MS;
+      const sdf::ElementPtr copy = e->Clone();
+      const sdf::ElementPtr pose_element = copy->GetElement("pose");
+      const Eigen::Quaterniond q(X_LS.rotation());
+      const Eigen::Vector3d t = X_LS.translation();
+      pose_element->Set(ignition::math::Pose3d(t.x(), t.y(), t.z(), q.w(), q.x(), q.y(), q.z()));
+      if (const sdf::ParamPtr relative_to = pose_element->GetAttribute("relative_to")) relative_to->Reset();
+      read_gazebo_block("<gazebo reference=\"" + link + "\">" + copy->ToString("") + "</gazebo>", e);
+    }
+    if (const sdf::ElementPtr m = model_.Element(); m && m->HasElement("plugin")) {
+      for (sdf::ElementPtr p = m->GetElement("plugin"); p; p = p->GetNextElement("plugin"))
+        read_gazebo_block("<gazebo>" + p->ToString("") + "</gazebo>", p);
+    }
+  }
+
+  void read_gazebo_block(const std::string& block, const sdf::ElementPtr& origin) {
+    const std::string xml = "<robot name=\"" + out_.name + "\">\n" + block + "\n</robot>";
+    tinyxml2::XMLDocument doc;
+    if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
+      throw SdfError(where(origin) + ": model '" + out_.name + "': cannot read <" + origin->GetName() + "> (" +
+                     (doc.ErrorStr() != nullptr ? doc.ErrorStr() : "?") + ")");
+    }
+    // Messages name the element's file and line; lines inside it count from there.
+    detail::Problems problems(where(origin) + " (model '" + out_.name + "')");
+    detail::read_gazebo(*doc.RootElement(), problems, out_.robot);
+    const ValidationReport& report = problems.report();
+    for (const std::string& w : report.warnings) out_.warnings.push_back(w);
+    if (!report.errors.empty()) {
+      std::string text;
+      for (const std::string& e : report.errors) text += (text.empty() ? "" : "; ") + e;
+      throw SdfError(text);
+    }
   }
 
   // A RobotModel is one tree with one root. Links no joint holds: a static model welds them to
@@ -372,6 +413,7 @@ class Converter {
   SdfModel out_;
   std::map<std::string, std::string> parent_joint_;  // child link -> joint
   std::vector<std::string> world_joints_;
+  std::vector<std::pair<std::string, const sdf::Sensor*>> sensors_;  // link name, sensor
   std::map<std::string, Iso, std::less<>> X_ML_, X_ML_frame_, X_MJ_;
 };
 

@@ -10,14 +10,23 @@
 // frame, `root_offset` in the model frame; a joint to `world` gives a root link named `world`
 // at the model frame (the model is fixed there).
 //
-// What mechsim does not simulate (lights, GUI, sensors and plugins in SDF, surface contact
-// parameters, joint types beyond revolute/continuous/prismatic/fixed) is listed in
+// A model's sensors and model plugins are read as a URDF's <gazebo> blocks are (their elements
+// are SDF in both): RobotModel::sensors and plugins. What mechsim does not simulate (GUI, surface
+// contact parameters, joint types beyond revolute/continuous/prismatic/fixed) is listed in
 // `not_simulated`, once per thing, never an error. Errors (SdfError) name the file and line.
 //
+// Tolerance as Gazebo 11's: it reads SDF with libsdformat 9, which accepts what libsdformat 12
+// reports as errors in files users have: a material <script> given by name alone (no <uri>), a
+// camera image <format> outside sdformat 12's list (R16G16B16, L16, BAYER_*...), a model://
+// include that no model path holds. Those are warnings here (the include is left out); any other
+// error refuses the file.
+//
 // model:// URIs (includes, meshes, heightmaps) are looked up in SdfOptions::model_paths, then
-// GAZEBO_MODEL_PATH, then ~/.gazebo/models; `ground_plane` and `sun` fall back to mechsim's own
-// minimal models (BuiltinModels, sdf_paths.cpp) since Gazebo's model database is not installed.
+// GAZEBO_MODEL_PATH, then ~/.gazebo/models; the models of Gazebo's library that worlds and
+// tutorials name most (`ground_plane`, `sun`, `checkerboard_plane`, ...: BuiltinModels,
+// sdf_paths.cpp) fall back to mechsim's own since Gazebo's model database is not installed.
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -67,10 +76,24 @@ struct SdfModel {
   std::vector<std::string> warnings;
 };
 
+// A <light> of the world (Gazebo's light API reads and changes these; mechsim's cameras do not
+// use them: their scene is lit by the renderer's own head light).
+struct SdfLight {
+  std::string name;
+  std::string type;  // point, directional, spot
+  bool cast_shadows = true;
+  std::array<double, 4> diffuse{1.0, 1.0, 1.0, 1.0}, specular{0.1, 0.1, 0.1, 1.0};  // RGBA
+  double attenuation_constant = 1.0, attenuation_linear = 0.0, attenuation_quadratic = 0.0;
+  double range = 10.0;               // m
+  Vec3 direction{0.0, 0.0, -1.0};    // in the light frame
+  Pose pose;                         // X_WL
+};
+
 struct SdfWorld {
   std::string name;
   std::string file;
   std::vector<SdfModel> models;  // document order (includes where they stand)
+  std::vector<SdfLight> lights;  // document order
   Vec3 gravity{0.0, 0.0, -9.8};  // m/s^2 (SDF's default when absent)
   // <physics> values written in the file; absent ones are left to the caller (SDF's defaults are
   // 0.001 s, 1000 Hz and 1).

@@ -57,6 +57,54 @@ constexpr const char* kSunSdf = R"(<?xml version="1.0"?>
 </sdf>
 )";
 
+// A calibration target as worlds with cameras include it (model://checkerboard_plane): a static
+// board of 8 x 8 squares of 0.1 m, black and white, standing upright (facing +x) with its lower
+// edge 0.05 m above the ground. mechsim's own: the squares are visuals (the renderer draws them),
+// the board one thin collision box.
+std::string checkerboard_sdf() {
+  constexpr int kSquares = 8;
+  constexpr double kSquare = 0.1, kThick = 0.005, kBottom = 0.05;
+  std::string visuals;
+  for (int r = 0; r < kSquares; ++r) {
+    for (int c = 0; c < kSquares; ++c) {
+      const double y = (c - kSquares / 2 + 0.5) * kSquare;
+      const double z = kBottom + (r + 0.5) * kSquare;
+      const char* colour = (r + c) % 2 == 0 ? "0 0 0 1" : "1 1 1 1";
+      visuals += "      <visual name=\"square_" + std::to_string(r) + "_" + std::to_string(c) + "\"><pose>0 " +
+                 std::to_string(y) + " " + std::to_string(z) + " 0 0 0</pose><geometry><box><size>" +
+                 std::to_string(kThick) + " " + std::to_string(kSquare) + " " + std::to_string(kSquare) +
+                 "</size></box></geometry><material><ambient>" + colour + "</ambient><diffuse>" + colour +
+                 "</diffuse></material></visual>\n";
+    }
+  }
+  const double side = kSquares * kSquare;
+  return "<?xml version=\"1.0\"?>\n<sdf version=\"1.6\">\n  <model name=\"checkerboard_plane\">\n    <static>true</static>\n"
+         "    <link name=\"link\">\n      <collision name=\"collision\"><pose>-0.001 0 " + std::to_string(kBottom + side / 2) +
+         " 0 0 0</pose><geometry><box><size>" + std::to_string(kThick) + " " + std::to_string(side) + " " +
+         std::to_string(side) + "</size></box></geometry></collision>\n" + visuals + "    </link>\n  </model>\n</sdf>\n";
+}
+
+// A 20 m x 20 m asphalt ground (model://asphalt_plane): a static plane as the ground plane's,
+// dark grey.
+constexpr const char* kAsphaltPlaneSdf = R"(<?xml version="1.0"?>
+<sdf version="1.6">
+  <model name="asphalt_plane">
+    <static>true</static>
+    <link name="link">
+      <collision name="collision">
+        <geometry><box><size>20 20 0.1</size></box></geometry>
+        <pose>0 0 -0.05 0 0 0</pose>
+      </collision>
+      <visual name="visual">
+        <pose>0 0 -0.05 0 0 0</pose>
+        <geometry><box><size>20 20 0.1</size></box></geometry>
+        <material><ambient>0.2 0.2 0.2 1</ambient><diffuse>0.2 0.2 0.2 1</diffuse></material>
+      </visual>
+    </link>
+  </model>
+</sdf>
+)";
+
 void write_model(const fs::path& root, const std::string& name, const char* sdf) {
   fs::create_directories(root / name);
   std::ofstream(root / name / "model.config")
@@ -108,10 +156,12 @@ std::string resolve_uri(const std::string& uri, const std::string& from_file, co
 
 BuiltinModels::BuiltinModels() {
   std::string pattern = (fs::temp_directory_path() / "mechsim-sdf-models-XXXXXX").string();
-  if (mkdtemp(pattern.data()) == nullptr) throw SdfError("cannot create a temporary folder for mechsim's ground_plane and sun models");
+  if (mkdtemp(pattern.data()) == nullptr) throw SdfError("cannot create a temporary folder for mechsim's own library models");
   dir_ = pattern;
   write_model(dir_, "ground_plane", kGroundPlaneSdf);
   write_model(dir_, "sun", kSunSdf);
+  write_model(dir_, "checkerboard_plane", checkerboard_sdf().c_str());
+  write_model(dir_, "asphalt_plane", kAsphaltPlaneSdf);
 }
 
 BuiltinModels::~BuiltinModels() {

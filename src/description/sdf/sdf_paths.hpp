@@ -1,6 +1,6 @@
 #pragma once
 // Private to description/sdf: where model://, file:// and package:// URIs of an SDF file lead,
-// and mechsim's own `ground_plane` and `sun` models for <include>s that find no other.
+// and mechsim's own versions of Gazebo's most used library models for <include>s that find no other.
 
 #include <string>
 #include <vector>
@@ -22,8 +22,9 @@ SdfSearch make_search(const SdfOptions& options);
 // its folder); empty when it cannot be found.
 std::string resolve_uri(const std::string& uri, const std::string& from_file, const SdfSearch& search);
 
-// A temporary folder holding mechsim's minimal `ground_plane` and `sun` models (model.config and
-// model.sdf each) for the parser's model:// search, removed again on destruction.
+// A temporary folder holding mechsim's own versions of Gazebo library models worlds name most
+// (`ground_plane`, `sun`, `checkerboard_plane`, `asphalt_plane`: model.config and model.sdf
+// each) for the parser's model:// search, after every other model path; removed on destruction.
 class BuiltinModels {
  public:
   BuiltinModels();

@@ -1,5 +1,6 @@
 // Loading SDF worlds and models with libsdformat (its own ParserConfig per load: no global
 // search paths), then converting each model (sdf_convert.cpp).
+#include <array>
 #include <filesystem>
 #include <set>
 
@@ -18,6 +19,41 @@ namespace mechsim::description {
 namespace {
 
 using sdf_detail::where;
+
+// What Gazebo 11 (libsdformat 9) reads without complaint and libsdformat 12 reports (the DOM is
+// built all the same): warnings. Anything else refuses the file.
+bool tolerated(const sdf::Error& e) {
+  const std::string& m = e.Message();
+  switch (e.Code()) {
+    case sdf::ErrorCode::URI_LOOKUP:  // a model:// include no model path holds: left out
+      return true;
+    case sdf::ErrorCode::ELEMENT_INVALID:
+      return m.find("<script> element is missing a child <uri>") != std::string::npos ||
+             m.find("<image><format> has invalid value") != std::string::npos ||
+             m.find("Failed to load a world") != std::string::npos || m.find("Failed to load a model") != std::string::npos;
+    default:
+      return false;
+  }
+}
+
+// Splits `errors` into the tolerated ones (appended to `warnings`) and the rest (returned).
+sdf::Errors refusing(const sdf::Errors& errors, const std::string& source, std::vector<std::string>& warnings) {
+  sdf::Errors rest;
+  for (const sdf::Error& e : errors) {
+    if (!tolerated(e)) {
+      rest.push_back(e);
+      continue;
+    }
+    if (e.Message().find("Failed to load a") != std::string::npos) continue;  // the summary of the others
+    std::string w = e.FilePath().value_or(source);
+    if (e.LineNumber()) w += ":" + std::to_string(*e.LineNumber());
+    warnings.push_back(w + ": " + e.Message() + " (Gazebo 11 reads it; " +
+                       (e.Code() == sdf::ErrorCode::URI_LOOKUP ? "the include is left out)" : "taken as Gazebo does)"));
+  }
+  return rest;
+}
+
+std::array<double, 4> rgba(const ignition::math::Color& c) { return {c.R(), c.G(), c.B(), c.A()}; }
 
 std::string error_text(const sdf::Errors& errors, const std::string& source) {
   std::string text;
@@ -57,7 +93,8 @@ SdfModel parse_sdf_model(const std::string& xml, const std::string& source, cons
   const sdf_detail::SdfSearch search = sdf_detail::make_search(options);
   const sdf_detail::BuiltinModels builtin;
   sdf::Root root;
-  const sdf::Errors errors = root.LoadSdfString(xml, parser_config(search, builtin));
+  std::vector<std::string> warnings;
+  const sdf::Errors errors = refusing(root.LoadSdfString(xml, parser_config(search, builtin)), source, warnings);
   if (!errors.empty()) throw SdfError(source + ": " + error_text(errors, source));
   const sdf::Model* model = root.Model();
   if (model == nullptr) throw SdfError(source + ": the SDF holds no <model>");
@@ -65,6 +102,7 @@ SdfModel parse_sdf_model(const std::string& xml, const std::string& source, cons
   if (const sdf::Errors e = model->SemanticPose().Resolve(p); !e.empty()) throw SdfError(source + ": " + error_text(e, source));
   SdfModel out = sdf_detail::convert_model(*model, pose_of(p), search);
   out.robot.source = source;
+  out.warnings.insert(out.warnings.begin(), warnings.begin(), warnings.end());
   return out;
 }
 
@@ -73,11 +111,11 @@ SdfWorld load_sdf_world(const std::string& path, const SdfOptions& options) {
   const sdf_detail::SdfSearch search = sdf_detail::make_search(options);
   const sdf_detail::BuiltinModels builtin;
   sdf::Root root;
-  const sdf::Errors errors = root.Load(path, parser_config(search, builtin));
+  SdfWorld out;
+  const sdf::Errors errors = refusing(root.Load(path, parser_config(search, builtin)), path, out.warnings);
   if (!errors.empty()) throw SdfError(error_text(errors, path));
   if (root.WorldCount() == 0) throw SdfError(path + ": the file holds no <world>");
   const sdf::World& w = *root.WorldByIndex(0);
-  SdfWorld out;
   out.name = w.Name();
   out.file = path;
   const auto g = w.Gravity();
@@ -104,7 +142,27 @@ SdfWorld load_sdf_world(const std::string& path, const SdfOptions& options) {
     out.warnings.insert(out.warnings.end(), model.warnings.begin(), model.warnings.end());
     out.models.push_back(std::move(model));
   }
-  for (uint64_t i = 0; i < w.LightCount(); ++i) out.not_simulated.push_back("light '" + w.LightByIndex(i)->Name() + "'");
+  for (uint64_t i = 0; i < w.LightCount(); ++i) {
+    const sdf::Light& l = *w.LightByIndex(i);
+    SdfLight light;
+    light.name = l.Name();
+    switch (l.Type()) {
+      case sdf::LightType::POINT: light.type = "point"; break;
+      case sdf::LightType::SPOT: light.type = "spot"; break;
+      default: light.type = "directional"; break;
+    }
+    light.cast_shadows = l.CastShadows();
+    light.diffuse = rgba(l.Diffuse());
+    light.specular = rgba(l.Specular());
+    light.attenuation_constant = l.ConstantAttenuationFactor();
+    light.attenuation_linear = l.LinearAttenuationFactor();
+    light.attenuation_quadratic = l.QuadraticAttenuationFactor();
+    light.range = l.AttenuationRange();
+    light.direction = {l.Direction().X(), l.Direction().Y(), l.Direction().Z()};
+    ignition::math::Pose3d p;
+    if (l.SemanticPose().Resolve(p).empty()) light.pose = pose_of(p);
+    out.lights.push_back(std::move(light));
+  }
   for (uint64_t i = 0; i < w.ActorCount(); ++i) out.not_simulated.push_back("actor '" + w.ActorByIndex(i)->Name() + "'");
   const sdf::ElementPtr e = w.Element();
   if (e && e->HasElement("gui") && e->GetElement("gui")->GetExplicitlySetInFile()) out.not_simulated.push_back("gui (camera, plugins)");

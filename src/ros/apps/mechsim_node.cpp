@@ -17,7 +17,7 @@
 #include "ros/gazebo_world.hpp"
 #include "ros/master_watch.hpp"
 #include "ros/node_params.hpp"
-#include "ros/robot_plugins.hpp"
+#include "bridge/robot_plugins.hpp"
 #include "ros/sim_node.hpp"
 
 namespace {
@@ -39,26 +39,36 @@ int serve(mechsim::ros::MasterWatch& master) {
   return 0;
 }
 
+// Hz (sim time) of /clock: ~pub_clock_frequency as gazebo_ros reads it (0, every step, when
+// unset), or mechsim's earlier name ~clock_publish_rate.
+double clock_frequency(const ::ros::NodeHandle& pnh) {
+  double hz = 0.0;
+  if (pnh.getParam("pub_clock_frequency", hz)) return hz;
+  return pnh.param("clock_publish_rate", 0.0);
+}
+
 // ~gazebo:=true: gazebo_ros' gzserver, an empty world that robots are spawned into.
 int run_gazebo_world(::ros::NodeHandle& pnh, mechsim::ros::MasterWatch& master) {
   mechsim::ros::GazeboWorldOptions options;
-  options.world = pnh.param<std::string>("world", "empty");
-  options.paused = pnh.param("paused", false);
-  options.real_time_factor = pnh.param("real_time_factor", 1.0);
-  options.lenient = pnh.param("lenient", true);
+  options.world.world = pnh.param<std::string>("world", "empty");
+  options.world.paused = pnh.param("paused", false);
+  options.world.real_time_factor = pnh.param("real_time_factor", 1.0);
+  options.world.lenient = pnh.param("lenient", true);
   options.model_states_rate = pnh.param("model_states_rate", 0.0);
   options.node.publish_tf = pnh.param("publish_tf", false);
   options.node.publish_odom_tf = pnh.param("publish_odom_tf", false);
   options.node.odom_frame = pnh.param<std::string>("odom_frame", "odom");
   options.node.tf_rate = pnh.param("tf_rate", 50.0);
   options.node.state_publish_rate = pnh.param("state_publish_rate", 50.0);
-  options.node.clock_publish_rate = pnh.param("clock_publish_rate", 100.0);
+  options.node.clock_publish_rate = clock_frequency(pnh);
+  options.enable_ros_network = pnh.param("enable_ros_network", true);
+  options.step_service = pnh.param("step_service", true);
   if (bool pr2 = false; pnh.getParam("pr2", pr2)) options.node.pr2 = pr2;
   if (std::string ignored; pnh.getParam("gazebo_ignored", ignored) && !ignored.empty()) {
     ROS_INFO_STREAM("mechsim: gazebo_ros arguments accepted without effect (no GUI; MuJoCo, not ODE): " << ignored);
   }
   mechsim::ros::GazeboWorld world(pnh, options);
-  ROS_INFO_STREAM("mechsim: world '" << options.world << "' up" << (options.paused ? " (paused)" : "")
+  ROS_INFO_STREAM("mechsim: world '" << options.world.world << "' up" << (options.world.paused ? " (paused)" : "")
                                      << "; robots come in through /gazebo/spawn_urdf_model");
   // Spawning (a robot's physics built) holds a spinner thread for a while: others keep serving.
   ::ros::AsyncSpinner spinner(4);
@@ -142,7 +152,7 @@ int run(int argc, char** argv) {
   options.odom_frame = pnh.param<std::string>("odom_frame", "odom");
   options.tf_rate = pnh.param("tf_rate", 50.0);
   options.state_publish_rate = pnh.param("state_publish_rate", 50.0);
-  options.clock_publish_rate = pnh.param("clock_publish_rate", 100.0);
+  options.clock_publish_rate = clock_frequency(pnh);
   options.foxglove_port = pnh.param("foxglove_port", -1);
   options.foxglove_address = pnh.param<std::string>("foxglove_address", "127.0.0.1");
   options.foxglove_rate = pnh.param("foxglove_rate", 30.0);

@@ -134,7 +134,7 @@ TEST(RosTypeChecksums, EveryBuiltTypeMatchesTheTable) {
   const auto upstream = readChecksumTable(kUpstreamPath);
   std::size_t matching = 0, own = 0;
   for (const auto& [type, entry] : built) {
-    // mechsim's own types (mechsim_msgs: /gazebo/step_simulation) have no upstream to match.
+    // mechsim's own types (mechsim_msgs: /mechsim/step_simulation) have no upstream to match.
     if (type.rfind("mechsim_msgs/", 0) == 0) {
       ++own;
       continue;

@@ -148,7 +148,7 @@ TEST_F(GazeboWorldNode, RefusesBadRequestsWithAMessageAndKeepsRunning) {
   {  // stepping while running
     mechsim_msgs::StepSimulation s;
     s.request.steps = 10;
-    ASSERT_TRUE(call("/gazebo/step_simulation", s));
+    ASSERT_TRUE(call("/mechsim/step_simulation", s));
     EXPECT_FALSE(s.response.success);
     messages.push_back(s.response.status_message);
   }

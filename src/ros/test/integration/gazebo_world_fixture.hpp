@@ -109,7 +109,7 @@ class GazeboWorldNode : public ::testing::Test {
   double step(std::uint64_t steps) {
     mechsim_msgs::StepSimulation s;
     s.request.steps = steps;
-    EXPECT_TRUE(call("/gazebo/step_simulation", s));
+    EXPECT_TRUE(call("/mechsim/step_simulation", s));
     EXPECT_TRUE(s.response.success) << s.response.status_message;
     return s.response.sim_time;
   }

@@ -199,7 +199,7 @@ void Pr2Abuse::gazebo_request(AbuseInputs& in) {
     default: {
       mechsim_msgs::StepSimulation s;  // while running: refused
       s.request.steps = in.chance(0.5) ? 1 : std::numeric_limits<std::uint64_t>::max();
-      const bool a = must_answer("/gazebo/step_simulation", s, "gazebo step_simulation");
+      const bool a = must_answer("/mechsim/step_simulation", s, "gazebo step_simulation");
       refused(a, s.response.success, s.response.status_message, "step_simulation while running");
       break;
     }
@@ -238,7 +238,7 @@ void Pr2Abuse::paused_phase_request(AbuseInputs& in) {
       const bool absurd = in.chance(0.3);
       s.request.steps = absurd ? (in.chance(0.5) ? std::numeric_limits<std::uint64_t>::max() : 1000000000000ULL)
                                : static_cast<std::uint64_t>(in.below(20));
-      const bool a = must_answer("/gazebo/step_simulation", s, "gazebo step_simulation");
+      const bool a = must_answer("/mechsim/step_simulation", s, "gazebo step_simulation");
       if (a && absurd && s.response.success) {
         inconsistent_.push_back("step_simulation of " + std::to_string(s.request.steps) + " steps accepted");
       }

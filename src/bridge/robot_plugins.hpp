@@ -1,11 +1,11 @@
 #pragma once
-// What a robot's <gazebo> plugins say about its ROS side (C++17: the node's files include it).
+// What a robot's <gazebo> plugins say about its ROS side (C++17-clean: the ROS 1 binding includes it).
 
 #include <string>
 
 #include "description/robot_model.hpp"
 
-namespace mechsim::ros {
+namespace mechsim::bridge {
 
 // The gazebo_ros_control plugin's <robotNamespace> ("" when it names none); *pr2 is set when the
 // PR2's own plugin (pr2_gazebo_plugins' gazebo_ros_controller_manager, which runs
@@ -32,4 +32,4 @@ inline bool has_controller_manager_plugin(const description::RobotModel& robot) 
   return false;
 }
 
-}  // namespace mechsim::ros
+}  // namespace mechsim::bridge
