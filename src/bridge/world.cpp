@@ -268,7 +268,7 @@ BridgeResult World::spawn(const SpawnRequest& request, std::string* status) {
     return refuse(e.what());
   }
   bridge.robot.name = name;
-  if (const std::string why = admit(bridge, X_WM, request.robot_namespace); !why.empty()) return refuse(why);
+  if (const std::string refusal = admit(bridge, X_WM, request.robot_namespace); !refusal.empty()) return refuse(refusal);
   if (status != nullptr) *status = "SpawnModel: Successfully spawned entity";
   return {};
 }

@@ -3,18 +3,9 @@
 // dynamic_reconfigure::Server with the PhysicsConfig that cfg/Physics.cfg generates). Its first
 // configuration is the world's (time step, update rate, gravity); a change of those goes to the
 // world as /gazebo/set_physics_properties takes it; the ODE solver fields are kept, with no effect.
-#include <dynamic_reconfigure/server.h>
-#include <mechsim_gazebo/PhysicsConfig.h>
-
-#include "ros/gazebo_world.hpp"
+#include "ros/gazebo_reconfigure.hpp"
 
 namespace mechsim::ros {
-
-struct GazeboWorld::Reconfigure {
-  explicit Reconfigure(const ::ros::NodeHandle& nh) : server(nh) {}
-  dynamic_reconfigure::Server<mechsim_gazebo::PhysicsConfig> server;
-  bool initialised = false;
-};
 
 void GazeboWorld::start_reconfigure() {
   reconfigure_ = std::make_unique<Reconfigure>(::ros::NodeHandle("/gazebo"));

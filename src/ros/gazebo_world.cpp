@@ -8,6 +8,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <std_srvs/Empty.h>
 
+#include "ros/gazebo_reconfigure.hpp"
 #include "ros/gazebo_topics.hpp"
 
 namespace mechsim::ros {
