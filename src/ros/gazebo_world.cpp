@@ -18,15 +18,22 @@ GazeboWorld::GazeboWorld(::ros::NodeHandle private_nh, GazeboWorldOptions option
   clock_pub_ = root_nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   // gazebo_ros sets /use_sim_time when nobody has.
   if (!root_nh_.hasParam("/use_sim_time")) root_nh_.setParam("/use_sim_time", true);
-  if (options_.enable_ros_network) {
-    advertise_world_services();
-    advertise_model_services();
-    advertise_light_services();
-    advertise_topics();
-  } else {
-    ROS_INFO_STREAM("mechsim: ~enable_ros_network is false: no /gazebo topics or services (only /clock)");
-  }
-  if (options_.step_service && options_.enable_ros_network) {
+  // The topics now (the loop publishes them from its first tick); the services once the world
+  // runs (start()), so that a client that sees them can call them.
+  if (options_.enable_ros_network) advertise_topics();
+  else ROS_INFO_STREAM("mechsim: ~enable_ros_network is false: no /gazebo topics or services (only /clock)");
+}
+
+GazeboWorld::~GazeboWorld() { stop(); }
+
+void GazeboWorld::start() {
+  world_.start(this);
+  if (!options_.enable_ros_network) return;
+  advertise_world_services();
+  advertise_model_services();
+  advertise_light_services();
+  start_reconfigure();
+  if (options_.step_service) {
     using Step = mechsim_msgs::StepSimulation;
     services_.push_back(root_nh_.advertiseService<Step::Request, Step::Response>(
         "/mechsim/step_simulation", [this](Step::Request& req, Step::Response& res) {
@@ -37,13 +44,6 @@ GazeboWorld::GazeboWorld(::ros::NodeHandle private_nh, GazeboWorldOptions option
           return true;
         }));
   }
-}
-
-GazeboWorld::~GazeboWorld() { stop(); }
-
-void GazeboWorld::start() {
-  world_.start(this);
-  if (options_.enable_ros_network) start_reconfigure();
 }
 
 void GazeboWorld::stop() {

@@ -27,6 +27,8 @@ bool tolerated(const sdf::Error& e) {
   switch (e.Code()) {
     case sdf::ErrorCode::URI_LOOKUP:  // a model:// include no model path holds: left out
       return true;
+    case sdf::ErrorCode::ELEMENT_MISSING:  // a <script> given as text, an old SDF form
+      return m.find("<script> element is missing a child <name>") != std::string::npos;
     case sdf::ErrorCode::ELEMENT_INVALID:
       return m.find("<script> element is missing a child <uri>") != std::string::npos ||
              m.find("<image><format> has invalid value") != std::string::npos ||

@@ -7,9 +7,11 @@
 #include <gmock/gmock.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 
+#include <dynamic_reconfigure/Config.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gazebo_msgs/ApplyJointEffort.h>
 #include <gazebo_msgs/DeleteLight.h>
@@ -184,7 +186,7 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsRunTheirSensorsAndPluginsBeforeAnySpawn
   Latest<nav_msgs::Odometry> odom(nh_, "/rover/odom");
   ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0 && odom.received() > 0; }, 20.0))
       << "the rover's diff drive plugin has no cmd_vel subscriber or odom; log:\n" << node_->log();
-  const double x0 = model_state("rover").pose.position.x;
+  const double x0 = model_state("rover").response.pose.position.x;
   geometry_msgs::Twist forward;
   forward.linear.x = 0.3;
   const double t0 = clock_now();
@@ -192,7 +194,7 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsRunTheirSensorsAndPluginsBeforeAnySpawn
     cmd.publish(forward);
     return clock_now() - t0 > 2.0;
   }, 30.0);
-  const double moved = model_state("rover").pose.position.x - x0;
+  const double moved = model_state("rover").response.pose.position.x - x0;
   EXPECT_GT(moved, 0.3) << "the rover moved " << moved << " m in 2 s at 0.3 m/s";
   EXPECT_NEAR(odom.get().pose.pose.position.x, moved, 0.1);
 }
@@ -270,7 +272,7 @@ TEST_F(GazeboWorldNode, TwoRobotsFromOneDescriptionDriveOnTheirOwnNamespaces) {
   ASSERT_TRUE(wait_until([&] { return r1.getNumSubscribers() > 0 && r2.getNumSubscribers() > 0; }, 10.0))
       << "each robot's diff drive subscribes under its own namespace";
   EXPECT_EQ(shared.getNumSubscribers(), 0u) << "no robot listens on the root /cmd_vel";
-  const double r1_x0 = model_state("r1").pose.position.x, r2_x0 = model_state("r2").pose.position.x;
+  const double r1_x0 = model_state("r1").response.pose.position.x, r2_x0 = model_state("r2").response.pose.position.x;
   geometry_msgs::Twist forward;
   forward.linear.x = 0.3;
   const double t0 = clock_now();
@@ -278,8 +280,8 @@ TEST_F(GazeboWorldNode, TwoRobotsFromOneDescriptionDriveOnTheirOwnNamespaces) {
     r1.publish(forward);
     return clock_now() - t0 > 2.0;
   }, 30.0);
-  EXPECT_GT(model_state("r1").pose.position.x - r1_x0, 0.3) << "r1 drove on /r1/cmd_vel";
-  EXPECT_NEAR(model_state("r2").pose.position.x - r2_x0, 0.0, 0.01) << "r2 stood still";
+  EXPECT_GT(model_state("r1").response.pose.position.x - r1_x0, 0.3) << "r1 drove on /r1/cmd_vel";
+  EXPECT_NEAR(model_state("r2").response.pose.position.x - r2_x0, 0.0, 0.01) << "r2 stood still";
 }
 
 // An rrbot-like arm fixed to the world: Gazebo's `world` link and a fixed joint to it.
@@ -304,9 +306,13 @@ TEST_F(GazeboWorldNode, ARobotFixedToTheWorldIsWhereItsSpawnPutsIt) {
   Latest<gazebo_msgs::LinkStates> links(nh_, "/gazebo/link_states");
   const gazebo_msgs::SpawnModel s = spawn("rrbot3", kFixedArm, pose_at(0.0, 2.0, 0.0));
   ASSERT_TRUE(s.response.success) << s.response.status_message;
-  EXPECT_NEAR(model_state("rrbot3").pose.position.y, 2.0, 1e-9);
-  step(10);
-  ASSERT_TRUE(wait_until([&] { return models.count() > 0 && links.received() > 0; }, 10.0));
+  EXPECT_NEAR(model_state("rrbot3").response.pose.position.y, 2.0, 1e-9);
+  ASSERT_TRUE(wait_until(
+      [&] {
+        step(1);
+        return models.count() > 0 && links.received() > 0;
+      },
+      10.0));
   const gazebo_msgs::ModelStates m = models.latest();
   const std::size_t k = index_of(m.name, "rrbot3");
   ASSERT_LT(k, m.name.size());
@@ -407,13 +413,24 @@ TEST_F(GazeboWorldNode, OffersExactlyGazeboRosApi) {
   EXPECT_EQ(g.published, kGazeboPublished);
   EXPECT_EQ(g.subscribed, kGazeboSubscribed);
 
-  // The physics over dynamic_reconfigure: the world's gravity, and a change of it.
+  // The physics over dynamic_reconfigure, as dynparam changes it: the configuration the server
+  // published (the world's: 1 ms, 1000 steps/s, its gravity), one value changed, sent whole.
+  Latest<dynamic_reconfigure::Config> updates(nh_, "/gazebo/parameter_updates");
+  ASSERT_TRUE(wait_until([&] { return updates.received() > 0; }, 10.0));
   dynamic_reconfigure::Reconfigure r;
-  dynamic_reconfigure::DoubleParameter gz;
-  gz.name = "gravity_z";
-  gz.value = -5.0;
-  r.request.config.doubles.push_back(gz);
+  r.request.config = updates.get();
+  auto value = [&](const std::string& name) {
+    for (const auto& d : updates.get().doubles)
+      if (d.name == name) return d.value;
+    return std::nan("");
+  };
+  EXPECT_DOUBLE_EQ(value("time_step"), 0.001);
+  EXPECT_DOUBLE_EQ(value("max_update_rate"), 1000.0);
+  EXPECT_DOUBLE_EQ(value("gravity_z"), -9.81);
+  for (auto& d : r.request.config.doubles)
+    if (d.name == "gravity_z") d.value = -5.0;
   ASSERT_TRUE(call("/gazebo/set_parameters", r));
+  EXPECT_TRUE(wait_until([&] { return value("gravity_z") == -5.0; }, 5.0)) << "parameter_updates has the change";
   gazebo_msgs::GetPhysicsProperties p;
   ASSERT_TRUE(call("/gazebo/get_physics_properties", p));
   EXPECT_DOUBLE_EQ(p.response.gravity.z, -5.0);
