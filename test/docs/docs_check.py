@@ -25,6 +25,7 @@ import html.parser
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -278,20 +279,30 @@ def commands(args):
         for b in page_blocks:
             print(f"== {b.where()} (in {tree}):\n{b.text}", flush=True)
             t0 = time.monotonic()
+            # The block runs in a process group of its own, which is ended afterwards (also after a
+            # time-out), so that nothing it started outlives it.
+            p = subprocess.Popen(["/bin/bash", "-e", "-o", "pipefail", "-c", b.text], cwd=tree, env=env,
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
             try:
-                p = subprocess.run(["/bin/bash", "-e", "-o", "pipefail", "-c", b.text], cwd=tree, env=env,
-                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=args.timeout,
-                                   start_new_session=True)
-                status, out = p.returncode, p.stdout.decode("utf-8", "replace")
-            except subprocess.TimeoutExpired as e:
-                status, out = f"timed out after {args.timeout} s", (e.stdout or b"").decode("utf-8", "replace")
+                raw, _ = p.communicate(timeout=args.timeout)
+                status = p.returncode
+            except subprocess.TimeoutExpired:
+                os.killpg(p.pid, signal.SIGKILL)
+                raw, _ = p.communicate()
+                status = f"timed out after {args.timeout:.0f} s"
+            try:
+                os.killpg(p.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+            out = raw.decode("utf-8", "replace")
             tail = "\n".join(out.rstrip().split("\n")[-25:])
             dt = time.monotonic() - t0
             if status == 0:
                 print(f"   ok, {dt:.1f} s", flush=True)
             else:
                 failed += 1
-                print(f"FAIL {b.where()}: exit status {status} after {dt:.1f} s; the last lines:\n{tail}", flush=True)
+                what = f"exit status {status}" if isinstance(status, int) else status
+                print(f"FAIL {b.where()}: {what} after {dt:.1f} s; the last lines:\n{tail}", flush=True)
     print(f"{args.page}: {len(page_blocks) - failed} of {len(page_blocks)} runnable blocks ran as printed")
     return 1 if failed else 0
 
