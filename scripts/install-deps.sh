@@ -18,6 +18,9 @@ packages=(
   libboost-dev chromium
   # mechsim sweep --slurm and its test (a single-node Slurm started by the test itself).
   slurm-wlm munge
+  # The documentation site (scripts/docs.sh) and its test docs_site (mkdocs build --strict):
+  # Debian's mkdocs with the Material theme; python3 runs the docs tests (test/docs).
+  python3 mkdocs mkdocs-material
 )
 with_ros=0
 for arg in "$@"; do

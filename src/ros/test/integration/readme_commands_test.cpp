@@ -1,5 +1,5 @@
-// The READMEs' ROS commands, run as printed (bash in the repository's root, the command text
-// taken from the test's table only after checking that the README holds it verbatim), against
+// The documentation's ROS commands, run as printed (bash in the repository's root, the command
+// text taken from the test's table only after checking that the page holds it verbatim), against
 // the test's own master on loopback; and scripts/install-deps.sh --with-ros checked against what
 // the node exchanges and the tools import. Commands that never end by themselves (roslaunch,
 // rostopic pub -r, rostopic echo without -n) run in the background and are stopped (their
@@ -150,11 +150,13 @@ TEST(RosDeps, InstallDepsListsThePythonModuleOfEveryRosPackageTheNodeExchanges) 
   EXPECT_TRUE(fs::exists("/usr/bin/rosrun")) << "rosrun (rosbash) is not installed";
 }
 
-// README.md's "The ROS way" and src/ros/README.md's "Python tools" block, on the CC8.
+// docs/gazebo-ros1.md's "The ROS way" (its block marked `<!-- runnable: ros_integration_test
+// ReadmeCommands -->`: test/docs/docs_check.py checks that this test runs each of its lines) and
+// src/ros/README.md's "Python tools" block, on the CC8.
 TEST(ReadmeCommands, Cc8SessionOfTheReadmesRunsAsPrinted) {
   if (!build_is_build_release()) GTEST_SKIP() << "the READMEs' commands name build/release; this build is " << MECHSIM_BINARY_DIR;
   ASSERT_TRUE(::ros::master::check());
-  ReadmeShell top("README.md");
+  ReadmeShell top("docs/gazebo-ros1.md");
   top.setup("export ROS_PACKAGE_PATH=$PWD/robots:$PWD/build/release/ros_package");
   ChildProcess& launch = top.start("PATH=/usr/bin:$PATH roslaunch mechsim_cc8 cc8_mechsim.launch paused:=false");
   ASSERT_TRUE(wait_until([] { return running_cc8_controllers() == 2; }, 60.0)) << launch.log();
