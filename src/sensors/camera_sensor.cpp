@@ -143,8 +143,8 @@ std::vector<Tap> undistort_map(const description::DistortionSpec& d, double hfov
     for (int c = 0; c < out.width; ++c) {
       const double mx = out.cx + (c - out.cx) * scale_x, my = out.cy + (r - out.cy) * scale_y;
       double x = 0, y = 0;
-      const bool found = undistort_point(d, (mx - ccx) * W * kx, (my - ccy) * H * ky, x, y);
-      const double px = ccx + x / (W * kx), py = ccy + y / (H * ky);
+      const bool found = undistort_point(d, (mx - ccx) * kx, (my - ccy) * ky, x, y);
+      const double px = ccx + x / kx, py = ccy + y / ky;
       float u = 0.0f, v = 0.0f;
       if (found && px >= -0.5 && px <= W - 0.5 && py >= -0.5 && py <= H - 0.5) {
         u = std::clamp(static_cast<float>(src.fx * (px - out.cx) / out.fx + src.cx), 0.0f, static_cast<float>(w - 1));
