@@ -39,7 +39,10 @@ std::string gazebo_name(const physics::PhysicsModel& model, int geom) {
     return model.robot_name() + "::" + link + "::" + link + "_collision" + (index == "0" ? "" : "_" + index);
   }
   if (n == "ground") return "ground_plane::link::collision";
-  if (n.rfind("box:", 0) == 0) return std::string(n.substr(4)) + "::link::collision";
+  // A world object: an SDF world's shapes are named model::link::collision already; a scenario's
+  // box by its name alone.
+  if (n.rfind("box:", 0) == 0)
+    return n.find("::") != std::string_view::npos ? std::string(n.substr(4)) : std::string(n.substr(4)) + "::link::collision";
   if (n.empty()) return "world::link::collision";
   return std::string(n) + "::link::collision";
 }
@@ -63,8 +66,15 @@ void ContactSensor::bind(const physics::PhysicsModel& model) {
   // Gazebo's URDF names refer to.
   std::vector<std::pair<std::string, std::string>> wanted;  // (link, geom name or prefix)
   if (contact.targets.size() == contact.collisions.size() && !contact.targets.empty()) {
-    for (const description::ContactSpec::Target& t : contact.targets)
-      wanted.emplace_back(t.link, physics_name(t.link) + "/collision/" + (t.index >= 0 ? std::to_string(t.index) : ""));
+    for (std::size_t k = 0; k < contact.targets.size(); ++k) {
+      const description::ContactSpec::Target& t = contact.targets[k];
+      std::string name = physics_name(t.link) + "/collision/" + (t.index >= 0 ? std::to_string(t.index) : "");
+      // An SDF model the world holds as an object (one shape): its geom is "box:<model>::<link>::<collision>".
+      const std::string object = "box:" + physics_name(t.link) + "::" + contact.collisions[k];
+      for (int g = 0; g < model.geom_count() && t.index >= 0; ++g)
+        if (model.geom_name(g) == object) name = object;
+      wanted.emplace_back(t.link, name);
+    }
   } else {
     for (const std::string& collision : contact.collisions) {
       const std::string link = collision_link(collision);
