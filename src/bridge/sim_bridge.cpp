@@ -458,6 +458,8 @@ const sensors::SensorReading& SimBridge::sensor_reading(std::size_t i) const {
 
 void SimBridge::set_sensor_enabled(std::size_t i, bool enabled) { impl_->simulation->sensors().set_enabled(i, enabled); }
 
+void SimBridge::request_sensor_sample(std::size_t i) { impl_->simulation->sensors().request(i); }
+
 std::vector<sensors::CameraInfo> SimBridge::camera_infos(std::size_t i) const {
   std::vector<sensors::CameraInfo> out;
   if (const auto* camera = dynamic_cast<const sensors::CameraSensor*>(&impl_->simulation->sensors().sensor(i)))

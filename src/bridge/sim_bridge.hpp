@@ -316,6 +316,8 @@ class SimBridge {
   const description::SensorSpec& sensor_spec(std::size_t i) const;
   const sensors::SensorReading& sensor_reading(std::size_t i) const;
   void set_sensor_enabled(std::size_t i, bool enabled);
+  // Samples sensor i at the next tick, enabled or not, due or not (a triggered camera's frame).
+  void request_sensor_sample(std::size_t i);
   // A camera sensor's CameraInfo per lens, known without rendering (empty for other sensors).
   std::vector<sensors::CameraInfo> camera_infos(std::size_t i) const;
   // Declared sensors mechsim does not simulate: "SOURCE:LINE: sensor 'NAME': reason", one line

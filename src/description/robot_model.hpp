@@ -60,6 +60,9 @@ struct Collision {
   std::string name;
   Pose origin;  // X_LG
   Geometry geometry;
+  // What a laser reports as the intensity of a hit on this shape (SDF <collision><laser_retro>);
+  // absent: the link's gazebo <laserRetro>, else 0.
+  std::optional<double> laser_retro;
 };
 
 struct Link {
@@ -148,6 +151,9 @@ struct GazeboLinkProperties {
   std::optional<double> mu1, mu2, kp, kd, min_depth, max_vel;
   std::optional<bool> self_collide;
   std::optional<bool> gravity;  // also set (negated) by <turnGravityOff>
+  // <laserRetro> (sdformat's URDF name; <laser_retro> is taken too): the intensity lasers report
+  // for the link's collision shapes.
+  std::optional<double> laser_retro;
   std::string material;         // <material>NAME</material> or <material value="NAME"/>
   int line = 0;                 // the first <gazebo reference> element naming the link
 };

@@ -49,12 +49,28 @@ struct RayAxis {
   int count() const;                        // ranges along the axis: samples * resolution, >= 1
 };
 
+// What a ray sensor's ROS plugin makes of its rays.
+enum class RayOutput {
+  Scan,        // the sensor's scan (gazebo_ros_laser, gazebo_ros_gpu_laser, or no plugin): LaserScan
+  Range,       // gazebo_ros_range: the shortest of its rays (sensor_msgs/Range)
+  PointCloud,  // gazebo_ros_block_laser: a point per interpolated ray with its intensity (sensor_msgs/PointCloud)
+};
+
 struct RaySpec {
   RayAxis horizontal, vertical;  // vertical: one sample for a planar scanner
   double range_min = 0.0, range_max = 0.0;  // m
   double range_resolution = 0.0;            // m; 0: not quantised
   NoiseSpec noise;                          // on each range (m)
   bool gpu = false;                         // gpu_ray / gpu_lidar: the same rays (see sensors/README.md)
+  RayOutput output = RayOutput::Scan;
+  // gazebo_ros_range and gazebo_ros_block_laser: the plugin's <gaussianNoise> (m; the block laser
+  // adds it to each coordinate and to the intensity). They read the sensor's raw rays, without the
+  // sensor's own <noise>.
+  double plugin_noise = 0.0;
+  // gazebo_ros_range: <fov> (rad, reported only) and <radiation> (ultrasound: 0, anything else
+  // infrared: 1, as sensor_msgs/Range numbers them).
+  double fov = 0.05;
+  int radiation = 0;
 };
 
 struct ImuSpec {
@@ -73,7 +89,16 @@ struct ImuSpec {
 // collisions <link>_collision, <link>_collision_1, ... (and <parent>_fixed_joint_lump__<link>_collision
 // when it lumps fixed links); mechsim resolves these names to the link's collision shapes.
 struct ContactSpec {
-  std::vector<std::string> collisions;
+  std::vector<std::string> collisions;  // as written
+  // The collision shapes each name resolves to, when the description knows them: a link's
+  // collision by its own name (an SDF model's, or a URDF <collision name>), `index` its position
+  // in Link::collisions; -1: every collision of `link` (a Gazebo-style URDF name). Empty: resolved
+  // by the sensor against the physics from the names alone.
+  struct Target {
+    std::string link;
+    int index = -1;
+  };
+  std::vector<Target> targets;
 };
 
 struct ForceTorqueSpec {
@@ -99,6 +124,9 @@ struct GroundTruthSpec {
 struct DistortionSpec {
   double k1 = 0.0, k2 = 0.0, k3 = 0.0, p1 = 0.0, p2 = 0.0;
   double center_x = 0.5, center_y = 0.5;
+  // Gazebo scales a barrel-distorted image (k1 < 0) up until its black corners are gone; the
+  // camera plugins' <borderCrop> (default true) can turn that off.
+  bool crop = true;
   bool active() const { return k1 != 0.0 || k2 != 0.0 || k3 != 0.0 || p1 != 0.0 || p2 != 0.0; }
 };
 
@@ -110,6 +138,8 @@ struct CameraLens {
   Pose pose;                      // X_SC: <camera><pose> in the sensor frame
   double horizontal_fov = 1.047;  // rad, in (0, pi)
   int width = 320, height = 240;  // pixels
+  // <image><format> as written (Gazebo's names: R8G8B8, L8, L16, R16G16B16, B8G8R8, BAYER_*8,
+  // FLOAT32, ... and their *_INT* aliases); one Gazebo does not know is kept with a warning.
   std::string format = "R8G8B8";
   double near = 0.1, far = 100.0;  // m, 0 < near < far
   NoiseSpec noise;                 // on each colour channel, in [0, 1] units (Gazebo's image noise)
@@ -127,11 +157,16 @@ struct CameraSpec {
   double focal_length = 0.0, cx = 0.0, cy = 0.0, cx_prime = 0.0;  // pixels
   double hack_baseline = 0.0;                                       // m: P[3] = -fx * baseline
   std::array<double, 5> ros_distortion{};                           // D: k1 k2 t1 t2 k3 as the plugin says
-  double point_cloud_cutoff = 0.4, point_cloud_cutoff_max = 5.0;    // m: depth outside is NaN
+  // m: depth at or below the cutoff, or at or beyond the maximum, is NaN (gazebo_ros_depth_camera
+  // has no maximum: +inf; gazebo_ros_openni_kinect's defaults are 0.4 and 5).
+  double point_cloud_cutoff = 0.4, point_cloud_cutoff_max = 5.0;
   // ROS names, resolved against <robotNamespace>/<cameraName> (absolute names kept); per lens
-  // for a multicamera (image, info), one set otherwise. Empty: the plugin publishes none.
+  // for a multicamera (image, info), one set otherwise; an empty name: that lens publishes
+  // nothing (gazebo_ros_multicamera publishes only its cameras named left and right).
   std::vector<std::string> image_topics, info_topics;
   std::string depth_topic, depth_info_topic, points_topic;
+  // gazebo_ros_triggered_camera: one frame per std_msgs/Empty on this topic, none otherwise.
+  std::string trigger_topic;
 };
 
 // A sensor mechsim reads but cannot simulate; `reason` says why (mechsim check lists it).

@@ -132,6 +132,8 @@ class Planner {
     }
     if (g.gravity && !*g.gravity && !massless(link)) plan_.gravity_off_links.push_back(link.name);
     std::vector<PlannedGeom>& out = body < 0 ? plan_.world_geoms : plan_.bodies[body].geoms;
+    std::optional<double> link_retro = g.laser_retro;
+    for (std::size_t i = 0; i < link.collisions.size() && !link_retro; ++i) link_retro = link.collisions[i].laser_retro;
     for (std::size_t i = 0; i < link.collisions.size(); ++i) {
       if (const std::string why = degenerate(link.collisions[i].geometry); !why.empty()) {
         plan_.warnings.push_back("link '" + link.name + "': collision " + std::to_string(i) + " left out: " + why +
@@ -147,6 +149,7 @@ class Planner {
       geom.friction = mu;
       geom.wheel = is_wheel(link, link.collisions[i]);
       geom.narrow_wheel = is_narrow_wheel(link, link.collisions[i]);
+      geom.laser_retro = link.collisions[i].laser_retro.value_or(g.laser_retro.value_or(0.0));
       out.push_back(std::move(geom));
     }
     if (!options_.visuals) return;
@@ -159,6 +162,7 @@ class Planner {
       geom.geometry = link.visuals[i].geometry;
       geom.visual = true;
       geom.rgba = link.visuals[i].rgba;
+      geom.laser_retro = link_retro.value_or(0.0);
       out.push_back(std::move(geom));
     }
   }

@@ -38,6 +38,9 @@ struct PlannedGeom {
   bool visual = false;
   bool self_collide = false;  // the source link's gazebo <selfCollide>
   double friction = 1.0;      // sliding
+  // What lasers report hitting it (Gazebo's laser_retro): the collision's own, else the link's
+  // gazebo <laserRetro>; a visual takes the link's, else its first collision's that has one.
+  double laser_retro = 0.0;
   // A wheel: a collision cylinder whose link turns about the cylinder's axis on a revolute or
   // continuous joint (the wheel-soil model acts on these). A narrow one is no longer than its
   // radius (see ContactDefaults::point_contact_wheels).

@@ -387,6 +387,12 @@ Pose Physics::body_pose(int b) const {
           {d->xquat[4 * b], d->xquat[4 * b + 1], d->xquat[4 * b + 2], d->xquat[4 * b + 3]}};
 }
 
+Vec3 Physics::body_com(int b) const {
+  refresh_kinematics();
+  const mjData* d = data_->d;
+  return {d->xipos[3 * b], d->xipos[3 * b + 1], d->xipos[3 * b + 2]};
+}
+
 Twist Physics::body_twist(int b) const { return point_twist(b, body_pose(b).position); }
 
 Twist Physics::point_twist(int b, const Vec3& p_W) const {
@@ -511,9 +517,9 @@ double Physics::ground_height(double x, double y) const {
 }
 
 void Physics::cast_rays(const RayFilter& filter, const Vec3& origin, const Vec3* directions, std::size_t count,
-                        double near, double far, double* ranges) const {
+                        double near, double far, double* ranges, int* hit_geoms) const {
   refresh_kinematics();
-  detail::cast_rays(data_->m, data_->d, filter, origin, directions, count, near, far, ranges);
+  detail::cast_rays(data_->m, data_->d, filter, origin, directions, count, near, far, ranges, hit_geoms);
 }
 
 Acceleration Physics::link_acceleration(std::size_t link, const Vec3& p_L) const {

@@ -273,6 +273,8 @@ class Physics {
   // its origin, world frame. `body` must be in [1, body_count()).
   description::Pose body_pose(int body) const;
   Twist body_twist(int body) const;
+  // The body's centre of mass, world frame (m).
+  description::Vec3 body_com(int body) const;
   // Sets a body that floats on a free joint of its own (a world's free object or passive model's
   // root) to pose X_WB with twist V (world frame, at its origin); false, changing nothing, for a
   // body without one.
@@ -317,9 +319,10 @@ class Physics {
   // Casts `count` rays from `origin` along the unit `directions` (world frame) against the shapes
   // of `filter` (ray_cast.hpp), from `near` to `far` (m) along each: ranges[i] is the distance
   // from the origin to the first hit, +inf when nothing is hit within [near, far]. Nothing nearer
-  // than `near` is seen (Gazebo's rays start at the minimum range).
+  // than `near` is seen (Gazebo's rays start at the minimum range). `hit_geoms`, when given, gets
+  // each ray's hit geom (MuJoCo id, PhysicsModel::geom_laser_retro), -1 where nothing is hit.
   void cast_rays(const RayFilter& filter, const description::Vec3& origin, const description::Vec3* directions,
-                 std::size_t count, double near, double far, double* ranges) const;
+                 std::size_t count, double near, double far, double* ranges, int* hit_geoms = nullptr) const;
   // Acceleration of the point p_L (link frame, m) fixed to link `link` over the last step, in the
   // world frame (MuJoCo's post-constraint recursive Newton-Euler: a few microseconds; not for
   // every tick of a large model).

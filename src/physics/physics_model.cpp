@@ -332,6 +332,21 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     d.active = options.differential == DifferentialMode::PluginLaw;
     pm->differential_ = d;
   }
+  // Laser retro-reflectivity per compiled geom: the planned geoms' (robot, other robots, passive
+  // models) and the world objects'; 0 for the rest (ground, terrain).
+  pm->geom_laser_retro_.assign(static_cast<std::size_t>(m->ngeom), 0.0f);
+  const auto set_retro = [&](const std::string& name, double retro) {
+    const int g = retro != 0.0 ? mj_name2id(m, mjOBJ_GEOM, name.c_str()) : -1;
+    if (g >= 0) pm->geom_laser_retro_[static_cast<std::size_t>(g)] = static_cast<float>(retro);
+  };
+  const auto plan_retro = [&](const BodyPlan& p) {
+    for (const PlannedGeom& g : p.world_geoms) set_retro(g.name, g.laser_retro);
+    for (const PlannedBody& b : p.bodies)
+      for (const PlannedGeom& g : b.geoms) set_retro(g.name, g.laser_retro);
+  };
+  plan_retro(plan);
+  for (const BodyPlan& p : plan.passive) plan_retro(p);
+  for (const WorldBox& b : options.world.boxes) set_retro("box:" + b.name, b.laser_retro);
   compile_time += timer.lap();
   pm->build_times_.mjcf = mjcf_time;
   pm->build_times_.compile = compile_time;
@@ -358,6 +373,11 @@ std::string_view PhysicsModel::geom_name(int geom) const {
   if (geom < 0 || geom >= impl_->model->ngeom) return {};
   const char* n = mj_id2name(impl_->model, mjOBJ_GEOM, geom);
   return n != nullptr ? std::string_view(n) : std::string_view();
+}
+
+double PhysicsModel::geom_laser_retro(int geom) const {
+  return geom < 0 || static_cast<std::size_t>(geom) >= geom_laser_retro_.size() ? 0.0
+                                                                                : geom_laser_retro_[static_cast<std::size_t>(geom)];
 }
 
 int PhysicsModel::geom_body(int geom) const {

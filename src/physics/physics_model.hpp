@@ -146,6 +146,9 @@ class PhysicsModel {
   // "box:<name>"), "" when unnamed or out of range; and its MuJoCo body (-1 when out of range).
   std::string_view geom_name(int geom) const;
   int geom_body(int geom) const;
+  // What a laser reports as the intensity of a hit on the geom (Gazebo's laser_retro of the shape
+  // it came from: RobotModel's Collision/GazeboLinkProperties, WorldBox); 0 out of range.
+  double geom_laser_retro(int geom) const;
 
   struct Impl;  // MuJoCo objects; defined in physics/mujoco_internal.hpp
   const Impl& impl() const { return *impl_; }
@@ -164,6 +167,7 @@ class PhysicsModel {
   std::vector<PassiveShape> passive_shapes_;
   std::vector<std::string> dropped_joints_, warnings_, gravity_off_links_;
   std::vector<int> gravity_off_bodies_;
+  std::vector<float> geom_laser_retro_;  // by MuJoCo geom id
   bool fixed_to_world_ = false;
 };
 

@@ -65,6 +65,7 @@ struct WorldBox {
   double mass = 1.0;                     // kg, > 0; free objects only (uniform density; a mesh's
                                          // as if it filled its bounds)
   bool fixed = true;
+  double laser_retro = 0.0;              // what lasers report hitting it (SDF <laser_retro>)
 };
 
 // A passive articulated object in the world (an SDF world's moving model of several links): its

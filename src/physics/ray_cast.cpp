@@ -240,13 +240,15 @@ bool may_reach(const mjModel* m, const mjData* d, int g, const description::Vec3
 }  // namespace
 
 void cast_rays(const mjModel* m, const mjData* d, const RayFilter& filter, const description::Vec3& origin,
-               const description::Vec3* directions, std::size_t count, double near, double far, double* ranges) {
+               const description::Vec3* directions, std::size_t count, double near, double far, double* ranges,
+               int* hit_geoms) {
   // Shape by shape over all rays: a shape no ray can reach is dropped once for the whole call
   // (a planar scan passes by most of a robot). ranges[i] holds ray i's nearest hit so far,
   // measured from its start at `near`; `none` (just beyond far - near) means no hit yet.
   const double reach = far - near;
   const double none = std::nextafter(reach, kInf);
   for (std::size_t i = 0; i < count; ++i) ranges[i] = none;
+  if (hit_geoms != nullptr) std::fill(hit_geoms, hit_geoms + count, -1);
   double normal[3];
   const double* plane = scan_plane(directions, count, normal) ? normal : nullptr;
   // Gazebo's rays start at the sensor's minimum range: nothing nearer is seen.
@@ -259,8 +261,11 @@ void cast_rays(const mjModel* m, const mjData* d, const RayFilter& filter, const
     pnt[1] = origin.y + near * u.y;
     pnt[2] = origin.z + near * u.z;
   };
-  const auto keep = [&](std::size_t i, double x) {
-    if (x >= 0.0 && x <= reach && x < ranges[i]) ranges[i] = x;
+  const auto keep = [&](std::size_t i, double x, int g) {
+    if (x >= 0.0 && x <= reach && x < ranges[i]) {
+      ranges[i] = x;
+      if (hit_geoms != nullptr) hit_geoms[i] = g;
+    }
   };
   mjtNum pnt[3], vec[3];
   for (const int g : filter.geoms) {
@@ -268,7 +273,7 @@ void cast_rays(const mjModel* m, const mjData* d, const RayFilter& filter, const
     for (std::size_t i = 0; i < count; ++i) {
       ray(i, pnt, vec);
       if (!may_hit(m, d, g, pnt, vec, std::min(ranges[i], reach))) continue;
-      keep(i, mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g, pnt, vec, m->geom_type[g]));
+      keep(i, mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g, pnt, vec, m->geom_type[g]), g);
     }
   }
   for (std::size_t k = 0; k < filter.meshes.size(); ++k) {
@@ -280,13 +285,13 @@ void cast_rays(const mjModel* m, const mjData* d, const RayFilter& filter, const
       if (!may_hit(m, d, g, pnt, vec, best)) continue;
       double lp[3], lv[3];
       to_geom_frame(d, g, pnt, vec, lp, lv);
-      keep(i, filter.mesh_bvhs[k]->intersect(lp, lv, best));
+      keep(i, filter.mesh_bvhs[k]->intersect(lp, lv, best), g);
     }
   }
   for (const int g : filter.hfields) {
     for (std::size_t i = 0; i < count; ++i) {
       ray(i, pnt, vec);
-      keep(i, ray_hfield_geom(m, d, g, pnt, vec));
+      keep(i, ray_hfield_geom(m, d, g, pnt, vec), g);
     }
   }
   for (std::size_t i = 0; i < count; ++i) ranges[i] = ranges[i] <= reach ? near + ranges[i] : kInf;

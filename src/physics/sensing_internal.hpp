@@ -17,7 +17,8 @@ double ray_hfield_geom(const mjModel* m, const mjData* d, int geom, const mjtNum
 
 // Physics::cast_rays on fresh kinematics.
 void cast_rays(const mjModel* m, const mjData* d, const RayFilter& filter, const description::Vec3& origin,
-               const description::Vec3* directions, std::size_t count, double near, double far, double* ranges);
+               const description::Vec3* directions, std::size_t count, double near, double far, double* ranges,
+               int* hit_geoms = nullptr);
 
 // Physics::link_acceleration and joint_wrench: run MuJoCo's post-constraint RNE on fresh
 // kinematics (it fills cacc, cfrc_int and cfrc_ext), then read body `body` at world point p.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -70,13 +71,38 @@ void fill_imu(const sensors::ImuReading& in, sensor_msgs::Imu& out) {
   copy9(in.linear_acceleration_covariance, out.linear_acceleration_covariance);
 }
 
-void fill_contacts(const sensors::ContactsReading& in, gazebo_msgs::ContactsState& out) {
+void fill_range(const sensors::RangeReading& in, sensor_msgs::Range& out) {
+  out.radiation_type = static_cast<std::uint8_t>(in.radiation);
+  out.field_of_view = static_cast<float>(in.field_of_view);
+  out.min_range = static_cast<float>(in.min_range);
+  out.max_range = static_cast<float>(in.max_range);
+  out.range = static_cast<float>(in.range);
+}
+
+void fill_block_cloud(const sensors::PointCloudReading& in, sensor_msgs::PointCloud& out) {
+  out.points.resize(in.points.size());
+  for (std::size_t i = 0; i < in.points.size(); ++i) {
+    out.points[i].x = static_cast<float>(in.points[i].x);
+    out.points[i].y = static_cast<float>(in.points[i].y);
+    out.points[i].z = static_cast<float>(in.points[i].z);
+  }
+  out.channels.resize(1);
+  out.channels[0].name.clear();
+  out.channels[0].values.assign(in.intensities.begin(), in.intensities.end());
+}
+
+void fill_contacts(const sensors::ContactsReading& in, double stamp, gazebo_msgs::ContactsState& out) {
   const std::size_t count = std::min(in.count, in.states.size());
   out.states.resize(count);
+  const ::ros::Time time(stamp);
+  char nsec[16];
+  std::snprintf(nsec, sizeof nsec, "%09u", time.nsec);
   for (std::size_t k = 0; k < count; ++k) {
     const sensors::ContactState& s = in.states[k];
     gazebo_msgs::ContactState& d = out.states[k];
-    d.info = s.info;
+    // gazebo_ros_bumper's debug line, with ros::Time's "sec.nsec".
+    d.info = "Debug:  i:(" + std::to_string(k) + "/" + std::to_string(count) + ")     my geom:" + s.collision1_name +
+             "   other geom:" + s.collision2_name + "         time:" + std::to_string(time.sec) + "." + nsec + "\n";
     d.collision1_name = s.collision1_name;
     d.collision2_name = s.collision2_name;
     d.wrenches.resize(s.wrenches.size());
@@ -114,10 +140,38 @@ void fill_odometry(const sensors::GroundTruthReading& in, nav_msgs::Odometry& ou
 }
 
 std::string image_encoding(const std::string& f) {
+  if (f == "R8G8B8" || f == "RGB_INT8") return "rgb8";
   if (f == "B8G8R8" || f == "BGR_INT8") return "bgr8";
   if (f == "L8" || f == "L_INT8") return "mono8";
-  return "rgb8";
+  if (f == "L16" || f == "L_INT16" || f == "L_UINT16") return "mono16";
+  if (f == "R16G16B16" || f == "RGB_INT16" || f == "RGB_UINT16") return "rgb16";
+  if (f == "BAYER_RGGB8") return "bayer_rggb8";
+  if (f == "BAYER_BGGR8") return "bayer_bggr8";
+  if (f == "BAYER_GBRG8") return "bayer_gbrg8";
+  if (f == "BAYER_GRBG8") return "bayer_grbg8";
+  return "bgr8";
 }
+
+namespace {
+
+// The colour channel (0 r, 1 g, 2 b) a Bayer mosaic keeps at (row, column).
+int bayer_channel(const std::string& encoding, std::size_t row, std::size_t col) {
+  const char* pattern = encoding.c_str() + 6;  // "bayer_rggb8" -> "rggb8"
+  const char c = pattern[(row % 2) * 2 + (col % 2)];
+  return c == 'r' ? 0 : c == 'g' ? 1 : 2;
+}
+
+std::uint8_t luma(const std::uint8_t* p) {
+  // ITU-R BT.601 luma, as Gazebo's L8 format renders grey.
+  return static_cast<std::uint8_t>(std::lround(0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]));
+}
+
+void put16(std::uint8_t* at, unsigned v) {  // little-endian
+  at[0] = static_cast<std::uint8_t>(v & 0xffu);
+  at[1] = static_cast<std::uint8_t>(v >> 8);
+}
+
+}  // namespace
 
 void fill_image(const sensors::CameraImage& in, const std::string& encoding, sensor_msgs::Image& out) {
   const std::size_t pixels = static_cast<std::size_t>(in.info.width) * static_cast<std::size_t>(in.info.height);
@@ -134,10 +188,27 @@ void fill_image(const sensors::CameraImage& in, const std::string& encoding, sen
   if (encoding == "mono8") {
     out.step = out.width;
     out.data.resize(pixels);
-    // ITU-R BT.601 luma, as Gazebo's L8 format renders grey.
-    for (std::size_t i = 0; i < pixels; ++i)
-      out.data[i] = static_cast<std::uint8_t>(
-          std::lround(0.299 * src[3 * i] + 0.587 * src[3 * i + 1] + 0.114 * src[3 * i + 2]));
+    for (std::size_t i = 0; i < pixels; ++i) out.data[i] = luma(src + 3 * i);
+    return;
+  }
+  // MuJoCo's renderer reads 8 bits per channel: a 16-bit image spreads them over the full range.
+  if (encoding == "mono16") {
+    out.step = out.width * 2;
+    out.data.resize(pixels * 2);
+    for (std::size_t i = 0; i < pixels; ++i) put16(&out.data[2 * i], 257u * luma(src + 3 * i));
+    return;
+  }
+  if (encoding == "rgb16") {
+    out.step = out.width * 6;
+    out.data.resize(pixels * 6);
+    for (std::size_t i = 0; i < pixels * 3; ++i) put16(&out.data[2 * i], 257u * src[i]);
+    return;
+  }
+  if (encoding.rfind("bayer_", 0) == 0) {
+    out.step = out.width;
+    out.data.resize(pixels);
+    const std::size_t w = out.width;
+    for (std::size_t i = 0; i < pixels; ++i) out.data[i] = src[3 * i + static_cast<std::size_t>(bayer_channel(encoding, i / w, i % w))];
     return;
   }
   out.step = out.width * 3;
@@ -174,7 +245,7 @@ void fill_camera_info(const sensors::CameraInfo& in, sensor_msgs::CameraInfo& ou
   out.roi = sensor_msgs::RegionOfInterest();
 }
 
-void fill_point_cloud(const sensors::CameraImage& in, sensor_msgs::PointCloud2& out) {
+void fill_point_cloud(const sensors::CameraImage& in, const std::string& encoding, sensor_msgs::PointCloud2& out) {
   if (out.fields.size() != 4) {
     out.fields.resize(4);
     const char* names[4] = {"x", "y", "z", "rgb"};
@@ -200,15 +271,28 @@ void fill_point_cloud(const sensors::CameraImage& in, sensor_msgs::PointCloud2& 
   out.row_step = out.point_step * out.width;
   out.data.assign(pixels * out.point_step, 0);
   const bool colour = in.rgb.size() >= pixels * 3;
+  // The image's bytes per pixel as the plugins find them in their image message.
+  const bool three = encoding == "rgb8" || encoding == "bgr8";
+  const bool one = encoding == "mono8" || encoding.rfind("bayer_", 0) == 0;
+  const std::size_t w = in.info.width > 0 ? static_cast<std::size_t>(in.info.width) : 1;
+  bool dense = true;
   for (std::size_t i = 0; i < pixels; ++i) {
     std::uint8_t* p = out.data.data() + i * out.point_step;
     std::memcpy(p, &in.points[3 * i], 3 * sizeof(float));
-    if (colour) {  // packed 0x00RRGGBB, little-endian: b g r 0
-      p[16] = in.rgb[3 * i + 2];
-      p[17] = in.rgb[3 * i + 1];
-      p[18] = in.rgb[3 * i];
+    if (std::isnan(in.points[3 * i + 2])) dense = false;
+    if (!colour) continue;
+    const std::uint8_t* px = &in.rgb[3 * i];
+    if (three) {
+      const bool bgr = encoding == "bgr8";
+      p[16] = bgr ? px[2] : px[0];
+      p[17] = px[1];
+      p[18] = bgr ? px[0] : px[2];
+    } else if (one) {
+      const std::uint8_t v = encoding == "mono8" ? luma(px) : px[bayer_channel(encoding, i / w, i % w)];
+      p[16] = p[17] = p[18] = v;
     }
   }
+  out.is_dense = dense;
 }
 
 }  // namespace mechsim::ros

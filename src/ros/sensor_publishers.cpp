@@ -14,6 +14,7 @@
 #include <boost/make_shared.hpp>
 
 #include <pr2_msgs/PressureState.h>
+#include <std_msgs/Empty.h>
 
 #include "ros/publish_helpers.hpp"
 #include "ros/sensor_messages.hpp"
@@ -23,7 +24,7 @@ namespace mechsim::ros {
 
 namespace {
 
-enum class Kind { Laser, Imu, Contacts, Wrench, Odometry, Camera };
+enum class Kind { Laser, Range, BlockCloud, Imu, Contacts, Wrench, Odometry, Camera };
 
 // CPU time of the calling thread (s): on a loaded machine wall time would count the other
 // processes' turns.
@@ -63,6 +64,11 @@ struct SensorPublishers::Output {
   // Only camera_info subscribed (rostest's hztest on a camera_info topic): the plugins publish it
   // at the camera's rate; mechsim does without rendering, from the intrinsics.
   std::atomic<bool> info_wanted{false};
+  // gazebo_ros_triggered_camera: frames owed (one per message on its trigger topic, counted by the
+  // subscriber's callback), and whether the one asked for has come.
+  ::ros::Subscriber trigger;
+  std::atomic<int> trigger_count{0};
+  bool awaiting_frame = false;
   std::vector<sensors::CameraInfo> lens_infos;
   double period = 0.0;    // s of sim time between camera_info messages
   double next_info = 0.0;  // s of sim time
@@ -196,14 +202,22 @@ SensorPublishers::SensorPublishers(::ros::NodeHandle root, SimBridge& bridge)
     o.frame = frame;
     const std::string topic = spec.plugin->full_topic();
     std::string type;
-    if (kind == "ray") {
+    const auto* ray = std::get_if<description::RaySpec>(&spec.details);
+    if (ray != nullptr && ray->output == description::RayOutput::Range) {
+      o.kind = Kind::Range;
+      o.triggers.push_back(advertise<sensor_msgs::Range>(root_, topic, 1, o));
+      type = "sensor_msgs/Range";
+    } else if (ray != nullptr && ray->output == description::RayOutput::PointCloud) {
+      o.kind = Kind::BlockCloud;
+      o.triggers.push_back(advertise<sensor_msgs::PointCloud>(root_, topic, 1, o));
+      type = "sensor_msgs/PointCloud";
+    } else if (ray != nullptr) {
       o.kind = Kind::Laser;
       o.triggers.push_back(advertise<sensor_msgs::LaserScan>(root_, topic, 10, o));
       type = "sensor_msgs/LaserScan";
-      const auto& ray = std::get<description::RaySpec>(spec.details);
-      if (ray.vertical.count() > 1) {
-        o.row = ray.vertical.count() / 2;
-        ROS_WARN_STREAM("mechsim: " << spec.where() << " scans " << ray.vertical.count()
+      if (ray->vertical.count() > 1) {
+        o.row = ray->vertical.count() / 2;
+        ROS_WARN_STREAM("mechsim: " << spec.where() << " scans " << ray->vertical.count()
                                     << " rows: LaserScan is planar, its middle row is published");
       }
     } else if (kind == "imu") {
@@ -304,15 +318,35 @@ void SensorPublishers::add_camera(std::size_t sensor, const description::SensorS
   auto note = [&](const std::string& topic, const char* type) {
     topics_.push_back(spec.name + " -> " + topic + " (" + type + ", frame " + frame + ")");
   };
-  // Queue 1: a frame is megabytes; a subscriber that cannot keep up gets the newest.
+  if (o.encoding == "bgr8" && !camera.lenses.empty() && camera.lenses.front().format != "B8G8R8" &&
+      camera.lenses.front().format != "BGR_INT8") {
+    ROS_WARN_STREAM("mechsim: " << spec.where() << ": gazebo_ros_camera_utils has no encoding for image format "
+                                << camera.lenses.front().format << " and publishes it as bgr8; so does mechsim");
+  }
+  // Queue 1: a frame is megabytes; a subscriber that cannot keep up gets the newest. A lens
+  // without a topic (a multicamera's camera named neither left nor right) publishes nothing.
   for (std::size_t k = 0; k < camera.image_topics.size(); ++k) {
+    if (camera.image_topics[k].empty()) {
+      o.images.emplace_back();
+      continue;
+    }
     o.images.push_back(advertise<sensor_msgs::Image>(root_, camera.image_topics[k], 1, o));
     o.triggers.push_back(o.images.back());
     note(camera.image_topics[k], ("sensor_msgs/Image " + o.encoding).c_str());
   }
   for (const std::string& topic : camera.info_topics) {
+    if (topic.empty()) {
+      o.infos.emplace_back();
+      continue;
+    }
     o.infos.push_back(advertise<sensor_msgs::CameraInfo>(root_, topic, 1, o));
     note(topic, "sensor_msgs/CameraInfo");
+  }
+  if (!camera.trigger_topic.empty()) {
+    std::atomic<int>& count = o.trigger_count;
+    o.trigger = root_.subscribe<std_msgs::Empty>(camera.trigger_topic, 10,
+                                                 [&count](const std_msgs::Empty::ConstPtr&) { count.fetch_add(1); });
+    topics_.push_back(spec.name + " <- " + camera.trigger_topic + " (std_msgs/Empty: one frame each)");
   }
   if (camera.depth && !camera.depth_topic.empty()) {
     o.depth = advertise<sensor_msgs::Image>(root_, camera.depth_topic, 1, o);
@@ -339,6 +373,11 @@ void SensorPublishers::publish() {
   ++stats_.calls;
   for (const std::unique_ptr<Output>& op : outputs_) {
     Output& o = *op;
+    if (o.trigger) {
+      if (cpu_start < 0.0) cpu_start = thread_cpu_seconds();
+      publish_triggered(o);
+      continue;
+    }
     const bool wanted = o.wanted.load(std::memory_order_relaxed);
     if (wanted != o.enabled) {
       bridge_.set_sensor_enabled(o.sensor, wanted);
@@ -368,6 +407,14 @@ void SensorPublishers::publish() {
         if (const auto* v = std::get_if<sensors::LaserScan>(&r.value))
           send<sensor_msgs::LaserScan>(pub, stamp, o.frame, [&](auto& m) { fill_laser_scan(*v, o.row, m); });
         break;
+      case Kind::Range:
+        if (const auto* v = std::get_if<sensors::RangeReading>(&r.value))
+          send<sensor_msgs::Range>(pub, stamp, o.frame, [&](auto& m) { fill_range(*v, m); });
+        break;
+      case Kind::BlockCloud:
+        if (const auto* v = std::get_if<sensors::PointCloudReading>(&r.value))
+          send<sensor_msgs::PointCloud>(pub, stamp, o.frame, [&](auto& m) { fill_block_cloud(*v, m); });
+        break;
       case Kind::Imu:
         if (const auto* v = std::get_if<sensors::ImuReading>(&r.value))
           send<sensor_msgs::Imu>(pub, stamp, o.frame, [&](auto& m) { fill_imu(*v, m); });
@@ -376,7 +423,7 @@ void SensorPublishers::publish() {
         // A fingertip's sensor may sample for /pressure only.
         if (pub.getNumSubscribers() == 0) break;
         if (const auto* v = std::get_if<sensors::ContactsReading>(&r.value))
-          send<gazebo_msgs::ContactsState>(pub, stamp, o.frame, [&](auto& m) { fill_contacts(*v, m); });
+          send<gazebo_msgs::ContactsState>(pub, stamp, o.frame, [&](auto& m) { fill_contacts(*v, r.stamp, m); });
         break;
       case Kind::Wrench:
         if (const auto* v = std::get_if<sensors::WrenchReading>(&r.value))
@@ -413,11 +460,31 @@ void SensorPublishers::publish_camera_info_only(Output& o) {
   o.next_info = o.period > 0.0 ? next_due_after(time, o.period) : time;
   const ::ros::Time stamp(time);
   for (std::size_t k = 0; k < o.infos.size() && k < o.lens_infos.size(); ++k) {
-    if (o.infos[k].getNumSubscribers() > 0)
+    if (o.infos[k] && o.infos[k].getNumSubscribers() > 0)
       send<sensor_msgs::CameraInfo>(o.infos[k], stamp, o.frame, [&](auto& m) { fill_camera_info(o.lens_infos[k], m); });
   }
   if (o.depth_info && o.depth_info.getNumSubscribers() > 0 && !o.lens_infos.empty())
     send<sensor_msgs::CameraInfo>(o.depth_info, stamp, o.frame, [&](auto& m) { fill_camera_info(o.lens_infos.front(), m); });
+}
+
+// gazebo_ros_triggered_camera: the camera renders only for a trigger (the plugin turns it on for
+// one frame per trigger), and that frame, with its camera_info, goes to the subscribers there are.
+// A trigger with nobody subscribed is spent without a frame (the plugin renders one and drops it).
+void SensorPublishers::publish_triggered(Output& o) {
+  const sensors::SensorReading& r = bridge_.sensor_reading(o.sensor);
+  if (o.awaiting_frame && r.count != o.published) {
+    o.published = r.count;
+    o.awaiting_frame = false;
+    o.recount();
+    publish_camera(o, r);
+  }
+  if (o.awaiting_frame || o.trigger_count.load() <= 0) return;
+  o.trigger_count.fetch_sub(1);
+  o.recount();
+  if (!o.wanted.load(std::memory_order_relaxed) && !o.info_wanted.load(std::memory_order_relaxed)) return;
+  bridge_.request_sensor_sample(o.sensor);
+  o.published = r.count;
+  o.awaiting_frame = true;
 }
 
 void SensorPublishers::publish_camera(Output& o, const sensors::SensorReading& r) {
@@ -433,10 +500,10 @@ void SensorPublishers::publish_camera(Output& o, const sensors::SensorReading& r
   // Each topic only for its own subscribers: a depth-only subscriber costs no colour copy.
   for (std::size_t k = 0; k < reading->images.size(); ++k) {
     const sensors::CameraImage& image = reading->images[k];
-    if (k < o.images.size() && o.images[k].getNumSubscribers() > 0)
+    if (k < o.images.size() && o.images[k] && o.images[k].getNumSubscribers() > 0)
       send<sensor_msgs::Image>(o.images[k], stamp, o.frame, [&](auto& m) { fill_image(image, o.encoding, m); });
     // camera_info goes with every frame, as the plugins publish it with the image.
-    if (k < o.infos.size() && o.infos[k].getNumSubscribers() > 0)
+    if (k < o.infos.size() && o.infos[k] && o.infos[k].getNumSubscribers() > 0)
       send<sensor_msgs::CameraInfo>(o.infos[k], stamp, o.frame, [&](auto& m) { fill_camera_info(image.info, m); });
   }
   if (!reading->images.empty()) {
@@ -446,7 +513,7 @@ void SensorPublishers::publish_camera(Output& o, const sensors::SensorReading& r
     if (o.depth_info && o.depth_info.getNumSubscribers() > 0)
       send<sensor_msgs::CameraInfo>(o.depth_info, stamp, o.frame, [&](auto& m) { fill_camera_info(image.info, m); });
     if (o.points && o.points.getNumSubscribers() > 0)
-      send<sensor_msgs::PointCloud2>(o.points, stamp, o.frame, [&](auto& m) { fill_point_cloud(image, m); });
+      send<sensor_msgs::PointCloud2>(o.points, stamp, o.frame, [&](auto& m) { fill_point_cloud(image, o.encoding, m); });
   }
   ++stats_.camera_frames;
   stats_.camera_seconds += thread_cpu_seconds() - start;

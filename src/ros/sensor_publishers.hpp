@@ -1,11 +1,13 @@
 #pragma once
 // The simulated sensors on ROS, as their Gazebo plugins publish them: sensor_msgs/LaserScan
-// (gazebo_ros_laser, gazebo_ros_gpu_laser), sensor_msgs/Imu (gazebo_ros_imu_sensor,
+// (gazebo_ros_laser, gazebo_ros_gpu_laser), sensor_msgs/Range (gazebo_ros_range),
+// sensor_msgs/PointCloud (gazebo_ros_block_laser), sensor_msgs/Imu (gazebo_ros_imu_sensor,
 // gazebo_ros_imu, hector's IMU), gazebo_msgs/ContactsState (gazebo_ros_bumper),
 // geometry_msgs/WrenchStamped (gazebo_ros_ft_sensor), nav_msgs/Odometry (gazebo_ros_p3d), and
 // sensor_msgs/Image + CameraInfo (+ a 32FC1 depth Image, its CameraInfo and a PointCloud2 for
-// depth cameras) of gazebo_ros_camera, _multicamera, _depth_camera, _openni_kinect and
-// _prosilica; on the topic and with the frame the plugin would use, stamped in simulated time.
+// depth cameras) of gazebo_ros_camera, _multicamera, _depth_camera, _openni_kinect, _prosilica
+// and _triggered_camera (a frame per std_msgs/Empty on its trigger topic); on the topic and with
+// the frame the plugin would use, stamped in simulated time.
 // The PR2's fingertip pressure (pr2_msgs/PressureState on /pressure/<side>_gripper_motor, 25 Hz
 // of sim time, as the real grippers publish it) is made from the fingertip contact sensors, as
 // pr2_gazebo's contact-to-pressure translator did (sensors/pr2_fingertip_pressure.hpp).
@@ -74,6 +76,7 @@ class SensorPublishers {
   void add_camera(std::size_t sensor, const description::SensorSpec& spec, const std::string& frame);
   void publish_camera(Output& o, const sensors::SensorReading& r);
   void publish_camera_info_only(Output& o);
+  void publish_triggered(Output& o);
   void add_pressure(const std::string& side);
   void publish_pressure(Pressure& p, double time);
   // A new message of type M stamped and framed, filled by fill(M&), queued for the sender.

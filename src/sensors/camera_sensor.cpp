@@ -33,19 +33,31 @@ struct CameraState : SensorState {
 // SDF's camera looks along +x with +z up; the optical frame has z forward, x right, y down.
 const description::Quat kOptical = physics::quat_from_rpy(-kPi / 2, 0.0, -kPi / 2);
 
-// OpenCV's plumb_bob inverted by fixed-point iteration: the undistorted normalised point whose
-// distortion is (xd, yd).
-void undistort_point(const description::DistortionSpec& d, double xd, double yd, double& x, double& y) {
+// Brown's model (OpenCV's plumb_bob: Gazebo's Distortion::Distort) inverted by fixed-point
+// iteration: the undistorted normalised point whose distortion is (xd, yd).
+void distort_point(const description::DistortionSpec& d, double x, double y, double& xd, double& yd) {
+  const double r2 = x * x + y * y;
+  const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
+  xd = x * radial + 2.0 * d.p1 * x * y + d.p2 * (r2 + 2.0 * x * x);
+  yd = y * radial + d.p1 * (r2 + 2.0 * y * y) + 2.0 * d.p2 * x * y;
+}
+
+// False when no point distorts to (xd, yd) (beyond the largest radius a barrel reaches).
+bool undistort_point(const description::DistortionSpec& d, double xd, double yd, double& x, double& y) {
   x = xd;
   y = yd;
   for (int i = 0; i < 20; ++i) {
     const double r2 = x * x + y * y;
     const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
+    if (!(radial > 0.0)) return false;
     const double dx = 2.0 * d.p1 * x * y + d.p2 * (r2 + 2.0 * x * x);
     const double dy = d.p1 * (r2 + 2.0 * y * y) + 2.0 * d.p2 * x * y;
     x = (xd - dx) / radial;
     y = (yd - dy) / radial;
   }
+  double cx = 0, cy = 0;
+  distort_point(d, x, y, cx, cy);
+  return std::abs(cx - xd) + std::abs(cy - yd) < 1e-6 * (1.0 + std::abs(xd) + std::abs(yd));
 }
 
 }  // namespace
@@ -95,19 +107,49 @@ CameraSensor::CameraSensor(const description::SensorSpec& spec, const physics::P
 
 namespace {
 
-// For each pixel of the distorted image `out`, its source in the rendered (undistorted) image of
-// `src`: the plumb_bob model inverted through out's intrinsics, projected through src's.
-// Sources outside the rendered image take its border.
-std::vector<Tap> undistort_map(const description::DistortionSpec& d, const physics::CameraView& out,
+// Gazebo 11's distortion (rendering::Distortion) as a map: each pixel of the distorted image
+// `out` takes the point of the ideal (undistorted) image that Brown's model moves there. Gazebo
+// works in normalised texture coordinates u = x / W, v = y / H about `center`, scaling both by
+// T / f (T = max(W, H), f = the FOV's focal length), so the coefficients are OpenCV's plumb_bob in
+// pixels for a square image (for another shape the vertical axis is scaled by H, not W, as there).
+// A barrel-distorted image is cropped (scaled about its middle by the distortion of the corners,
+// taken without the T / f scaling, as Gazebo does) unless <borderCrop> is false. Points whose
+// source lies outside the ideal image take the image's top-left pixel, as Gazebo's unset map
+// entries (0, 0) do. mechsim renders through the plugin's K, so the ideal image's middle is the
+// principal point; the source is then projected through `src`'s intrinsics (a shared render).
+std::vector<Tap> undistort_map(const description::DistortionSpec& d, double hfov, const physics::CameraView& out,
                                const physics::CameraView& src) {
   std::vector<Tap> map(static_cast<std::size_t>(out.width) * out.height);
   const int w = src.width, h = src.height;
+  const double W = out.width, H = out.height, T = std::max(W, H);
+  const double f = W / (2.0 * std::tan(hfov / 2.0));
+  double scale_x = 1.0, scale_y = 1.0;
+  if (d.crop && d.k1 < 0.0) {
+    const auto corner = [&](double u, double v, double& du, double& dv) {
+      const double x = u - d.center_x, y = v - d.center_y, r2 = x * x + y * y;
+      const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
+      du = d.center_x + x * radial + d.p2 * (r2 + 2 * x * x) + 2 * d.p1 * x * y;
+      dv = d.center_y + y * radial + d.p1 * (r2 + 2 * y * y) + 2 * d.p2 * x * y;
+    };
+    double ax, ay, bx, by;
+    corner(0.0, 0.0, ax, ay);
+    corner(1.0, 1.0, bx, by);
+    if (bx - ax > 1e-7 && by - ay > 1e-7) scale_x = bx - ax, scale_y = by - ay;
+  }
+  // The distortion centre in pixels: Gazebo's 0.5 is the image's middle, here the principal point.
+  const double ccx = out.cx + (d.center_x - 0.5) * W, ccy = out.cy + (d.center_y - 0.5) * H;
+  const double kx = T / W / f, ky = T / H / f;  // pixels -> Gazebo's normalised units
   for (int r = 0; r < out.height; ++r) {
     for (int c = 0; c < out.width; ++c) {
+      const double mx = out.cx + (c - out.cx) * scale_x, my = out.cy + (r - out.cy) * scale_y;
       double x = 0, y = 0;
-      undistort_point(d, (c - out.cx) / out.fx, (r - out.cy) / out.fy, x, y);
-      const float u = std::clamp(static_cast<float>(src.fx * x + src.cx), 0.0f, static_cast<float>(w - 1));
-      const float v = std::clamp(static_cast<float>(src.fy * y + src.cy), 0.0f, static_cast<float>(h - 1));
+      const bool found = undistort_point(d, (mx - ccx) * kx, (my - ccy) * ky, x, y);
+      const double px = ccx + x / kx, py = ccy + y / ky;
+      float u = 0.0f, v = 0.0f;
+      if (found && px >= -0.5 && px <= W - 0.5 && py >= -0.5 && py <= H - 0.5) {
+        u = std::clamp(static_cast<float>(src.fx * (px - out.cx) / out.fx + src.cx), 0.0f, static_cast<float>(w - 1));
+        v = std::clamp(static_cast<float>(src.fy * (py - out.cy) / out.fy + src.cy), 0.0f, static_cast<float>(h - 1));
+      }
       const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
       Tap& t = map[static_cast<std::size_t>(r) * out.width + c];
       t.at = static_cast<std::uint32_t>((static_cast<std::size_t>(v0) * w + u0) * 3);
@@ -214,7 +256,8 @@ void CameraSensor::sample(const physics::Physics& physics, double, SensorState& 
     im.rgb.resize(n * 3);
     std::vector<Tap>& undistort = state.undistort[i];
     const description::DistortionSpec& distortion = camera_.lenses[i].distortion;
-    if (undistort.empty() && distortion.active()) undistort = undistort_map(distortion, lens.view, lens.render);
+    if (undistort.empty() && distortion.active())
+      undistort = undistort_map(distortion, camera_.lenses[i].horizontal_fov, lens.view, lens.render);
     if (undistort.empty()) {
       std::copy(frame.rgb.begin(), frame.rgb.begin() + static_cast<std::ptrdiff_t>(n * 3), im.rgb.begin());
     } else {

@@ -39,7 +39,10 @@ std::string gazebo_name(const physics::PhysicsModel& model, int geom) {
     return model.robot_name() + "::" + link + "::" + link + "_collision" + (index == "0" ? "" : "_" + index);
   }
   if (n == "ground") return "ground_plane::link::collision";
-  if (n.rfind("box:", 0) == 0) return std::string(n.substr(4)) + "::link::collision";
+  // A world object: an SDF world's shapes are named model::link::collision already; a scenario's
+  // box by its name alone.
+  if (n.rfind("box:", 0) == 0)
+    return n.find("::") != std::string_view::npos ? std::string(n.substr(4)) : std::string(n.substr(4)) + "::link::collision";
   if (n.empty()) return "world::link::collision";
   return std::string(n) + "::link::collision";
 }
@@ -57,21 +60,40 @@ void ContactSensor::bind(const physics::PhysicsModel& model) {
   link_ = resolve_link(model);
   geom_names_.clear();
   geoms_.clear();
-  frame_link_.reset();
   const auto& contact = std::get<description::ContactSpec>(spec.details);
   for (int g = 0; g < model.geom_count(); ++g) geom_names_.push_back(gazebo_name(model, g));
-  for (const std::string& collision : contact.collisions) {
-    const std::string link = collision_link(collision);
-    const std::string prefix = physics_name(link.empty() ? spec.link : link) + "/collision/";
+  // The shapes the description placed (an SDF collision by its name, or a link's), else those
+  // Gazebo's URDF names refer to.
+  std::vector<std::pair<std::string, std::string>> wanted;  // (link, geom name or prefix)
+  if (contact.targets.size() == contact.collisions.size() && !contact.targets.empty()) {
+    for (std::size_t k = 0; k < contact.targets.size(); ++k) {
+      const description::ContactSpec::Target& t = contact.targets[k];
+      std::string name = physics_name(t.link) + "/collision/" + (t.index >= 0 ? std::to_string(t.index) : "");
+      // An SDF model the world holds as an object (one shape): its geom is "box:<model>::<link>::<collision>".
+      const std::string object = "box:" + physics_name(t.link) + "::" + contact.collisions[k];
+      for (int g = 0; g < model.geom_count() && t.index >= 0; ++g)
+        if (model.geom_name(g) == object) name = object;
+      wanted.emplace_back(t.link, name);
+    }
+  } else {
+    for (const std::string& collision : contact.collisions) {
+      const std::string link = collision_link(collision);
+      const std::string owner = link.empty() ? spec.link : link;
+      wanted.emplace_back(owner, physics_name(owner) + "/collision/");
+    }
+  }
+  for (std::size_t k = 0; k < wanted.size(); ++k) {
+    const auto& [owner, name] = wanted[k];
+    const bool prefix = name.back() == '/';
     bool found = false;
     for (int g = 0; g < model.geom_count(); ++g) {
-      if (model.geom_name(g).rfind(prefix, 0) != 0) continue;
+      const std::string_view n = model.geom_name(g);
+      if (prefix ? n.rfind(name, 0) != 0 : n != name) continue;
       geoms_.push_back(g);
       found = true;
     }
     if (!found) {
-      const std::string owner = link.empty() ? spec.link : link;
-      const std::string what = spec.where() + ": <contact><collision>" + collision +
+      const std::string what = spec.where() + ": <contact><collision>" + contact.collisions[k] +
                                "</collision> matches no collision shape of the physics (link '" + owner + "' has none)";
       // A link without shapes: its collision was a mesh the physics left out (said at start-up),
       // or it never had one; either way the sensor can report nothing, and Gazebo too runs on
@@ -82,8 +104,6 @@ void ContactSensor::bind(const physics::PhysicsModel& model) {
   }
   std::sort(geoms_.begin(), geoms_.end());
   geoms_.erase(std::unique(geoms_.begin(), geoms_.end()), geoms_.end());
-  const std::string frame = spec.plugin ? spec.plugin->frame : "world";
-  if (frame != "world" && frame != "/world" && frame != "map") frame_link_ = model.link_index(physics_name(frame));
 }
 
 std::unique_ptr<SensorState> ContactSensor::make_state(Rng rng) const {
@@ -105,10 +125,10 @@ void ContactSensor::sample(const physics::Physics& physics, double, SensorState&
     s.total_wrench = {};
   }
   r.count = 0;
+  r.X_WL = physics.link_pose(link_);
   state.pairs.clear();
   physics.contacts(state.contacts);
-  const Vec3 o = physics.link_pose(link_).position;
-  const description::Pose X_FW = frame_link_ ? physics::inverse(physics.link_pose(*frame_link_)) : description::Pose{};
+  const physics::PhysicsModel& model = physics.model();
   const auto own = [&](int g) { return std::binary_search(geoms_.begin(), geoms_.end(), g); };
   for (const physics::Contact& c : state.contacts) {
     const bool a = own(c.geom_a), b = own(c.geom_b);
@@ -118,8 +138,14 @@ void ContactSensor::sample(const physics::Physics& physics, double, SensorState&
     const double sign = b ? 1.0 : -1.0;
     const Vec3 F_W{sign * c.force.x, sign * c.force.y, sign * c.force.z};
     const Vec3 n_W{sign * c.normal.x, sign * c.normal.y, sign * c.normal.z};
-    const Vec3 arm{c.position.x - o.x, c.position.y - o.y, c.position.z - o.z};
+    // As ODE's contact feedback through Gazebo: the torque about the body's centre of mass, both
+    // turned into the body's frame.
+    const int body = model.geom_body(mine);
+    const description::Pose X_WB = physics.body_pose(body);
+    const Vec3 com = physics.body_com(body);
+    const Vec3 arm{c.position.x - com.x, c.position.y - com.y, c.position.z - com.z};
     const Vec3 T_W{arm.y * F_W.z - arm.z * F_W.y, arm.z * F_W.x - arm.x * F_W.z, arm.x * F_W.y - arm.y * F_W.x};
+    const description::Quat q_BW = physics::inverse(X_WB).orientation;
     std::size_t k = 0;
     while (k < r.count && state.pairs[k] != std::make_pair(mine, other)) ++k;
     if (k == r.count) {
@@ -131,14 +157,13 @@ void ContactSensor::sample(const physics::Physics& physics, double, SensorState&
       ++r.count;
     }
     ContactState& s = r.states[k];
-    const Vec3 F = physics::rotate(X_FW.orientation, F_W), T = physics::rotate(X_FW.orientation, T_W);
+    const Vec3 F = physics::rotate(q_BW, F_W), T = physics::rotate(q_BW, T_W);
     s.wrenches.push_back({F, T});
     s.total_wrench.force = {s.total_wrench.force.x + F.x, s.total_wrench.force.y + F.y, s.total_wrench.force.z + F.z};
     s.total_wrench.torque = {s.total_wrench.torque.x + T.x, s.total_wrench.torque.y + T.y,
                              s.total_wrench.torque.z + T.z};
-    const Vec3 p = physics::rotate(X_FW.orientation, c.position);
-    s.contact_positions.push_back({p.x + X_FW.position.x, p.y + X_FW.position.y, p.z + X_FW.position.z});
-    s.contact_normals.push_back(physics::rotate(X_FW.orientation, n_W));
+    s.contact_positions.push_back(c.position);
+    s.contact_normals.push_back(n_W);
     s.depths.push_back(c.depth);
   }
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/transform.hpp"
+
 namespace mechsim::sensors {
 
 namespace {
@@ -86,15 +88,19 @@ std::array<double, kFingertipPressureElements> fingertip_pad_forces(const Contac
   std::array<Rect, kFingertipPressureElements> rects;
   for (int k = 0; k < kFingertipPressureElements; ++k) rects[static_cast<std::size_t>(k)] = rect(k, finger);
   std::array<double, kFingertipPressureElements> newtons{};
+  // Contact points come in the world frame; the pads are in the fingertip link's.
+  const Pose X_LW = physics::inverse(contacts.X_WL);
   const std::size_t states = std::min(contacts.count, contacts.states.size());
   for (std::size_t s = 0; s < states; ++s) {
     const ContactState& c = contacts.states[s];
     const std::size_t points = std::min(c.contact_positions.size(), c.wrenches.size());
     for (std::size_t i = 0; i < points; ++i) {
+      const Vec3 r = physics::rotate(X_LW.orientation, c.contact_positions[i]);
+      const Vec3 p_L{r.x + X_LW.position.x, r.y + X_LW.position.y, r.z + X_LW.position.z};
       int nearest = -1;
       double best = kPressureElementReach;
       for (int k = 0; k < kFingertipPressureElements; ++k) {
-        const double d = distance(rects[static_cast<std::size_t>(k)], c.contact_positions[i]);
+        const double d = distance(rects[static_cast<std::size_t>(k)], p_L);
         if (d <= best) {
           best = d;
           nearest = k;

@@ -25,8 +25,8 @@ inline constexpr double kPressureElementReach = 0.004;
 enum class Fingertip { Left, Right };  // the gripper's l_finger_tip / r_finger_tip
 
 // The force (N) pressing into each of one fingertip's 22 elements, from its contact sensor's
-// reading. `contacts` must be in the fingertip link's own frame (the PR2's bumpers' frameName is
-// the fingertip link). MuJoCo reports one to four points per touching pair, so an object loads
+// reading: its points (world frame) taken into the fingertip link's frame by the reading's X_WL,
+// its forces in the fingertip's own body frame (the link's: a fingertip is a body). MuJoCo reports one to four points per touching pair, so an object loads
 // the elements under those points only (as Gazebo's point contacts did), not its whole patch.
 std::array<double, kFingertipPressureElements> fingertip_pad_forces(const ContactsReading& contacts, Fingertip finger);
 

@@ -33,7 +33,22 @@ struct LaserScan {
   double scan_time = 0.0;       // s between scans
   double range_min = 0.0, range_max = 0.0;
   std::vector<float> ranges;       // m
-  std::vector<float> intensities;  // Gazebo's laser_retro of what was hit: 0 (mechsim has none)
+  std::vector<float> intensities;  // laser_retro of the shape each ray hit (0: none, or nothing hit)
+};
+
+// sensor_msgs/Range's content (gazebo_ros_range): the shortest of the sensor's rays.
+struct RangeReading {
+  int radiation = 0;            // sensor_msgs/Range: 0 ultrasound, 1 infrared
+  double field_of_view = 0.0;   // rad, as the plugin says
+  double min_range = 0.0, max_range = 0.0;  // m: the ray sensor's
+  double range = 0.0;           // m: max_range when nothing is within it
+};
+
+// sensor_msgs/PointCloud's content (gazebo_ros_block_laser): one point per interpolated ray in
+// the sensor frame, and its intensity (one channel).
+struct PointCloudReading {
+  std::vector<Vec3> points;        // m
+  std::vector<float> intensities;  // per point
 };
 
 struct ImuReading {
@@ -50,22 +65,27 @@ struct ContactWrench {
   Vec3 torque;  // N m
 };
 
-// One touching pair (gazebo_msgs/ContactState): collision1 is the sensor's own.
+// One touching pair (gazebo_msgs/ContactState) as Gazebo's contact sensor gives it and
+// gazebo_ros_bumper copies it: collision1 is the sensor's own.
 struct ContactState {
-  std::string info;
+  std::string info;  // left for the publisher (gazebo_ros_bumper writes a debug line with the time)
   std::string collision1_name, collision2_name;  // Gazebo-style scoped names (model::link::collision)
-  std::vector<ContactWrench> wrenches;           // per point: on collision1's body, torque about the point's link origin
-  ContactWrench total_wrench;
-  std::vector<Vec3> contact_positions;  // m
-  std::vector<Vec3> contact_normals;    // unit, pushing collision1 away from collision2
+  // Per point: the force on collision1's body and its torque about that body's centre of mass, in
+  // the body's frame (ODE's contact feedback, turned into the link frame by Gazebo).
+  std::vector<ContactWrench> wrenches;
+  ContactWrench total_wrench;           // their sum
+  std::vector<Vec3> contact_positions;  // m, world frame
+  std::vector<Vec3> contact_normals;    // world frame, unit, pushing collision1 away from collision2
   std::vector<double> depths;           // m, penetration
 };
 
-// Everything the sensor's collisions touch (gazebo_msgs/ContactsState), in the plugin's frame
-// (the world, or a link's frame).
+// Everything the sensor's collisions touch (gazebo_msgs/ContactsState). gazebo_ros_bumper
+// transforms nothing: whatever its frameName, positions and normals are in the world and wrenches
+// in each body's frame.
 struct ContactsReading {
   std::vector<ContactState> states;
   std::size_t count = 0;  // states in use (the vector keeps its capacity between samples)
+  Pose X_WL;              // the sensor's link at the sample (for consumers that want its frame)
 };
 
 struct WrenchReading {
@@ -110,7 +130,8 @@ struct CameraReading {
   std::string error;
 };
 
-using SensorOutput = std::variant<std::monostate, LaserScan, ImuReading, ContactsReading, WrenchReading, GroundTruthReading, CameraReading>;
+using SensorOutput = std::variant<std::monostate, LaserScan, ImuReading, ContactsReading, WrenchReading, GroundTruthReading,
+                                  CameraReading, RangeReading, PointCloudReading>;
 
 // A sensor's latest output and when it was taken.
 struct SensorReading {

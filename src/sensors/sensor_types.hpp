@@ -11,9 +11,12 @@
 
 namespace mechsim::sensors {
 
+struct ChannelState;
+
 // ray / gpu_ray: rays cast from the sensor frame against the world and the robot's shapes
 // (collision shapes; visual ones for gpu_ray), the sensor's own body excluded, all at the sample
-// time (Gazebo's instantaneous scan).
+// time (Gazebo's instantaneous scan). The output follows the spec's RayOutput: a LaserScan, a
+// RangeReading (gazebo_ros_range) or a PointCloudReading (gazebo_ros_block_laser).
 class RaySensor final : public Sensor {
  public:
   RaySensor(const description::SensorSpec& spec, const physics::PhysicsModel& model, const std::string& prefix = "");
@@ -22,9 +25,14 @@ class RaySensor final : public Sensor {
   void sample(const physics::Physics& physics, double time, SensorState& state, SensorOutput& out) const override;
 
  private:
+  void fill_scan(const physics::Physics& physics, double time, ChannelState& state, SensorOutput& out) const;
+  void fill_range(ChannelState& state, SensorOutput& out) const;
+  void fill_cloud(const physics::Physics& physics, ChannelState& state, SensorOutput& out) const;
+
   const description::RaySpec& ray_;
   std::size_t link_ = 0;
   physics::RayFilter filter_;
+  int nh_ = 1, nv_ = 1;                          // rays cast per axis
   std::vector<description::Vec3> directions_S_;  // unit, sensor frame; vertical index outer
   LaserScan layout_;                             // angles and limits, ranges empty
 };
@@ -53,8 +61,7 @@ class ContactSensor final : public Sensor {
  private:
   std::vector<int> geoms_;               // the sensor's collision geoms (MuJoCo ids), sorted
   std::vector<std::string> geom_names_;  // their Gazebo-style names, by MuJoCo geom id (all geoms)
-  std::size_t link_ = 0;                 // the sensor's link: torques are about its origin
-  std::optional<std::size_t> frame_link_;  // the plugin's frame when it is a link (else the world)
+  std::size_t link_ = 0;                 // the sensor's link
 };
 
 // force_torque (SDF sensor, gazebo_ros_ft_sensor): the wrench a joint transmits.

@@ -39,6 +39,10 @@ void header(std::ostream& out, const SensorReading& r) {
         if constexpr (std::is_same_v<T, sensors::LaserScan>) {
           out << "t";
           for (std::size_t i = 0; i < v.ranges.size(); ++i) out << ",r" << i;
+        } else if constexpr (std::is_same_v<T, sensors::RangeReading>) {
+          out << "t,range";
+        } else if constexpr (std::is_same_v<T, sensors::PointCloudReading>) {
+          out << "t,points,mean_range,mean_intensity";
         } else if constexpr (std::is_same_v<T, sensors::ImuReading>) {
           out << "t,qw,qx,qy,qz,roll,pitch,yaw,wx,wy,wz,ax,ay,az";
         } else if constexpr (std::is_same_v<T, sensors::ContactsReading>) {
@@ -64,6 +68,16 @@ void row(std::ostream& out, const SensorReading& r) {
         const auto quat = [&](const description::Quat& q) { out << ',' << q.w << ',' << q.x << ',' << q.y << ',' << q.z; };
         if constexpr (std::is_same_v<T, sensors::LaserScan>) {
           for (const float x : v.ranges) out << ',' << x;
+        } else if constexpr (std::is_same_v<T, sensors::RangeReading>) {
+          out << ',' << v.range;
+        } else if constexpr (std::is_same_v<T, sensors::PointCloudReading>) {
+          double range = 0.0, intensity = 0.0;
+          for (std::size_t i = 0; i < v.points.size(); ++i) {
+            range += std::sqrt(v.points[i].x * v.points[i].x + v.points[i].y * v.points[i].y + v.points[i].z * v.points[i].z);
+            intensity += v.intensities[i];
+          }
+          const double n = v.points.empty() ? 1.0 : static_cast<double>(v.points.size());
+          out << ',' << v.points.size() << ',' << range / n << ',' << intensity / n;
         } else if constexpr (std::is_same_v<T, sensors::ImuReading>) {
           quat(v.orientation);
           out << ',' << roll_of(v.orientation) << ',' << pitch_of(v.orientation) << ',' << yaw_of(v.orientation);

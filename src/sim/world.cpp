@@ -150,6 +150,7 @@ World make_sdf_world(const std::string& path, bool active_apart) {
               if (j.child_link == link.name) X_WL = physics::compose(X_WR, j.origin);
           }
           box.pose = physics::compose(X_WL, c.origin);
+          box.laser_retro = c.laser_retro.value_or(0.0);
           if (c.geometry.type == description::GeometryType::Mesh) {
             const std::string problem = mesh_problem(c.geometry, box);
             if (!problem.empty()) {

@@ -238,6 +238,7 @@ class Converter {
       collision.name = c.Name();
       collision.origin = pose(X_frame_L * X_LC);
       collision.geometry = std::move(*g);
+      if (c.Element() && c.Element()->HasElement("laser_retro")) collision.laser_retro = c.Element()->Get<double>("laser_retro");
       link.collisions.push_back(std::move(collision));
       // mechsim's geoms have one friction per link (as URDF's gazebo <mu1>/<mu2>).
       if ((mu && gz.mu1 && *gz.mu1 != *mu) || (mu2 && gz.mu2 && *gz.mu2 != *mu2))

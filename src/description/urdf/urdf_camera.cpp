@@ -1,6 +1,7 @@
 // Camera sensors (SDF <camera> as Gazebo classic reads it) and their ROS camera plugins'
 // intrinsics and topics (gazebo_ros_camera_utils' parameters and defaults).
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "description/urdf/urdf_sensors.hpp"
@@ -40,14 +41,12 @@ CameraLens read_lens(const XmlNode& camera, const SensorFields& f, bool wide_ang
     lens.width = read_pixels(*image, "width", lens.width, f);
     lens.height = read_pixels(*image, "height", lens.height, f);
     if (const XmlNode* format = image->child("format")) {
-      static const std::set<std::string> formats = {"R8G8B8",      "RGB_INT8",    "B8G8R8",      "BGR_INT8",   "L8",
-                                                    "L_INT8",      "BAYER_RGGB8", "BAYER_BGGR8", "BAYER_GBRG8", "BAYER_GRBG8"};
-      if (!formats.count(format->text)) {
-        f.error(format->line, "<camera><image><format> \"" + format->text +
-                                  "\" is not one mechsim produces (R8G8B8, RGB_INT8, B8G8R8, BGR_INT8, L8, L_INT8, BAYER_*8)");
-      } else {
-        lens.format = format->text;
-      }
+      lens.format = format->text;
+      // Gazebo's camera renders an unknown format as 8-bit colour (with an error) and runs on.
+      if (!is_gazebo_image_format(format->text))
+        f.warning(format->line, "<camera><image><format> \"" + format->text +
+                                    "\" is not one of Gazebo's (L8, L16, R8G8B8, B8G8R8, R16G16B16, BAYER_*8, FLOAT16, "
+                                    "FLOAT32 and their *_INT* names); Gazebo renders it as 8-bit colour, and so does mechsim");
     }
   }
   if (const XmlNode* clip = camera.child("clip")) {
@@ -66,6 +65,8 @@ CameraLens read_lens(const XmlNode& camera, const SensorFields& f, bool wide_ang
     ds.k3 = f.number_or(*d, "k3", "camera><distortion><k3", 0.0);
     ds.p1 = f.number_or(*d, "p1", "camera><distortion><p1", 0.0);
     ds.p2 = f.number_or(*d, "p2", "camera><distortion><p2", 0.0);
+    // Gazebo crops a barrel-distorted image unless a camera plugin's <borderCrop> says not to.
+    ds.crop = ds.k1 < 0.0;
     if (const XmlNode* c = d->child("center")) {
       if (auto v = f.numbers(*c, 2, "camera><distortion><center")) {
         ds.center_x = (*v)[0];
@@ -112,8 +113,17 @@ double plugin_double(const SensorPlugin& p, const std::string& key, double fallb
 bool is_camera_plugin(const std::string& filename) {
   static const std::set<std::string> plugins = {"libgazebo_ros_camera.so", "libgazebo_ros_multicamera.so",
                                                 "libgazebo_ros_depth_camera.so", "libgazebo_ros_openni_kinect.so",
-                                                "libgazebo_ros_prosilica.so"};
+                                                "libgazebo_ros_prosilica.so", "libgazebo_ros_triggered_camera.so"};
   return plugins.count(filename) > 0;
+}
+
+bool is_gazebo_image_format(const std::string& format) {
+  // rendering::Camera's formats in Gazebo 11 (its OgrePixelFormat).
+  static const std::set<std::string> formats = {
+      "L8",          "L_INT8",      "L16",         "L_INT16",     "L_UINT16",  "R8G8B8",   "RGB_INT8",
+      "B8G8R8",      "BGR_INT8",    "R16G16B16",   "RGB_INT16",   "RGB_UINT16", "FLOAT32", "R_FLOAT32",
+      "FLOAT16",     "R_FLOAT16",   "BAYER_RGGB8", "BAYER_BGGR8", "BAYER_GBRG8", "BAYER_GRBG8"};
+  return formats.count(format) > 0;
 }
 
 CameraSpec read_camera(const XmlNode& sensor, const SensorFields& f, const std::string& type) {
@@ -149,8 +159,9 @@ void read_camera_plugin(CameraSpec& c, SensorPlugin& plugin, const std::string& 
     return;
   }
   const std::string camera_name = param(plugin, "cameraName", "");
-  const std::string image = param(plugin, "imageTopicName", "image_raw");
-  const std::string info = param(plugin, "cameraInfoTopicName", "camera_info");
+  // The depth plugins publish their colour image as an infrared one unless told otherwise.
+  const std::string image = param(plugin, "imageTopicName", depth_plugin ? "ir/image_raw" : "image_raw");
+  const std::string info = param(plugin, "cameraInfoTopicName", depth_plugin ? "ir/camera_info" : "camera_info");
   plugin.frame = param(plugin, "frameName", "/world");
   c.focal_length = plugin_double(plugin, "focalLength", 0.0, f, e);
   c.cx = plugin_double(plugin, "Cx", 0.0, f, e);
@@ -160,12 +171,29 @@ void read_camera_plugin(CameraSpec& c, SensorPlugin& plugin, const std::string& 
   const char* keys[5] = {"distortionK1", "distortionK2", "distortionT1", "distortionT2", "distortionK3"};
   for (int i = 0; i < 5; ++i) c.ros_distortion[static_cast<std::size_t>(i)] = plugin_double(plugin, keys[i], 0.0, f, e);
   if (c.focal_length < 0.0) f.error(e.line, "<plugin><focalLength> must be >= 0 (0: from the FOV)");
+  if (const auto crop = plugin.parameters.find("borderCrop"); crop != plugin.parameters.end()) {
+    const auto b = parse_bool(crop->second);
+    const XmlNode* at = e.child("borderCrop");
+    if (!b) f.error(at != nullptr ? at->line : e.line, "<plugin><borderCrop> is not a boolean: \"" + crop->second + "\"");
+    // Gazebo crops only a barrel distortion (k1 < 0), whatever the plugin says.
+    for (CameraLens& lens : c.lenses) lens.distortion.crop = b.value_or(true) && lens.distortion.k1 < 0.0;
+  }
   const std::string& ns = plugin.robot_namespace;
   if (file == "libgazebo_ros_multicamera.so") {
-    // One node handle per camera: <cameraName>/<camera name>.
+    // gazebo_ros_multicamera gives a camera whose name holds "left" the node handle
+    // <cameraName>/left, one holding "right" <cameraName>/right, and publishes no other.
     for (const CameraLens& lens : c.lenses) {
-      c.image_topics.push_back(resolve(ns, camera_name + "/" + lens.name, image));
-      c.info_topics.push_back(resolve(ns, camera_name + "/" + lens.name, info));
+      const char* side = lens.name.find("left") != std::string::npos    ? "left"
+                         : lens.name.find("right") != std::string::npos ? "right"
+                                                                         : nullptr;
+      if (side == nullptr) {
+        f.warning(e.line, file + " publishes only cameras whose name holds left or right, not camera '" + lens.name + "'");
+        c.image_topics.emplace_back();
+        c.info_topics.emplace_back();
+        continue;
+      }
+      c.image_topics.push_back(resolve(ns, camera_name + "/" + side, image));
+      c.info_topics.push_back(resolve(ns, camera_name + "/" + side, info));
     }
   } else {
     c.image_topics.push_back(resolve(ns, camera_name, image));
@@ -176,12 +204,22 @@ void read_camera_plugin(CameraSpec& c, SensorPlugin& plugin, const std::string& 
     c.depth_info_topic = resolve(ns, camera_name, param(plugin, "depthImageCameraInfoTopicName", "depth/camera_info"));
     c.points_topic = resolve(ns, camera_name, param(plugin, "pointCloudTopicName", "points"));
     c.point_cloud_cutoff = plugin_double(plugin, "pointCloudCutoff", 0.4, f, e);
-    c.point_cloud_cutoff_max = plugin_double(plugin, "pointCloudCutoffMax", 5.0, f, e);
+    // gazebo_ros_depth_camera keeps every depth beyond its cutoff; openni_kinect cuts at 5 m.
+    c.point_cloud_cutoff_max = file == "libgazebo_ros_openni_kinect.so"
+                                   ? plugin_double(plugin, "pointCloudCutoffMax", 5.0, f, e)
+                                   : std::numeric_limits<double>::infinity();
     if (!(c.point_cloud_cutoff >= 0.0 && c.point_cloud_cutoff < c.point_cloud_cutoff_max))
       f.error(e.line, "<plugin> needs 0 <= pointCloudCutoff < pointCloudCutoffMax, got " +
                           std::to_string(c.point_cloud_cutoff) + " and " + std::to_string(c.point_cloud_cutoff_max));
   }
+  if (file == "libgazebo_ros_triggered_camera.so")
+    c.trigger_topic = resolve(ns, camera_name, param(plugin, "triggerTopicName", "image_trigger"));
   plugin.topic = c.image_topics.front();
+  for (const std::string& t : c.image_topics)
+    if (!t.empty()) {
+      plugin.topic = t;
+      break;
+    }
 }
 
 }  // namespace mechsim::description::detail

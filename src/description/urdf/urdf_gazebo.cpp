@@ -45,6 +45,9 @@ bool read_link_property(const XMLElement& c, Problems& p, const std::string& wha
   else if (tag == "minDepth") props.min_depth = p.number_text(c, what);
   else if (tag == "maxVel") props.max_vel = p.number_text(c, what);
   else if (tag == "selfCollide") props.self_collide = bool_text(c, p, what);
+  // sdformat's URDF reader knows <laserRetro> (it becomes every collision's <laser_retro>);
+  // mechsim also takes the SDF spelling.
+  else if (tag == "laserRetro" || tag == "laser_retro") props.laser_retro = p.number_text(c, what);
   else if (tag == "gravity") props.gravity = bool_text(c, p, what);
   else if (tag == "turnGravityOff") {
     if (auto off = bool_text(c, p, what)) props.gravity = !*off;

@@ -14,6 +14,7 @@
 
 #include "description/sensor_spec.hpp"
 #include "description/urdf/urdf_reading.hpp"
+#include "description/urdf/urdf_sensors.hpp"
 #include "description/urdf/validation.hpp"
 #include "description/utf8.hpp"
 
@@ -329,6 +330,9 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   model.gazebo_joints = std::move(skeleton.gazebo_joints);
   model.plugins = std::move(skeleton.plugins);
   model.sensors = std::move(skeleton.sensors);
+  // The skeleton the sensors were read against had no collisions: contact sensors name them.
+  for (SensorSpec& sensor : model.sensors)
+    if (auto* contact = std::get_if<ContactSpec>(&sensor.details)) detail::resolve_contact(*contact, sensor.link, model);
 
   for (const std::string& m : urdfdom_messages) report.warnings.push_back(location(source_name, 0) + "urdfdom: " + m);
   if (!unresolved.empty()) {

@@ -219,12 +219,36 @@ ContactSpec read_contact(const XmlNode& sensor, const SensorFields& f) {
     return c;
   }
   for (const XmlNode* col : block->children_named("collision")) {
-    if (col->text.empty()) f.error(col->line, "<contact><collision> is empty");
-    else c.collisions.push_back(col->text);
+    const auto name = col->attribute("name");
+    if (!col->text.empty()) {
+      c.collisions.push_back(col->text);
+    } else if (name && !name->empty()) {
+      // Old worlds (gazebo_plugins' bumper test) write <collision name="NAME"/>.
+      f.warning(col->line, "<contact><collision name=\"" + *name + "\"/> taken as <collision>" + *name + "</collision>");
+      c.collisions.push_back(*name);
+    } else {
+      f.error(col->line, "<contact><collision> is empty");
+    }
   }
   if (c.collisions.empty() && block->child("collision") == nullptr)
     f.error(block->line, "<contact> names no <collision>");
   return c;
+}
+
+UnsupportedSpec read_sonar(const XmlNode& sensor, const SensorFields& f) {
+  const XmlNode* sonar = sensor.child("sonar");
+  if (sonar == nullptr) {
+    f.error(sensor.line, "a sonar sensor needs a <sonar> element (min, max, radius)");
+  } else {
+    const double lo = f.number_or(*sonar, "min", "sonar><min", 0.0);
+    const double hi = f.number_or(*sonar, "max", "sonar><max", 1.0);
+    const double radius = f.number_or(*sonar, "radius", "sonar><radius", 0.5);
+    if (radius < 0.0) f.error(sonar->line, "<sonar><radius> must be >= 0, got " + std::to_string(radius));
+    if (lo < 0.0) f.error(sonar->line, "<sonar><min> must be >= 0, got " + std::to_string(lo));
+    if (lo > hi) f.error(sonar->line, "<sonar> min " + std::to_string(lo) + " must not exceed max " + std::to_string(hi));
+  }
+  return UnsupportedSpec{"mechsim does not simulate sonar sensors (Gazebo's cone of contacts, published on Gazebo's own "
+                         "transport only); a ray sensor with libgazebo_ros_range.so gives sensor_msgs/Range"};
 }
 
 ForceTorqueSpec read_force_torque(const XmlNode& sensor, const SensorFields& f) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -17,7 +18,7 @@ std::string unsupported_type_reason(const std::string& type) {
   static const std::set<std::string> cameras = {"thermal", "logical_camera", "rgbd_camera", "depth_camera",
                                                 "boundingbox_camera", "segmentation_camera"};
   static const std::set<std::string> others = {"gps",  "navsat",           "altimeter",           "magnetometer",
-                                               "sonar", "rfid",            "rfidtag",             "wireless_receiver",
+                                               "rfid",            "rfidtag",             "wireless_receiver",
                                                "wireless_transmitter", "wireless_transceiver", "air_pressure", "custom"};
   if (cameras.count(type)) return "mechsim simulates camera, depth, multicamera and wideanglecamera, not " + type;
   if (others.count(type)) return "mechsim does not simulate " + type + " sensors";
@@ -26,7 +27,9 @@ std::string unsupported_type_reason(const std::string& type) {
 
 // Plugins whose output mechsim publishes, by sensor kind.
 bool plugin_published(std::string_view kind, std::string_view filename) {
-  if (kind == "ray") return filename == "libgazebo_ros_laser.so" || filename == "libgazebo_ros_gpu_laser.so";
+  if (kind == "ray")
+    return filename == "libgazebo_ros_laser.so" || filename == "libgazebo_ros_gpu_laser.so" ||
+           filename == "libgazebo_ros_range.so" || filename == "libgazebo_ros_block_laser.so";
   if (kind == "imu") return filename == "libgazebo_ros_imu_sensor.so";
   if (kind == "contact") return filename == "libgazebo_ros_bumper.so";
   if (kind == "camera") return is_camera_plugin(std::string(filename));  // ros/sensor_publishers
@@ -55,6 +58,12 @@ void name_outputs(SensorPlugin& plugin, const std::string& kind, const std::stri
   const auto& p = plugin.parameters;
   const std::string& file = plugin.filename;
   if (file == "libgazebo_ros_laser.so" || file == "libgazebo_ros_gpu_laser.so") {
+    plugin.topic = param(p, "topicName", "/world");
+    plugin.frame = param(p, "frameName", "/world");
+  } else if (file == "libgazebo_ros_range.so") {
+    plugin.topic = param(p, "topicName", "/range");
+    plugin.frame = param(p, "frameName", "/world");
+  } else if (file == "libgazebo_ros_block_laser.so") {
     plugin.topic = param(p, "topicName", "/world");
     plugin.frame = param(p, "frameName", "/world");
   } else if (file == "libgazebo_ros_imu_sensor.so") {
@@ -169,7 +178,51 @@ std::string body_link(const SensorPlugin& plugin, const RobotModel& robot, const
   return body;
 }
 
+// gazebo_ros_range's parameters (defaults: fov 0.05 rad, ultrasound, no noise, the sensor's
+// rate) on a ray sensor.
+void read_range_plugin(RaySpec& ray, SensorSpec& s, const SensorPlugin& plugin, const SensorFields& f,
+                       const XmlNode& e) {
+  ray.output = RayOutput::Range;
+  ray.plugin_noise = plugin_deviation(plugin, "gaussianNoise", f, e);
+  ray.fov = plugin_number(plugin, "fov", f, e).value_or(0.05);
+  const std::string radiation = param(plugin.parameters, "radiation", "ultrasound");
+  ray.radiation = radiation == "ultrasound" ? 0 : 1;
+  // The plugin publishes at most at its <updateRate> (0: every sensor update).
+  const double rate = plugin_rate(plugin, "updateRate", f, e, 0.0);
+  if (rate > 0.0 && (s.update_rate <= 0.0 || rate < s.update_rate)) s.update_rate = rate;
+}
+
 }  // namespace
+
+// The collision shapes a contact sensor's <collision> names refer to: a collision of the sensor's
+// link (then of any link) with that name (SDF models name theirs; URDF may), else Gazebo's names for
+// a URDF link's shapes (<link>_collision[_N], lumped <parent>_fixed_joint_lump__<link>_collision):
+// every shape of that link. Names that fit neither are left to the sensor (it names the problem).
+void resolve_contact(ContactSpec& c, const std::string& link, const RobotModel& robot) {
+  c.targets.clear();
+  for (const std::string& name : c.collisions) {
+    std::optional<ContactSpec::Target> found;
+    const auto by_name = [&](const Link& l) {
+      for (std::size_t i = 0; i < l.collisions.size(); ++i)
+        if (!l.collisions[i].name.empty() && l.collisions[i].name == name) return std::optional<ContactSpec::Target>(ContactSpec::Target{l.name, static_cast<int>(i)});
+      return std::optional<ContactSpec::Target>();
+    };
+    if (const Link* own = robot.link(link)) found = by_name(*own);
+    for (std::size_t i = 0; !found && i < robot.links.size(); ++i) found = by_name(robot.links[i]);
+    if (!found) {
+      std::string base = name;
+      const std::string lump = "_fixed_joint_lump__";
+      if (const auto at = base.find(lump); at != std::string::npos) base = base.substr(at + lump.size());
+      const auto at = base.rfind("_collision");
+      if (at != std::string::npos && robot.link(base.substr(0, at)) != nullptr) found = ContactSpec::Target{base.substr(0, at), -1};
+    }
+    if (!found) {
+      c.targets.clear();  // one the description cannot place: the sensor resolves them all by name
+      return;
+    }
+    c.targets.push_back(*found);
+  }
+}
 
 void read_sensor(const XmlNode& sensor, const std::string& reference, const RobotModel& robot, Problems& p,
                  std::vector<SensorSpec>& out) {
@@ -213,8 +266,13 @@ void read_sensor(const XmlNode& sensor, const std::string& reference, const Robo
     s.details = read_imu(sensor, f);
     kind = "imu";
   } else if (s.type == "contact") {
-    s.details = read_contact(sensor, f);
+    ContactSpec contact = read_contact(sensor, f);
+    resolve_contact(contact, s.link, robot);
+    s.details = std::move(contact);
     kind = "contact";
+  } else if (s.type == "sonar") {
+    s.details = read_sonar(sensor, f);
+    kind = "sonar";
   } else if (s.type == "force_torque") {
     ForceTorqueSpec ft = read_force_torque(sensor, f);
     if (joint == nullptr) {
@@ -265,12 +323,26 @@ void read_sensor(const XmlNode& sensor, const std::string& reference, const Robo
       const double plugin_rate_hz = plugin_rate(plugin, "updateRateHZ", f, e, 0.0);
       if (plugin_rate_hz > 0.0 && (s.update_rate <= 0.0 || plugin_rate_hz < s.update_rate)) s.update_rate = plugin_rate_hz;
     } else if (auto* ray = std::get_if<RaySpec>(&s.details)) {
-      // gazebo_ros_laser ignores the old block laser's <gaussianNoise>; mechsim takes it as the
-      // ranges' deviation when the sensor has no <noise> of its own (the PR2's Hokuyos).
       const double gn = plugin_deviation(plugin, "gaussianNoise", f, e);
-      if (gn > 0.0 && !ray->noise.active()) ray->noise.stddev = gn;
+      if (plugin.filename == "libgazebo_ros_range.so") {
+        read_range_plugin(*ray, s, plugin, f, e);
+      } else if (plugin.filename == "libgazebo_ros_block_laser.so") {
+        // The block laser reads <updateRate> and <hokuyoMinIntensity> but uses neither: the
+        // sensor's own rate paces it.
+        ray->output = RayOutput::PointCloud;
+        ray->plugin_noise = gn;
+      } else if (gn > 0.0 && !ray->noise.active()) {
+        // gazebo_ros_laser ignores the old block laser's <gaussianNoise>; mechsim takes it as the
+        // ranges' deviation when the sensor has no <noise> of its own (the PR2's Hokuyos).
+        ray->noise.stddev = gn;
+      }
     } else if (auto* camera = std::get_if<CameraSpec>(&s.details)) {
       if (is_camera_plugin(plugin.filename)) read_camera_plugin(*camera, plugin, s.type, f, e);
+    } else if (s.type == "sonar" && plugin.filename == "libgazebo_ros_range.so") {
+      // Gazebo's gazebo_ros_range refuses a sonar sensor at load ("GazeboRosRange controller
+      // requires a Ray Sensor as its parent"), so nothing publishes it.
+      plugin.unsupported = "libgazebo_ros_range.so needs a ray sensor (Gazebo's plugin refuses a sonar sensor); use "
+                           "<sensor type=\"ray\"> for a sensor_msgs/Range";
     }
     s.plugin = std::move(plugin);
   }

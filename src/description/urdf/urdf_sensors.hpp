@@ -17,6 +17,10 @@ namespace mechsim::description::detail {
 void read_sensor(const XmlNode& sensor, const std::string& reference, const RobotModel& robot, Problems& p,
                  std::vector<SensorSpec>& out);
 
+// Resolves a contact sensor's <collision> names against the robot's links and collisions
+// (ContactSpec::targets); the URDF reader calls it again once the links carry their collisions.
+void resolve_contact(ContactSpec& c, const std::string& link, const RobotModel& robot);
+
 // A model <plugin> of a top-level <gazebo>: when it is a sensor plugin (gazebo_ros_imu, hector's
 // IMU, p3d, f3d, ft_sensor) appends its spec and returns true; false for any other plugin.
 bool read_sensor_plugin(const XmlNode& plugin, const RobotModel& robot, Problems& p, std::vector<SensorSpec>& out);
@@ -53,12 +57,16 @@ RaySpec read_ray(const XmlNode& sensor, const SensorFields& f, bool gpu);
 ImuSpec read_imu(const XmlNode& sensor, const SensorFields& f);
 ContactSpec read_contact(const XmlNode& sensor, const SensorFields& f);
 ForceTorqueSpec read_force_torque(const XmlNode& sensor, const SensorFields& f);
+// sonar: <sonar><min><max><radius> checked as Gazebo checks them; not simulated (the reason says so).
+UnsupportedSpec read_sonar(const XmlNode& sensor, const SensorFields& f);
 // camera, depth, multicamera, wideanglecamera (urdf_camera.cpp): the <camera> elements; then the
 // ROS camera plugin's intrinsics and topics (sets plugin.topic and plugin.frame).
 CameraSpec read_camera(const XmlNode& sensor, const SensorFields& f, const std::string& type);
 void read_camera_plugin(CameraSpec& camera, SensorPlugin& plugin, const std::string& type, const SensorFields& f,
                         const XmlNode& plugin_element);
 bool is_camera_plugin(const std::string& filename);
+// One of the <image><format> names Gazebo 11's camera knows.
+bool is_gazebo_image_format(const std::string& format);
 
 // Pose from "x y z roll pitch yaw" (fixed axes, URDF/SDF convention).
 Pose pose_from_xyz_rpy(const std::vector<double>& v);

@@ -76,10 +76,15 @@ TEST(SensorMessages, ContactsUseOnlyTheStatesInUse) {
   in.states[0].contact_normals = {{0, 0, 1}};
   in.states[0].wrenches = {{{0, 0, 5}, {0, 0, 0}}};
   in.states[0].depths = {0.001};
+  in.states[0].collision2_name = "ground_plane::link::collision";
   gazebo_msgs::ContactsState out;
-  fill_contacts(in, out);
+  fill_contacts(in, 12.05, out);
   ASSERT_EQ(out.states.size(), 1u);
   EXPECT_EQ(out.states[0].collision1_name, "pr2::base_link::base_link_collision");
+  // gazebo_ros_bumper's debug line, the time as ros::Time prints it.
+  EXPECT_EQ(out.states[0].info,
+            "Debug:  i:(0/1)     my geom:pr2::base_link::base_link_collision   other geom:ground_plane::link::collision"
+            "         time:12.050000000\n");
   EXPECT_DOUBLE_EQ(out.states[0].contact_positions.at(0).z, 3.0);
   EXPECT_DOUBLE_EQ(out.states[0].wrenches.at(0).force.z, 5.0);
   EXPECT_DOUBLE_EQ(out.states[0].depths.at(0), 0.001);
@@ -97,6 +102,63 @@ TEST(SensorMessages, OdometryCovarianceIsP3dsDiagonal) {
   EXPECT_DOUBLE_EQ(out.twist.twist.linear.x, 0.5);
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c) EXPECT_DOUBLE_EQ(out.twist.covariance[6 * r + c], r == c ? 1e-4 : 0.0);
+}
+
+TEST(SensorMessages, RangeAsGazeboRosRangeFillsIt) {
+  sensors::RangeReading in;
+  in.radiation = 1;
+  in.field_of_view = 0.5;
+  in.min_range = 0.01;
+  in.max_range = 0.75;
+  in.range = 0.225;
+  sensor_msgs::Range out;
+  fill_range(in, out);
+  EXPECT_EQ(out.radiation_type, sensor_msgs::Range::INFRARED);
+  EXPECT_FLOAT_EQ(out.field_of_view, 0.5f);
+  EXPECT_FLOAT_EQ(out.min_range, 0.01f);
+  EXPECT_FLOAT_EQ(out.max_range, 0.75f);
+  EXPECT_FLOAT_EQ(out.range, 0.225f);
+}
+
+TEST(SensorMessages, BlockLaserCloudHasOneUnnamedIntensityChannel) {
+  sensors::PointCloudReading in;
+  in.points = {{1, 2, 3}, {4, 5, -6}};
+  in.intensities = {100.0f, 0.5f};
+  sensor_msgs::PointCloud out;
+  fill_block_cloud(in, out);
+  ASSERT_EQ(out.points.size(), 2u);
+  EXPECT_FLOAT_EQ(out.points[1].z, -6.0f);
+  ASSERT_EQ(out.channels.size(), 1u);
+  EXPECT_EQ(out.channels[0].name, "");
+  EXPECT_EQ(out.channels[0].values, (std::vector<float>{100.0f, 0.5f}));
+}
+
+TEST(SensorMessages, SixteenBitAndBayerImages) {
+  const sensors::CameraImage in = image_2x3();
+  EXPECT_EQ(image_encoding("L16"), "mono16");
+  EXPECT_EQ(image_encoding("L_INT16"), "mono16");
+  EXPECT_EQ(image_encoding("R16G16B16"), "rgb16");
+  EXPECT_EQ(image_encoding("RGB_INT16"), "rgb16");
+  EXPECT_EQ(image_encoding("BAYER_GRBG8"), "bayer_grbg8");
+  EXPECT_EQ(image_encoding("FLOAT32"), "bgr8") << "gazebo_ros_camera_utils' fallback";
+  sensor_msgs::Image out;
+  fill_image(in, "rgb16", out);
+  EXPECT_EQ(out.step, 18u);
+  ASSERT_EQ(out.data.size(), 36u);
+  EXPECT_EQ(out.is_bigendian, 0);
+  EXPECT_EQ(out.data[2 * (3 * 4 + 1)] | (out.data[2 * (3 * 4 + 1) + 1] << 8), 41 * 257);  // pixel 4's green
+  fill_image(in, "mono16", out);
+  EXPECT_EQ(out.step, 6u);
+  ASSERT_EQ(out.data.size(), 12u);
+  EXPECT_EQ(out.data[8] | (out.data[9] << 8), 257 * std::lround(0.299 * 40 + 0.587 * 41 + 0.114 * 42));
+  fill_image(in, "bayer_rggb8", out);
+  EXPECT_EQ(out.step, 3u);
+  ASSERT_EQ(out.data.size(), 6u);
+  // Row 0: r g r; row 1: g b g.
+  EXPECT_EQ(out.data[0], 0);    // pixel 0's red
+  EXPECT_EQ(out.data[1], 11);   // pixel 1's green
+  EXPECT_EQ(out.data[4], 42);   // pixel 4's blue
+  EXPECT_EQ(out.data[5], 51);   // pixel 5's green
 }
 
 TEST(SensorMessages, ImagesInTheirEncodings) {
@@ -156,7 +218,7 @@ TEST(SensorMessages, CameraInfoCarriesKPD) {
 TEST(SensorMessages, PointCloudDecodesByItsFields) {
   const sensors::CameraImage in = image_2x3();
   sensor_msgs::PointCloud2 cloud;
-  fill_point_cloud(in, cloud);
+  fill_point_cloud(in, "bgr8", cloud);
   const std::uint32_t size = ::ros::serialization::serializationLength(cloud);
   std::vector<std::uint8_t> buffer(size);
   ::ros::serialization::OStream os(buffer.data(), size);
@@ -187,10 +249,35 @@ TEST(SensorMessages, PointCloudDecodesByItsFields) {
     EXPECT_FLOAT_EQ(y, -0.1f * static_cast<float>(i));
     if (i == 4) EXPECT_TRUE(std::isnan(z));
     else EXPECT_FLOAT_EQ(z, in.depth[i]);
+    // A bgr8 image's bytes in order: PCL's packed 0x00RRGGBB.
     EXPECT_EQ((rgb >> 16) & 0xff, 10 * i) << "red of point " << i;
     EXPECT_EQ((rgb >> 8) & 0xff, 10 * i + 1);
     EXPECT_EQ(rgb & 0xff, 10 * i + 2);
   }
+}
+
+// The depth plugins copy the image's bytes as they are: an rgb8 image's red lands where PCL reads
+// blue; a mono image's grey thrice; a 16-bit image gives no colour.
+TEST(SensorMessages, PointCloudColourBytesAreTheImagesAsThePluginsCopyThem) {
+  const sensors::CameraImage in = image_2x3();
+  sensor_msgs::PointCloud2 cloud;
+  const auto bytes = [&](std::size_t i) { return cloud.data.data() + i * cloud.point_step + 16; };
+  fill_point_cloud(in, "rgb8", cloud);
+  EXPECT_EQ(bytes(4)[0], 40);
+  EXPECT_EQ(bytes(4)[1], 41);
+  EXPECT_EQ(bytes(4)[2], 42);
+  EXPECT_FALSE(cloud.is_dense);
+  fill_point_cloud(in, "mono8", cloud);
+  const auto grey = static_cast<std::uint8_t>(std::lround(0.299 * 40 + 0.587 * 41 + 0.114 * 42));
+  EXPECT_EQ(bytes(4)[0], grey);
+  EXPECT_EQ(bytes(4)[2], grey);
+  fill_point_cloud(in, "mono16", cloud);
+  EXPECT_EQ(bytes(4)[0], 0);
+  EXPECT_EQ(bytes(4)[1], 0);
+  sensors::CameraImage all = in;
+  all.points[3 * 4 + 2] = 1.0f;
+  fill_point_cloud(all, "rgb8", cloud);
+  EXPECT_TRUE(cloud.is_dense) << "no NaN point";
 }
 
 }  // namespace

@@ -179,14 +179,20 @@ TEST(CameraSensor, StereoDisparityMatchesTheBaselineInP) {
 }
 
 // Barrel distortion (k1 < 0) pulls the box's edge (at x = -0.5 in normalised coordinates) towards
-// the centre by x (1 + k1 x^2).
+// the centre by x (1 + k1 x^2); Gazebo's crop (the default) then scales the image about its middle
+// by 1 / (1 + k1 r^2) of a corner (r^2 = 0.5 in texture units).
 TEST(CameraSensor, DistortionMovesTheEdgeAsPlumbBob) {
   const std::string dist = "<distortion><k1>-0.25</k1><center>0.5 0.5</center></distortion>";
   Rig plain(camera_block("camera", lens(), R"(<plugin name="c" filename="libgazebo_ros_camera.so"/>)"), 0.6);
-  Rig bent(camera_block("camera", lens("", dist), R"(<plugin name="c" filename="libgazebo_ros_camera.so"/>)"), 0.6);
-  SensorSet a(plain.robot.sensors, plain.model, 1), b(bent.robot.sensors, bent.model, 1);
+  Rig bent(camera_block("camera", lens("", dist),
+                        R"(<plugin name="c" filename="libgazebo_ros_camera.so"><borderCrop>false</borderCrop></plugin>)"),
+           0.6);
+  Rig cropped(camera_block("camera", lens("", dist), R"(<plugin name="c" filename="libgazebo_ros_camera.so"/>)"), 0.6);
+  SensorSet a(plain.robot.sensors, plain.model, 1), b(bent.robot.sensors, bent.model, 1),
+      c(cropped.robot.sensors, cropped.model, 1);
   const CameraImage& ia = sample(a, *plain.physics).images.at(0);
   const CameraImage& ib = sample(b, *bent.physics).images.at(0);
+  const CameraImage& ic = sample(c, *cropped.physics).images.at(0);
   const double f = ia.info.K[0], cx = ia.info.K[2], cy = ia.info.K[5];
   auto edge = [&](const CameraImage& im) {
     const int v = static_cast<int>(std::lround(cy));
@@ -199,6 +205,8 @@ TEST(CameraSensor, DistortionMovesTheEdgeAsPlumbBob) {
   const double expected = cx + f * xu * (1 - 0.25 * xu * xu);
   EXPECT_NEAR(edge(ib), expected, 1.0);
   EXPECT_GT(std::abs(edge(ib) - edge(ia)), 2);  // the distortion is visible at all
+  const double scale = 1.0 - 0.25 * 0.5;
+  EXPECT_NEAR(edge(ic), cx + (expected - cx) / scale, 1.0);
 }
 
 TEST(CameraSensor, NoiseIsSeededWithTheConfiguredDeviation) {

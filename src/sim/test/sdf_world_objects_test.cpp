@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -59,6 +60,36 @@ TEST(SdfWorldObjects, Pr2ScanWorldsSphereBoxAndCylinderStandWhereTheFileSays) {
 }
 
 // Free cylinders and spheres fall and rest on the ground at their own size.
+// pr2_gazebo's scan.world gives its objects' collisions laser_retro values (the PR2's Hokuyos
+// report them as intensities): each world object's geom carries its collision's, the ground none.
+TEST(SdfWorldObjects, Pr2ScanWorldsObjectsCarryTheirLaserRetro) {
+  const fs::path file = fs::path(MECHSIM_SHARED_DIR) / "robots/pr2_simulator/pr2_gazebo/test/sensors/scan.world";
+  if (!fs::exists(file)) GTEST_SKIP() << "shared data not found at " << file;
+  WorldConfig config;
+  config.name = file.string();
+  const World world = make_world(config);
+  physics::BuildOptions options;
+  options.world = world.spec;
+  options.spawn.x = -2.0;
+  const auto model = physics::PhysicsModel::build(description::parse_urdf_string(kCube, "cube.urdf", {}), options);
+  std::map<std::string, double> retro;
+  for (int g = 0; g < model->geom_count(); ++g) {
+    const std::string name(model->geom_name(g));
+    if (name.rfind("box:", 0) == 0) retro[name.substr(4, name.find("::") - 4)] = model->geom_laser_retro(g);
+  }
+  EXPECT_EQ(retro, (std::map<std::string, double>{
+                       {"gplane", 0.0}, {"sphere1_model", 3000.0}, {"box1_model", 500.0}, {"cylinder1_model", 1000.0}}));
+  // A ray from the side hits the sphere and reports its retro.
+  physics::Physics p(model);
+  const physics::RayFilter filter = physics::make_ray_filter(*model, -1, physics::RayTargets::Collision);
+  const description::Vec3 dir{1.0, 0.0, 0.0};
+  double range = 0.0;
+  int hit = -1;
+  p.cast_rays(filter, {0.0, -0.5, 0.5064}, &dir, 1, 0.0, 10.0, &range, &hit);
+  EXPECT_NEAR(range, 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(model->geom_laser_retro(hit), 3000.0);
+}
+
 TEST(SdfWorldObjects, FreeCylindersAndSpheresRestAtTheirSize) {
   physics::BuildOptions options;
   physics::WorldBox ball, drum;

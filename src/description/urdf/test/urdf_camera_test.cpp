@@ -150,9 +150,10 @@ TEST(UrdfCamera, MissingCameraAndWrongPluginAreErrors) {
   EXPECT_THAT(error_of(R"(<gazebo reference="base"><sensor type="camera" name="cam"><camera/>
     <plugin name="k" filename="libgazebo_ros_openni_kinect.so"/></sensor></gazebo>)"),
               HasSubstr("t.urdf:4: sensor 'cam': libgazebo_ros_openni_kinect.so needs a sensor of type depth"));
-  EXPECT_THAT(error_of(R"(<gazebo reference="base"><sensor type="camera" name="cam"><camera>
+  // A format Gazebo's camera takes (FLOAT32) or does not know (it renders 8-bit colour then) loads.
+  EXPECT_EQ(error_of(R"(<gazebo reference="base"><sensor type="camera" name="cam"><camera>
     <image><format>FLOAT32</format></image></camera></sensor></gazebo>)"),
-              HasSubstr("t.urdf:4: sensor 'cam': <camera><image><format> \"FLOAT32\""));
+            "");
 }
 
 std::map<std::string, const SensorSpec*> cameras_of(const RobotModel& m) {
