@@ -1,0 +1,277 @@
+// gzserver mode: the model plugins gazebo_plugins' tests and users' worlds use, in an SDF world's
+// models and on spawned robots, on their gazebo_plugins topics (issue: Gazebo's own tests). One
+// world per plugin group, the test's own:
+//   - drives: skid steer, planar move, tricycle drive and Gazebo's own libDiffDrivePlugin.so in
+//     world models, a tricycle and a libDiffDrivePlugin robot spawned from URDF;
+//   - sensor-like plugins: p3d, the gazebo_ros_imu model plugin, an IMU sensor, a bumper (contact
+//     sensor) and the joint state publisher.
+#include <gmock/gmock.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <gazebo_msgs/ContactsState.h>
+#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "gazebo_world_fixture.hpp"
+
+namespace mechsim::ros::test {
+namespace {
+
+std::string write_world(const std::string& name, const std::string& text) {
+  const std::string path = log_dir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+template <class M>
+struct LatestOf {
+  LatestOf(::ros::NodeHandle& nh, const std::string& topic)
+      : sub(nh.subscribe<M>(topic, 5, [this](const typename M::ConstPtr& m) {
+          std::lock_guard<std::mutex> l(mutex);
+          msg = *m;
+          ++count;
+        })) {}
+  M get() {
+    std::lock_guard<std::mutex> l(mutex);
+    return msg;
+  }
+  int received() {
+    std::lock_guard<std::mutex> l(mutex);
+    return count;
+  }
+  std::mutex mutex;
+  M msg;
+  int count = 0;
+  ::ros::Subscriber sub;
+};
+
+double yaw_of(const geometry_msgs::Quaternion& q) {
+  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+}
+
+const char* const kWheelInertia = "<inertial><mass>0.5</mass><inertia><ixx>0.001</ixx><iyy>0.001</iyy><izz>0.001</izz></inertia></inertial>";
+
+// An SDF wheel link `name` at (x, y, z) of its model: a cylinder of radius 0.06 on its side.
+std::string sdf_wheel(const std::string& name, double x, double y, double z = 0.0) {
+  return "<link name=\"" + name + "\"><pose>" + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) +
+         " -1.5707963 0 0</pose>" + kWheelInertia +
+         "<collision name=\"c\"><geometry><cylinder><radius>0.06</radius><length>0.03</length></cylinder></geometry>"
+         "</collision></link>";
+}
+
+std::string sdf_joint(const std::string& name, const std::string& parent, const std::string& child, const char* axis = "0 1 0") {
+  return "<joint name=\"" + name + "\" type=\"revolute\"><parent>" + parent + "</parent><child>" + child + "</child><axis><xyz>" +
+         axis + "</xyz><use_parent_model_frame>true</use_parent_model_frame></axis></joint>";
+}
+
+std::string chassis(double length, double width, double mass = 5.0) {
+  return "<link name=\"chassis\"><inertial><mass>" + std::to_string(mass) +
+         "</mass><inertia><ixx>0.05</ixx><iyy>0.05</iyy><izz>0.05</izz></inertia></inertial>"
+         "<collision name=\"c\"><pose>0 0 0.05 0 0 0</pose><geometry><box><size>" +
+         std::to_string(length) + " " + std::to_string(width) + " 0.05</size></box></geometry></collision></link>";
+}
+
+// A frictionless caster ball under the chassis at x.
+std::string caster(double x) {
+  return "<link name=\"caster\"><pose>" + std::to_string(x) +
+         " 0 -0.01 0 0 0</pose><inertial><mass>0.1</mass><inertia><ixx>1e-4</ixx><iyy>1e-4</iyy><izz>1e-4</izz></inertia>"
+         "</inertial><collision name=\"c\"><geometry><sphere><radius>0.05</radius></sphere></geometry><surface><friction><ode>"
+         "<mu>0</mu><mu2>0</mu2></ode></friction></surface></collision></link>"
+         "<joint name=\"caster_fix\" type=\"fixed\"><parent>chassis</parent><child>caster</child></joint>";
+}
+
+std::string drive_world() {
+  std::string w = R"(<?xml version="1.0"?>
+<sdf version="1.6"><world name="default">
+  <include><uri>model://ground_plane</uri></include>
+  <include><uri>model://sun</uri></include>)";
+  // Skid steer: four wheels, world odometry with its TF.
+  w += "<model name=\"skid\"><pose>0 3 0.06 0 0 0</pose>" + chassis(0.4, 0.3) + sdf_wheel("lf", 0.12, 0.18) +
+       sdf_wheel("rf", 0.12, -0.18) + sdf_wheel("lr", -0.12, 0.18) + sdf_wheel("rr", -0.12, -0.18) +
+       sdf_joint("lf_joint", "chassis", "lf") + sdf_joint("rf_joint", "chassis", "rf") + sdf_joint("lr_joint", "chassis", "lr") +
+       sdf_joint("rr_joint", "chassis", "rr") + R"(
+    <plugin name="skid_steer" filename="libgazebo_ros_skid_steer_drive.so">
+      <leftFrontJoint>lf_joint</leftFrontJoint><rightFrontJoint>rf_joint</rightFrontJoint>
+      <leftRearJoint>lr_joint</leftRearJoint><rightRearJoint>rr_joint</rightRearJoint>
+      <wheelSeparation>0.36</wheelSeparation><wheelDiameter>0.12</wheelDiameter><torque>5</torque>
+      <commandTopic>skid/cmd_vel</commandTopic><odometryTopic>skid/odom</odometryTopic>
+      <odometryFrame>skid_odom</odometryFrame><robotBaseFrame>chassis</robotBaseFrame><broadcastTF>1</broadcastTF>
+    </plugin></model>)";
+  // Planar move: a box moved by its velocity command.
+  w += R"(<model name="planar"><pose>0 6 0.1 0 0 0</pose><link name="body">
+      <inertial><mass>2</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link>
+    <plugin name="object_controller" filename="libgazebo_ros_planar_move.so">
+      <commandTopic>planar/cmd_vel</commandTopic><odometryTopic>planar/odom</odometryTopic>
+      <odometryFrame>planar_odom</odometryFrame><odometryRate>20.0</odometryRate><robotBaseFrame>body</robotBaseFrame>
+    </plugin></model>)";
+  // Tricycle: a steered, driven front wheel 0.3 m ahead of two encoder wheels.
+  w += "<model name=\"trike\"><pose>0 -3 0.06 0 0 0</pose>" + chassis(0.45, 0.3) +
+       R"(<link name="fork"><pose>0.2 0 0 0 0 0</pose><inertial><mass>0.2</mass><inertia><ixx>1e-4</ixx><iyy>1e-4</iyy>
+       <izz>1e-4</izz></inertia></inertial></link>)" +
+       sdf_wheel("front_wheel", 0.2, 0.0) + sdf_wheel("left_wheel", -0.1, 0.15) + sdf_wheel("right_wheel", -0.1, -0.15) +
+       sdf_joint("front_steering_joint", "chassis", "fork", "0 0 1") + sdf_joint("front_wheel_joint", "fork", "front_wheel") +
+       sdf_joint("left_wheel_joint", "chassis", "left_wheel") + sdf_joint("right_wheel_joint", "chassis", "right_wheel") + R"(
+    <plugin name="tricycle_drive" filename="libgazebo_ros_tricycle_drive.so">
+      <actuatedWheelDiameter>0.12</actuatedWheelDiameter><encoderWheelDiameter>0.12</encoderWheelDiameter>
+      <encoderWheelSeparation>0.3</encoderWheelSeparation><odometrySource>encoder</odometrySource>
+      <commandTopic>trike/cmd_vel</commandTopic><odometryTopic>trike/odom</odometryTopic>
+      <odometryFrame>trike_odom</odometryFrame><robotBaseFrame>chassis</robotBaseFrame>
+      <publishWheelJointState>true</publishWheelJointState><updateRate>50</updateRate>
+    </plugin></model>)";
+  // Gazebo's own diff drive: no ROS, commanded on /gzdd/vel_cmd.
+  w += "<model name=\"gzdd\"><pose>0 -6 0.06 0 0 0</pose>" + chassis(0.4, 0.3) + caster(-0.15) + sdf_wheel("left_wheel", 0.1, 0.2) +
+       sdf_wheel("right_wheel", 0.1, -0.2) + sdf_joint("left_wheel_hinge", "chassis", "left_wheel") +
+       sdf_joint("right_wheel_hinge", "chassis", "right_wheel") + R"(
+    <plugin name="diff_drive" filename="libDiffDrivePlugin.so">
+      <left_joint>left_wheel_hinge</left_joint><right_joint>right_wheel_hinge</right_joint><torque>5</torque>
+    </plugin></model>
+</world></sdf>)";
+  return w;
+}
+
+// A tricycle in URDF, spawned: gazebo_plugins' default joint names, its topics under the spawn's
+// robot namespace.
+const char* const kTricycleUrdf = R"(<robot name="tricycle">
+  <link name="base_link">
+    <inertial><mass value="5"/><inertia ixx="0.05" iyy="0.05" izz="0.05" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin xyz="0.05 0 0.05"/><geometry><box size="0.45 0.3 0.05"/></geometry></collision>
+  </link>
+  <link name="fork"><inertial><mass value="0.2"/><inertia ixx="1e-4" iyy="1e-4" izz="1e-4" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="front_steering_joint" type="revolute"><parent link="base_link"/><child link="fork"/>
+    <origin xyz="0.2 0 0"/><axis xyz="0 0 1"/><limit lower="-1.6" upper="1.6" effort="20" velocity="5"/></joint>
+  <link name="front_wheel">
+    <inertial><mass value="0.5"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin rpy="1.5707963 0 0"/><geometry><cylinder radius="0.06" length="0.03"/></geometry></collision>
+  </link>
+  <joint name="front_wheel_joint" type="continuous"><parent link="fork"/><child link="front_wheel"/><axis xyz="0 1 0"/></joint>
+  <link name="left_wheel">
+    <inertial><mass value="0.5"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin rpy="1.5707963 0 0"/><geometry><cylinder radius="0.06" length="0.03"/></geometry></collision>
+  </link>
+  <joint name="left_wheel_joint" type="continuous"><parent link="base_link"/><child link="left_wheel"/>
+    <origin xyz="-0.1 0.15 0"/><axis xyz="0 1 0"/></joint>
+  <link name="right_wheel">
+    <inertial><mass value="0.5"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin rpy="1.5707963 0 0"/><geometry><cylinder radius="0.06" length="0.03"/></geometry></collision>
+  </link>
+  <joint name="right_wheel_joint" type="continuous"><parent link="base_link"/><child link="right_wheel"/>
+    <origin xyz="-0.1 -0.15 0"/><axis xyz="0 1 0"/></joint>
+  <gazebo>
+    <plugin name="tricycle_drive" filename="libgazebo_ros_tricycle_drive.so">
+      <actuatedWheelDiameter>0.12</actuatedWheelDiameter><encoderWheelDiameter>0.12</encoderWheelDiameter>
+      <encoderWheelSeparation>0.3</encoderWheelSeparation>
+    </plugin>
+  </gazebo>
+</robot>)";
+
+// Drives `publish` for `seconds` of simulated time (commands repeated as a teleop node does).
+template <class F>
+void for_sim_seconds(GazeboWorldNode& /*unused*/, double seconds, const std::function<double()>& now, F publish) {
+  const double t0 = now();
+  wait_until([&] {
+    publish();
+    return now() - t0 > seconds;
+  }, 10.0 * seconds + 10.0);
+}
+
+TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosTopics) {
+  start(false, write_world("drive_plugins.world", drive_world()));
+  gazebo_msgs::SpawnModel s;
+  s.request.model_name = "t2";
+  s.request.model_xml = kTricycleUrdf;
+  s.request.robot_namespace = "/t2";
+  s.request.initial_pose = pose_at(3.0, -3.0, 0.07);
+  ASSERT_TRUE(call("/gazebo/spawn_urdf_model", s));
+  ASSERT_TRUE(s.response.success) << s.response.status_message << "\n" << node_->log();
+
+  ::ros::Publisher skid_cmd = nh_.advertise<geometry_msgs::Twist>("/skid/cmd_vel", 1);
+  ::ros::Publisher planar_cmd = nh_.advertise<geometry_msgs::Twist>("/planar/cmd_vel", 1);
+  ::ros::Publisher trike_cmd = nh_.advertise<geometry_msgs::Twist>("/trike/cmd_vel", 1);
+  ::ros::Publisher t2_cmd = nh_.advertise<geometry_msgs::Twist>("/t2/cmd_vel", 1);
+  ::ros::Publisher gzdd_cmd = nh_.advertise<geometry_msgs::Pose>("/gzdd/vel_cmd", 1);
+  LatestOf<nav_msgs::Odometry> skid_odom(nh_, "/skid/odom"), planar_odom(nh_, "/planar/odom"), trike_odom(nh_, "/trike/odom"),
+      t2_odom(nh_, "/t2/odom");
+  LatestOf<sensor_msgs::JointState> trike_joints(nh_, "/joint_states");
+  ASSERT_TRUE(wait_until(
+      [&] {
+        return skid_cmd.getNumSubscribers() > 0 && planar_cmd.getNumSubscribers() > 0 && trike_cmd.getNumSubscribers() > 0 &&
+               t2_cmd.getNumSubscribers() > 0 && gzdd_cmd.getNumSubscribers() > 0 && skid_odom.received() > 0 &&
+               planar_odom.received() > 0 && trike_odom.received() > 0 && t2_odom.received() > 0;
+      },
+      20.0))
+      << "a drive plugin has no command subscriber or odometry; log:\n" << node_->log();
+  EXPECT_EQ(skid_odom.get().header.frame_id, "skid_odom");
+  EXPECT_EQ(skid_odom.get().child_frame_id, "chassis");
+  EXPECT_EQ(t2_odom.get().child_frame_id, "base_link");  // the tricycle's default robotBaseFrame
+
+  // Libdiffdriveplugin: nothing moves it before its first command.
+  const auto start_of = [&](const char* m) { return model_state(m).pose; };
+  const geometry_msgs::Pose skid0 = start_of("skid"), planar0 = start_of("planar"), trike0 = start_of("trike"),
+                            t20 = start_of("t2"), gzdd0 = start_of("gzdd");
+  const double t_idle = clock_now();
+  wait_until([&] { return clock_now() - t_idle > 0.5; }, 10.0);
+  EXPECT_NEAR(model_state("gzdd").pose.position.x, gzdd0.position.x, 0.005) << "libDiffDrivePlugin moved without a command";
+
+  geometry_msgs::Twist forward;  // skid steer: 0.3 m/s ahead
+  forward.linear.x = 0.3;
+  geometry_msgs::Twist sideways;  // planar move: 0.2 m/s to its left, holonomic
+  sideways.linear.y = 0.2;
+  geometry_msgs::Twist steer_left;  // tricycle: the front wheel at 0.3 m/s, steered 0.4 rad left
+  steer_left.linear.x = 0.3;
+  steer_left.angular.z = 0.4;
+  geometry_msgs::Twist straight;  // the spawned tricycle: straight ahead at 0.25 m/s
+  straight.linear.x = 0.25;
+  geometry_msgs::Pose gz;  // Gazebo's vel_cmd pose: 0.2 m/s, yaw rate 0.5 rad/s (clockwise)
+  gz.position.x = 0.2;
+  gz.orientation.z = std::sin(0.25);
+  gz.orientation.w = std::cos(0.25);
+  for_sim_seconds(*this, 2.0, [this] { return clock_now(); }, [&] {
+    skid_cmd.publish(forward);
+    planar_cmd.publish(sideways);
+    trike_cmd.publish(steer_left);
+    t2_cmd.publish(straight);
+    gzdd_cmd.publish(gz);
+  });
+  const geometry_msgs::Pose skid1 = model_state("skid").pose, planar1 = model_state("planar").pose,
+                            trike1 = model_state("trike").pose, t21 = model_state("t2").pose, gzdd1 = model_state("gzdd").pose;
+
+  const double skid_moved = skid1.position.x - skid0.position.x;
+  EXPECT_GT(skid_moved, 0.4) << "the skid steer moved " << skid_moved << " m in 2 s at 0.3 m/s";
+  EXPECT_NEAR(skid_odom.get().pose.pose.position.x, skid1.position.x, 0.05);  // world odometry
+
+  EXPECT_NEAR(planar1.position.y - planar0.position.y, 0.4, 0.08) << "planar move, 2 s at 0.2 m/s along y";
+  EXPECT_NEAR(planar1.position.x, planar0.position.x, 0.02);
+  EXPECT_NEAR(planar_odom.get().pose.pose.position.y, planar1.position.y, 0.03);
+
+  // The tricycle turns left (yaw rate v sin(0.4) / 0.3 = 0.39 rad/s at the front wheel's 0.3 m/s),
+  // and its encoder odometry turns the same way.
+  const double trike_yaw = yaw_of(trike1.orientation) - yaw_of(trike0.orientation);
+  EXPECT_GT(trike_yaw, 0.3) << "the tricycle turned " << trike_yaw << " rad";
+  EXPECT_GT(trike1.position.x - trike0.position.x, 0.25);
+  EXPECT_NEAR(yaw_of(trike_odom.get().pose.pose.orientation), trike_yaw, 0.25);
+  EXPECT_GT(trike_odom.get().twist.twist.angular.z, 0.1);
+  const sensor_msgs::JointState js = trike_joints.get();
+  ASSERT_EQ(js.name.size(), 4u) << "the tricycle's publishWheelJointState";
+  EXPECT_EQ(js.name[0], "front_steering_joint");
+  EXPECT_NEAR(js.position[0], 0.4, 0.05);
+
+  const double t2_moved = t21.position.x - t20.position.x;
+  EXPECT_GT(t2_moved, 0.3) << "the spawned tricycle moved " << t2_moved << " m at 0.25 m/s for 2 s";
+  EXPECT_NEAR(std::abs(yaw_of(t21.orientation)), 0.0, 0.1);
+  EXPECT_NEAR(t2_odom.get().pose.pose.position.x, t21.position.x, 0.05);  // world odometry (the default)
+
+  // libDiffDrivePlugin: forward and clockwise.
+  const double gzdd_yaw = yaw_of(gzdd1.orientation) - yaw_of(gzdd0.orientation);
+  EXPECT_LT(gzdd_yaw, -0.4) << "libDiffDrivePlugin's positive yaw rate turns clockwise; it turned " << gzdd_yaw;
+  EXPECT_GT(std::hypot(gzdd1.position.x - gzdd0.position.x, gzdd1.position.y - gzdd0.position.y), 0.2);
+}
+
+}  // namespace
+}  // namespace mechsim::ros::test
