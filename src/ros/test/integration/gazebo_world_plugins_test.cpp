@@ -111,7 +111,9 @@ std::string drive_world() {
       <commandTopic>planar/cmd_vel</commandTopic><odometryTopic>planar/odom</odometryTopic>
       <odometryFrame>planar_odom</odometryFrame><odometryRate>20.0</odometryRate><robotBaseFrame>body</robotBaseFrame>
     </plugin></model>)";
-  // Tricycle: a steered, driven front wheel 0.3 m ahead of two encoder wheels.
+  // Tricycle: a steered, driven front wheel 0.3 m ahead of two encoder wheels. No robotNamespace:
+  // gazebo_plugins' GazeboRos helper puts a world model's plugin under the model's name (topics
+  // /trike/..., frames trike/...), unlike the skid steer's and planar move's (the root).
   w += "<model name=\"trike\"><pose>0 -3 0.06 0 0 0</pose>" + chassis(0.45, 0.3) +
        R"(<link name="fork"><pose>0.2 0 0 0 0 0</pose><inertial><mass>0.2</mass><inertia><ixx>1e-4</ixx><iyy>1e-4</iyy>
        <izz>1e-4</izz></inertia></inertial></link>)" +
@@ -121,8 +123,8 @@ std::string drive_world() {
     <plugin name="tricycle_drive" filename="libgazebo_ros_tricycle_drive.so">
       <actuatedWheelDiameter>0.12</actuatedWheelDiameter><encoderWheelDiameter>0.12</encoderWheelDiameter>
       <encoderWheelSeparation>0.3</encoderWheelSeparation><odometrySource>encoder</odometrySource>
-      <commandTopic>trike/cmd_vel</commandTopic><odometryTopic>trike/odom</odometryTopic>
-      <odometryFrame>trike_odom</odometryFrame><robotBaseFrame>chassis</robotBaseFrame>
+      <commandTopic>cmd_vel</commandTopic><odometryTopic>odom</odometryTopic>
+      <odometryFrame>odom</odometryFrame><robotBaseFrame>chassis</robotBaseFrame>
       <publishWheelJointState>true</publishWheelJointState><updateRate>50</updateRate>
     </plugin></model>)";
   // Gazebo's own diff drive: no ROS, commanded on /gzdd/vel_cmd.
@@ -171,16 +173,6 @@ const char* const kTricycleUrdf = R"(<robot name="tricycle">
   </gazebo>
 </robot>)";
 
-// Drives `publish` for `seconds` of simulated time (commands repeated as a teleop node does).
-template <class F>
-void for_sim_seconds(GazeboWorldNode& /*unused*/, double seconds, const std::function<double()>& now, F publish) {
-  const double t0 = now();
-  wait_until([&] {
-    publish();
-    return now() - t0 > seconds;
-  }, 10.0 * seconds + 10.0);
-}
-
 TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosTopics) {
   start(false, write_world("drive_plugins.world", drive_world()));
   gazebo_msgs::SpawnModel s;
@@ -198,7 +190,7 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
   ::ros::Publisher gzdd_cmd = nh_.advertise<geometry_msgs::Pose>("/gzdd/vel_cmd", 1);
   LatestOf<nav_msgs::Odometry> skid_odom(nh_, "/skid/odom"), planar_odom(nh_, "/planar/odom"), trike_odom(nh_, "/trike/odom"),
       t2_odom(nh_, "/t2/odom");
-  LatestOf<sensor_msgs::JointState> trike_joints(nh_, "/joint_states");
+  LatestOf<sensor_msgs::JointState> trike_joints(nh_, "/trike/joint_states");
   ASSERT_TRUE(wait_until(
       [&] {
         return skid_cmd.getNumSubscribers() > 0 && planar_cmd.getNumSubscribers() > 0 && trike_cmd.getNumSubscribers() > 0 &&
@@ -209,7 +201,10 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
       << "a drive plugin has no command subscriber or odometry; log:\n" << node_->log();
   EXPECT_EQ(skid_odom.get().header.frame_id, "skid_odom");
   EXPECT_EQ(skid_odom.get().child_frame_id, "chassis");
-  EXPECT_EQ(t2_odom.get().child_frame_id, "base_link");  // the tricycle's default robotBaseFrame
+  EXPECT_EQ(t2_odom.get().header.frame_id, "t2/odom");  // the spawn's namespace is the TF prefix
+  EXPECT_EQ(t2_odom.get().child_frame_id, "t2/base_link");  // the tricycle's default robotBaseFrame
+  EXPECT_EQ(trike_odom.get().header.frame_id, "trike/odom");
+  EXPECT_EQ(trike_odom.get().child_frame_id, "trike/chassis");
 
   // Libdiffdriveplugin: nothing moves it before its first command.
   const auto start_of = [&](const char* m) { return model_state(m).pose; };
@@ -232,13 +227,16 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
   gz.position.x = 0.2;
   gz.orientation.z = std::sin(0.25);
   gz.orientation.w = std::cos(0.25);
-  for_sim_seconds(*this, 2.0, [this] { return clock_now(); }, [&] {
+  // 2 s of simulated time, the commands repeated as a teleop node does.
+  const double t0 = clock_now();
+  wait_until([&] {
     skid_cmd.publish(forward);
     planar_cmd.publish(sideways);
     trike_cmd.publish(steer_left);
     t2_cmd.publish(straight);
     gzdd_cmd.publish(gz);
-  });
+    return clock_now() - t0 > 2.0;
+  }, 30.0);
   const geometry_msgs::Pose skid1 = model_state("skid").pose, planar1 = model_state("planar").pose,
                             trike1 = model_state("trike").pose, t21 = model_state("t2").pose, gzdd1 = model_state("gzdd").pose;
 
@@ -271,6 +269,138 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
   const double gzdd_yaw = yaw_of(gzdd1.orientation) - yaw_of(gzdd0.orientation);
   EXPECT_LT(gzdd_yaw, -0.4) << "libDiffDrivePlugin's positive yaw rate turns clockwise; it turned " << gzdd_yaw;
   EXPECT_GT(std::hypot(gzdd1.position.x - gzdd0.position.x, gzdd1.position.y - gzdd0.position.y), 0.2);
+}
+
+// Sensor-like plugins in world models, each in the form gazebo_plugins' test worlds use.
+const char* const kSensorPluginWorld = R"(<?xml version="1.0"?>
+<sdf version="1.6"><world name="default">
+  <include><uri>model://ground_plane</uri></include>
+  <model name="imu_box">
+    <pose>0 0 0.1 0 0 0.5</pose>
+    <link name="link">
+      <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="collision"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+      <sensor name="imu_sensor" type="imu">
+        <always_on>true</always_on><update_rate>100</update_rate>
+        <plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so">
+          <topicName>/imu_box/sensor</topicName><bodyName>link</bodyName><updateRateHZ>100</updateRateHZ>
+          <gaussianNoise>0</gaussianNoise><frameName>imu_sensor_link</frameName>
+        </plugin>
+      </sensor>
+    </link>
+    <plugin name="imu" filename="libgazebo_ros_imu.so">
+      <bodyName>link</bodyName><topicName>imu_box/data</topicName><serviceName>imu_box/calibrate</serviceName>
+      <updateRate>50</updateRate><frameName>imu_box_link</frameName><gaussianNoise>0</gaussianNoise>
+    </plugin>
+  </model>
+  <model name="bumper_box">
+    <pose>2 0 0.1 0 0 0</pose>
+    <link name="link">
+      <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="collision"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+      <sensor name="bumper" type="contact">
+        <always_on>true</always_on><update_rate>50</update_rate>
+        <contact><collision>collision</collision></contact>
+        <plugin name="bumper_plugin" filename="libgazebo_ros_bumper.so">
+          <bumperTopicName>/bumper_box/bumper</bumperTopicName><frameName>world</frameName>
+        </plugin>
+      </sensor>
+    </link>
+  </model>
+  <model name="p3d_box">
+    <pose>-2 0 0.1 0 0 0</pose>
+    <link name="link">
+      <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="collision"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+    </link>
+    <plugin name="p3d" filename="libgazebo_ros_p3d.so">
+      <alwaysOn>true</alwaysOn><updateRate>50</updateRate><bodyName>link</bodyName>
+      <topicName>p3d_box/odom</topicName><frameName>world</frameName><gaussianNoise>0</gaussianNoise>
+    </plugin>
+  </model>
+  <model name="pendulum">
+    <pose>0 3 0 0 0 0</pose>
+    <link name="post">
+      <pose>0 0 1 0 0 0</pose>
+      <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+    </link>
+    <joint name="fix" type="fixed"><parent>world</parent><child>post</child></joint>
+    <link name="arm">
+      <pose>0.25 0 1 0 0 0</pose>
+      <inertial><mass>0.5</mass><inertia><ixx>0.0001</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="c"><geometry><box><size>0.5 0.02 0.02</size></box></geometry></collision>
+    </link>
+    <joint name="hinge" type="revolute"><parent>post</parent><child>arm</child><pose>-0.25 0 0 0 0 0</pose>
+      <axis><xyz>0 1 0</xyz></axis></joint>
+    <plugin name="joint_state_publisher" filename="libgazebo_ros_joint_state_publisher.so">
+      <jointName>hinge</jointName><updateRate>50</updateRate>
+    </plugin>
+  </model>
+</world></sdf>)";
+
+TEST_F(GazeboWorldNode, SensorPluginsOfWorldModelsPublishOnGazebosTopics) {
+  start(false, write_world("sensor_plugins.world", kSensorPluginWorld));
+  LatestOf<sensor_msgs::Imu> imu_plugin(nh_, "/imu_box/data"), imu_sensor(nh_, "/imu_box/sensor");
+  LatestOf<gazebo_msgs::ContactsState> bumper(nh_, "/bumper_box/bumper");
+  LatestOf<nav_msgs::Odometry> p3d(nh_, "/p3d_box/odom");
+  std::mutex js_mutex;
+  std::vector<sensor_msgs::JointState> js;
+  // A world model's joint state publisher is under the model's name (gazebo_plugins' GazeboRos).
+  ::ros::Subscriber js_sub = nh_.subscribe<sensor_msgs::JointState>("/pendulum/joint_states", 100,
+                                                                    [&](const sensor_msgs::JointState::ConstPtr& m) {
+                                                                      std::lock_guard<std::mutex> l(js_mutex);
+                                                                      js.push_back(*m);
+                                                                    });
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> l(js_mutex);
+        return imu_plugin.received() > 5 && imu_sensor.received() > 5 && bumper.received() > 5 && p3d.received() > 5 &&
+               js.size() > 25;
+      },
+      20.0))
+      << "imu plugin " << imu_plugin.received() << ", imu sensor " << imu_sensor.received() << ", bumper " << bumper.received()
+      << ", p3d " << p3d.received() << ", joint states " << js.size() << "; log:\n"
+      << node_->log();
+
+  // gazebo_ros_imu: the body's world orientation (yawed 0.5 rad), its velocities differentiated
+  // (at rest: no acceleration, no gravity), in its frameName.
+  const sensor_msgs::Imu a = imu_plugin.get();
+  EXPECT_EQ(a.header.frame_id, "imu_box_link");
+  EXPECT_NEAR(yaw_of(a.orientation), 0.5, 0.01);
+  EXPECT_NEAR(a.linear_acceleration.z, 0.0, 0.5);
+  // An IMU sensor feels gravity's reaction at rest.
+  const sensor_msgs::Imu b = imu_sensor.get();
+  EXPECT_EQ(b.header.frame_id, "imu_sensor_link");
+  EXPECT_NEAR(b.linear_acceleration.z, 9.8, 0.3);
+
+  // The bumper: the box's contacts with the ground, their forces in the world frame bearing its
+  // weight.
+  const gazebo_msgs::ContactsState c = bumper.get();
+  EXPECT_EQ(c.header.frame_id, "world");
+  ASSERT_FALSE(c.states.empty()) << "the box resting on the ground touches nothing";
+  double fz = 0.0;
+  for (const gazebo_msgs::ContactState& st : c.states) fz += st.total_wrench.force.z;
+  EXPECT_NEAR(std::abs(fz), 9.81, 3.0);
+  EXPECT_THAT(c.states[0].collision1_name, ::testing::HasSubstr("collision"));
+
+  // p3d: the body's pose in the world frame.
+  const nav_msgs::Odometry o = p3d.get();
+  EXPECT_EQ(o.header.frame_id, "world");
+  EXPECT_EQ(o.child_frame_id, "link");
+  EXPECT_NEAR(o.pose.pose.position.x, model_state("p3d_box").pose.position.x, 1e-3);
+  EXPECT_NEAR(o.pose.pose.position.z, 0.1, 0.01);
+
+  // The joint state publisher: the pendulum's hinge at 50 Hz, swinging.
+  std::lock_guard<std::mutex> l(js_mutex);
+  ASSERT_EQ(js.back().name, std::vector<std::string>{"hinge"});
+  ASSERT_EQ(js.back().position.size(), 1u);
+  EXPECT_NEAR((js.back().header.stamp - js[js.size() - 2].header.stamp).toSec(), 0.02, 1e-6);
+  double lowest = 0.0, highest = 0.0;
+  for (const sensor_msgs::JointState& m : js) {
+    lowest = std::min(lowest, m.position[0]);
+    highest = std::max(highest, m.position[0]);
+  }
+  EXPECT_GT(highest - lowest, 0.5) << "the pendulum did not swing";
 }
 
 }  // namespace
