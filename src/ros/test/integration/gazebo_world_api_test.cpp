@@ -185,7 +185,7 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsRunTheirSensorsAndPluginsBeforeAnySpawn
   Latest<nav_msgs::Odometry> odom(nh_, "/rover/odom");
   ASSERT_TRUE(wait_until([&] { return cmd.getNumSubscribers() > 0 && odom.received() > 0; }, 20.0))
       << "the rover's diff drive plugin has no cmd_vel subscriber or odom; log:\n" << node_->log();
-  const double x0 = model_state("rover").pose.position.x;
+  const double x0 = model_state("rover").response.pose.position.x;
   geometry_msgs::Twist forward;
   forward.linear.x = 0.3;
   const double t0 = clock_now();
@@ -193,7 +193,7 @@ TEST_F(GazeboWorldNode, AnSdfWorldsModelsRunTheirSensorsAndPluginsBeforeAnySpawn
     cmd.publish(forward);
     return clock_now() - t0 > 2.0;
   }, 30.0);
-  const double moved = model_state("rover").pose.position.x - x0;
+  const double moved = model_state("rover").response.pose.position.x - x0;
   EXPECT_GT(moved, 0.3) << "the rover moved " << moved << " m in 2 s at 0.3 m/s";
   EXPECT_NEAR(odom.get().pose.pose.position.x, moved, 0.1);
 }
@@ -271,7 +271,7 @@ TEST_F(GazeboWorldNode, TwoRobotsFromOneDescriptionDriveOnTheirOwnNamespaces) {
   ASSERT_TRUE(wait_until([&] { return r1.getNumSubscribers() > 0 && r2.getNumSubscribers() > 0; }, 10.0))
       << "each robot's diff drive subscribes under its own namespace";
   EXPECT_EQ(shared.getNumSubscribers(), 0u) << "no robot listens on the root /cmd_vel";
-  const double r1_x0 = model_state("r1").pose.position.x, r2_x0 = model_state("r2").pose.position.x;
+  const double r1_x0 = model_state("r1").response.pose.position.x, r2_x0 = model_state("r2").response.pose.position.x;
   geometry_msgs::Twist forward;
   forward.linear.x = 0.3;
   const double t0 = clock_now();
@@ -279,8 +279,8 @@ TEST_F(GazeboWorldNode, TwoRobotsFromOneDescriptionDriveOnTheirOwnNamespaces) {
     r1.publish(forward);
     return clock_now() - t0 > 2.0;
   }, 30.0);
-  EXPECT_GT(model_state("r1").pose.position.x - r1_x0, 0.3) << "r1 drove on /r1/cmd_vel";
-  EXPECT_NEAR(model_state("r2").pose.position.x - r2_x0, 0.0, 0.01) << "r2 stood still";
+  EXPECT_GT(model_state("r1").response.pose.position.x - r1_x0, 0.3) << "r1 drove on /r1/cmd_vel";
+  EXPECT_NEAR(model_state("r2").response.pose.position.x - r2_x0, 0.0, 0.01) << "r2 stood still";
 }
 
 // An rrbot-like arm fixed to the world: Gazebo's `world` link and a fixed joint to it.
@@ -305,7 +305,7 @@ TEST_F(GazeboWorldNode, ARobotFixedToTheWorldIsWhereItsSpawnPutsIt) {
   Latest<gazebo_msgs::LinkStates> links(nh_, "/gazebo/link_states");
   const gazebo_msgs::SpawnModel s = spawn("rrbot3", kFixedArm, pose_at(0.0, 2.0, 0.0));
   ASSERT_TRUE(s.response.success) << s.response.status_message;
-  EXPECT_NEAR(model_state("rrbot3").pose.position.y, 2.0, 1e-9);
+  EXPECT_NEAR(model_state("rrbot3").response.pose.position.y, 2.0, 1e-9);
   step(10);
   ASSERT_TRUE(wait_until([&] { return models.count() > 0 && links.received() > 0; }, 10.0));
   const gazebo_msgs::ModelStates m = models.latest();
