@@ -107,8 +107,8 @@ TEST(CheckPluginsCli, NamesARobotSimTypeItCannotLoad) {
 }
 
 // Gazebo's own libDiffDrivePlugin.so listens on a Gazebo-transport topic mechsim lacks: the listing
-// says which ROS topic stands in for it. It measures its wheels from their collision shapes: a
-// wheel without one is an error naming it.
+// says which ROS topic stands in for it. It measures its wheels from their joints and collision
+// shapes: wheels it cannot measure are an error naming them.
 TEST(CheckPluginsCli, SaysHowGazebosOwnDiffDriveIsCommanded) {
   const std::string plugin = "<plugin name='diff_drive' filename='libDiffDrivePlugin.so'><left_joint>left_wheel</left_joint>"
                              "<right_joint>right_wheel</right_joint></plugin>\n";
@@ -133,7 +133,9 @@ TEST(CheckPluginsCli, SaysHowGazebosOwnDiffDriveIsCommanded) {
                                "(geometry_msgs/Pose"));
   const ProcessResult bare = run_process({MECHSIM_EXE, "check", robot_file("bare.urdf", plugin)}, 60.0);
   EXPECT_EQ(bare.exit_code, 1) << bare.out;
-  EXPECT_THAT(bare.err, HasSubstr("gazebo plugin 'diff_drive' (libDiffDrivePlugin.so): wheel link 'left_link' has no collision shape"));
+  // robot_file's wheels share one anchor (no joint origins): Gazebo's separation would be 0.
+  EXPECT_THAT(bare.err, HasSubstr("bare.urdf:7: gazebo plugin 'diff_drive' (libDiffDrivePlugin.so): joints 'left_wheel' and "
+                                  "'right_wheel' have the same anchor"));
 }
 
 }  // namespace
