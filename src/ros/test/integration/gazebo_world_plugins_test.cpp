@@ -184,6 +184,16 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
   ASSERT_TRUE(call("/gazebo/spawn_urdf_model", s));
   ASSERT_TRUE(s.response.success) << s.response.status_message << "\n" << node_->log();
 
+  // Spawned with an empty robot_namespace, gazebo_plugins' GazeboRos puts it under its model name.
+  gazebo_msgs::SpawnModel bare;
+  bare.request.model_name = "t3";
+  bare.request.model_xml = kTricycleUrdf;
+  bare.request.initial_pose = pose_at(3.0, -6.0, 0.07);
+  ASSERT_TRUE(call("/gazebo/spawn_urdf_model", bare));
+  ASSERT_TRUE(bare.response.success) << bare.response.status_message;
+  ::ros::Publisher t3_cmd = nh_.advertise<geometry_msgs::Twist>("/t3/cmd_vel", 1);
+  LatestOf<nav_msgs::Odometry> t3_odom(nh_, "/t3/odom");
+
   ::ros::Publisher skid_cmd = nh_.advertise<geometry_msgs::Twist>("/skid/cmd_vel", 1);
   ::ros::Publisher planar_cmd = nh_.advertise<geometry_msgs::Twist>("/planar/cmd_vel", 1);
   ::ros::Publisher trike_cmd = nh_.advertise<geometry_msgs::Twist>("/trike/cmd_vel", 1);
@@ -204,6 +214,9 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
   EXPECT_EQ(skid_odom.get().child_frame_id, "chassis");
   EXPECT_EQ(t2_odom.get().header.frame_id, "t2/odom");  // the spawn's namespace is the TF prefix
   EXPECT_EQ(t2_odom.get().child_frame_id, "t2/base_link");  // the tricycle's default robotBaseFrame
+  EXPECT_TRUE(wait_until([&] { return t3_cmd.getNumSubscribers() > 0 && t3_odom.received() > 0; }, 10.0))
+      << "the tricycle spawned without a namespace is not on /t3/cmd_vel, /t3/odom";
+  EXPECT_EQ(t3_odom.get().child_frame_id, "t3/base_link");
   EXPECT_EQ(trike_odom.get().header.frame_id, "trike/odom");
   EXPECT_EQ(trike_odom.get().child_frame_id, "trike/chassis");
 
