@@ -425,10 +425,12 @@ std::vector<ModelPluginSummary> SimBridge::model_plugins() const {
     m.robot_namespace = ros.robot_namespace;
     m.odom_tf = ros.odom_tf;
     m.wheel_tf_joints = ros.wheel_tf_joints;
+    m.tf_prefix = ros.tf_prefix;
+    m.wheel_tf_child_is_joint = ros.wheel_tf_child_is_joint;
     const std::vector<PortRef> ports = this->ports(info.name);
     for (const control::PluginTopic& t : ros.topics) {
       for (const PortRef& p : ports) {
-        if (p.name == t.port) m.topics.push_back({p, t.topic});
+        if (p.name == t.port) m.topics.push_back({p, t.topic, t.message});
       }
     }
     out.push_back(std::move(m));

@@ -162,7 +162,8 @@ struct ControllerSummary {
 // of an output port (the plugin keeps its own rate) and writes each message of an input one.
 struct PluginTopicRef {
   PortRef port;
-  std::string topic;  // as the plugin resolves it, relative to robot_namespace unless it starts with '/'
+  std::string topic;  // as the plugin resolves it, relative to robot_namespace unless it starts with '/'; "": none
+  std::string message;  // "": the port's own; "geometry_msgs/Pose": Gazebo's vel_cmd pose (control::PluginTopic)
 };
 
 struct ModelPluginSummary {
@@ -171,8 +172,12 @@ struct ModelPluginSummary {
   std::string robot_namespace;  // <robotNamespace>, "" for the root
   std::vector<PluginTopicRef> topics;
   bool odom_tf = false;  // the "odom" port's pose also on /tf
-  // publishWheelTF: these joints' parent -> child transforms on /tf with the "joint_states" port.
+  // publishWheelTF: these joints' parent -> child transforms on /tf with the "joint_states" port,
+  // frames named as control::PluginRosInterface says (the links' names, or the joint's for the
+  // child, with the TF prefix).
   std::vector<std::string> wheel_tf_joints;
+  std::string tf_prefix;
+  bool wheel_tf_child_is_joint = false;
 };
 
 struct BridgeResult {

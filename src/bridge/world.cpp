@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "bridge/robot_plugins.hpp"
+#include "controllers/plugins/model_plugins.hpp"
 #include "description/robot_namespace.hpp"
 #include "description/sdf/sdf_model.hpp"
 #include "description/urdf/urdf_parser.hpp"
@@ -117,6 +118,7 @@ void World::start(WorldBinding* binding) {
     BridgeOptions model;
     model.robot = r.robot;
     model.robot.name = r.name;
+    control::add_model_name_namespaces(model.robot);  // gazebo_plugins' default for an unspawned model
     const std::string why = admit(model, r.X_WR, "");
     if (!why.empty() && binding_ != nullptr) binding_->warn("model '" + r.name + "' of the world: " + why);
   }
@@ -268,6 +270,8 @@ BridgeResult World::spawn(const SpawnRequest& request, std::string* status) {
     return refuse(e.what());
   }
   bridge.robot.name = name;
+  // A spawn without a namespace leaves gazebo_plugins' GazeboRos plugins under the model's name.
+  if (request.robot_namespace.empty()) control::add_model_name_namespaces(bridge.robot);
   if (const std::string refusal = admit(bridge, X_WM, request.robot_namespace); !refusal.empty()) return refuse(refusal);
   if (status != nullptr) *status = "SpawnModel: Successfully spawned entity";
   return {};
@@ -361,7 +365,6 @@ BridgeResult World::remove(const std::string& name, std::string* status) {
     binding_->model_removed(gone.info);
   }
   gone.bridge.reset();
-  if (binding_ != nullptr) binding_->info("deleted '" + name + "'");
   if (status != nullptr) *status = "DeleteModel: successfully deleted model";
   return {};
 }

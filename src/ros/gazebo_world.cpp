@@ -80,20 +80,24 @@ void GazeboWorld::model_removing(const bridge::ModelInfo& info, SimBridge&) {
   }
   // Its outputs off, then its controllers stopped and unloaded (topics first).
   node->stop();
-  const std::vector<std::string> controllers = node->unload_all_controllers();
-  ROS_INFO_STREAM("mechsim: deleting '" << info.name << "': " << controllers.size()
-                                        << " controllers stopped and unloaded");
+  unloaded_[info.name] = node->unload_all_controllers().size();
 }
 
 void GazeboWorld::model_removed(const bridge::ModelInfo& info) {
   std::unique_ptr<SimNode> gone;
+  std::size_t unloaded = 0;
   {
     std::lock_guard<std::mutex> lock(nodes_mutex_);
     const auto it = nodes_.find(info.name);
     if (it == nodes_.end()) return;
     gone = std::move(it->second);
     nodes_.erase(it);
+    if (const auto u = unloaded_.find(info.name); u != unloaded_.end()) {
+      unloaded = u->second;
+      unloaded_.erase(u);
+    }
   }
+  ROS_INFO_STREAM("mechsim: deleted '" << info.name << "' (" << unloaded << " controllers stopped and unloaded)");
 }
 
 void GazeboWorld::warn(const std::string& message) { ROS_WARN_STREAM("mechsim: " << message); }

@@ -77,6 +77,7 @@ class GazeboWorld : public bridge::WorldBinding {
 
   std::mutex nodes_mutex_;
   std::map<std::string, std::unique_ptr<SimNode>> nodes_;  // by model name
+  std::map<std::string, std::size_t> unloaded_;  // controllers unloaded by model_removing, for its log line
 
   ::ros::Publisher clock_pub_;
   double next_clock_ = 0.0;  // s, sim time of the next /clock (loop thread)

@@ -1,5 +1,8 @@
 #include "ros/model_plugin_topics.hpp"
 
+#include <cmath>
+
+#include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <tf2_msgs/TFMessage.h>
@@ -15,6 +18,7 @@ struct ModelPluginTopics::Output {
   std::uint64_t sequence = 0;
   bool odom_tf = false;
   std::vector<const description::Joint*> wheel_tf;  // publishWheelTF
+  std::vector<std::pair<std::string, std::string>> wheel_frames;  // parent, child
   OdometryData odom;
   JointStatesData joint_states;
 };
@@ -23,6 +27,13 @@ namespace {
 
 // gazebo_plugins resolve frames with tf::resolve: a leading '/' goes.
 std::string frame(const std::string& f) { return !f.empty() && f.front() == '/' ? f.substr(1) : f; }
+
+// tf::resolve(prefix, name) (controllers/plugins/gazebo_ros_names.hpp's tf_resolve).
+std::string resolved(const std::string& prefix, const std::string& name) {
+  if (!name.empty() && name.front() == '/') return name.substr(1);
+  if (prefix.empty()) return name;
+  return (prefix.front() == '/' ? prefix.substr(1) : prefix) + "/" + name;
+}
 
 }  // namespace
 
@@ -37,6 +48,19 @@ ModelPluginTopics::ModelPluginTopics(::ros::NodeHandle& root, SimBridge& bridge)
       switch (t.port.type) {
         case PortType::TwistCommand: {
           const PortRef port = t.port;
+          if (t.message == "geometry_msgs/Pose") {
+            // Gazebo's DiffDrivePlugin takes a gazebo.msgs.Pose: position.x the speed, the
+            // orientation's yaw the turn rate.
+            subscribers_.push_back(nh.subscribe<geometry_msgs::Pose>(t.topic, 1, [port](const geometry_msgs::Pose::ConstPtr& m) {
+              const geometry_msgs::Quaternion& q = m->orientation;
+              const double yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+              std::string error;
+              if (!write_twist(port, m->position.x, 0.0, 0.0, 0.0, 0.0, yaw, &error)) {
+                ROS_WARN_STREAM_THROTTLE(1.0, "mechsim: " << port.controller << ": vel_cmd rejected: " << error);
+              }
+            }));
+            break;
+          }
           subscribers_.push_back(nh.subscribe<geometry_msgs::Twist>(t.topic, 1, [port](const geometry_msgs::Twist::ConstPtr& m) {
             std::string error;
             if (!write_twist(port, m->linear.x, m->linear.y, m->linear.z, m->angular.x, m->angular.y, m->angular.z, &error)) {
@@ -57,9 +81,14 @@ ModelPluginTopics::ModelPluginTopics(::ros::NodeHandle& root, SimBridge& bridge)
         case PortType::JointStates: {
           Output out;
           out.port = t.port;
-          out.publisher = nh.advertise<sensor_msgs::JointState>(t.topic, 1000);
+          // No topic: the port only feeds publishWheelTF.
+          if (!t.topic.empty()) out.publisher = nh.advertise<sensor_msgs::JointState>(t.topic, 1000);
           for (const std::string& j : plugin.wheel_tf_joints) {
-            if (const description::Joint* joint = bridge_.robot().joint(j)) out.wheel_tf.push_back(joint);
+            if (const description::Joint* joint = bridge_.robot().joint(j)) {
+              out.wheel_tf.push_back(joint);
+              out.wheel_frames.emplace_back(resolved(plugin.tf_prefix, joint->parent_link),
+                                            resolved(plugin.tf_prefix, plugin.wheel_tf_child_is_joint ? joint->name : joint->child_link));
+            }
           }
           any_tf = any_tf || !out.wheel_tf.empty();
           outputs_.push_back(std::move(out));
@@ -114,10 +143,11 @@ void ModelPluginTopics::publish_odometry(Output& out) {
 
 void ModelPluginTopics::publish_joint_states(Output& out) {
   if (!read_joint_states(out.port, out.joint_states, &out.sequence)) return;
-  out.publisher.publish(to_msg(out.joint_states));
+  if (out.publisher) out.publisher.publish(to_msg(out.joint_states));
   if (out.wheel_tf.empty()) return;
   tf2_msgs::TFMessage tf;
-  for (const description::Joint* joint : out.wheel_tf) {
+  for (std::size_t k = 0; k < out.wheel_tf.size(); ++k) {
+    const description::Joint* joint = out.wheel_tf[k];
     double q = 0.0;
     for (std::size_t i = 0; i < out.joint_states.names.size(); ++i) {
       if (out.joint_states.names[i] == joint->name && i < out.joint_states.position.size()) q = out.joint_states.position[i];
@@ -125,8 +155,8 @@ void ModelPluginTopics::publish_joint_states(Output& out) {
     const description::Pose X = joint_transform(*joint, q);
     geometry_msgs::TransformStamped t;
     t.header.stamp = ::ros::Time(out.joint_states.stamp);
-    t.header.frame_id = joint->parent_link;
-    t.child_frame_id = joint->child_link;
+    t.header.frame_id = out.wheel_frames[k].first;
+    t.child_frame_id = out.wheel_frames[k].second;
     t.transform.translation.x = X.position.x;
     t.transform.translation.y = X.position.y;
     t.transform.translation.z = X.position.z;

@@ -1,12 +1,17 @@
 #pragma once
 // The robot's Gazebo model plugins on ROS, under the names gazebo_plugins gives them: each
 // plugin's ports (SimBridge::model_plugins) bound to <robotNamespace>/<topic>:
-//   diff drive, skid steer, planar move   cmd_vel (geometry_msgs/Twist, subscribed),
-//                                          odom (nav_msgs/Odometry) and odom -> base on /tf
-//                                          (publishOdomTF / broadcastTF / always for planar move)
-//   diff drive publishWheelJointState,    joint_states (sensor_msgs/JointState)
-//   joint state publisher
-//   diff drive publishWheelTF             each wheel's parent -> child link transform on /tf
+//   diff drive, skid steer, planar move,  cmd_vel (geometry_msgs/Twist, subscribed),
+//   tricycle drive                         odom (nav_msgs/Odometry) and odom -> base on /tf
+//                                          (publishOdomTF / broadcastTF / always for planar
+//                                          move and tricycle drive)
+//   diff/tricycle drive                   joint_states (sensor_msgs/JointState)
+//   publishWheelJointState, joint state
+//   publisher
+//   diff/tricycle drive publishWheelTF    each wheel's parent -> child link transform on /tf
+//   Gazebo's own libDiffDrivePlugin.so    /<model>/vel_cmd (geometry_msgs/Pose, subscribed): it
+//                                          stands in for the Gazebo-transport topic
+//                                          ~/<model>/vel_cmd (gazebo.msgs.Pose) mechsim lacks
 // Outputs are published when the plugin has written a new snapshot (the plugin keeps its
 // updateRate / odometryRate, in simulated time), stamped in simulated time. The mimic joint plugin
 // publishes nothing (neither does Gazebo's). At start, the plugins mechsim does not simulate are

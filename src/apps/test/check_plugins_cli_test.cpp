@@ -106,5 +106,37 @@ TEST(CheckPluginsCli, NamesARobotSimTypeItCannotLoad) {
   EXPECT_THAT(r.out, HasSubstr("robotSimType 'my_hw/MyRobotHWSim' is NOT SIMULATED"));
 }
 
+// Gazebo's own libDiffDrivePlugin.so listens on a Gazebo-transport topic mechsim lacks: the listing
+// says which ROS topic stands in for it. It measures its wheels from their joints and collision
+// shapes: wheels it cannot measure are an error naming them.
+TEST(CheckPluginsCli, SaysHowGazebosOwnDiffDriveIsCommanded) {
+  const std::string plugin = "<plugin name='diff_drive' filename='libDiffDrivePlugin.so'><left_joint>left_wheel</left_joint>"
+                             "<right_joint>right_wheel</right_joint></plugin>\n";
+  const fs::path dir = fs::path(::testing::TempDir()) / ("mechsim_check_plugins_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string tyres = (dir / "tyres.urdf").string();
+  std::string joints;
+  for (const char* side : {"left", "right"}) {
+    joints += std::string("<joint name='") + side + "_wheel' type='continuous'><parent link='base'/><child link='" + side +
+              "_link'/><origin xyz='0 " + (side[0] == 'l' ? "0.2" : "-0.2") + " 0'/><axis xyz='0 1 0'/></joint><link name='" +
+              side + "_link'><inertial><mass value='0.5'/><inertia ixx='1e-3' ixy='0' ixz='0' iyy='1e-3' iyz='0' izz='1e-3'/>"
+              "</inertial><collision><origin rpy='1.5707963 0 0'/><geometry><cylinder radius='0.06' length='0.03'/>"
+              "</geometry></collision></link>\n";
+  }
+  write_file(tyres, "<?xml version='1.0'?>\n<robot name='wheels'>\n<link name='base'><inertial><mass value='2'/>"
+                        "<inertia ixx='0.1' ixy='0' ixz='0' iyy='0.1' iyz='0' izz='0.1'/></inertial></link>\n" + joints + "<gazebo>\n" + plugin +
+                        "</gazebo>\n</robot>\n");
+  const ProcessResult r = run_process({MECHSIM_EXE, "check", tyres}, 60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("diff_drive (libDiffDrivePlugin.so), line 7: simulated: Gazebo's own differential drive"));
+  EXPECT_THAT(r.out, HasSubstr("mechsim has no Gazebo transport: its ~/wheels/vel_cmd is the ROS topic /wheels/vel_cmd "
+                               "(geometry_msgs/Pose"));
+  const ProcessResult bare = run_process({MECHSIM_EXE, "check", robot_file("bare.urdf", plugin)}, 60.0);
+  EXPECT_EQ(bare.exit_code, 1) << bare.out;
+  // robot_file's wheels share one anchor (no joint origins): Gazebo's separation would be 0.
+  EXPECT_THAT(bare.err, HasSubstr("bare.urdf:7: gazebo plugin 'diff_drive' (libDiffDrivePlugin.so): joints 'left_wheel' and "
+                                  "'right_wheel' have the same anchor"));
+}
+
 }  // namespace
 }  // namespace mechsim::apps::test

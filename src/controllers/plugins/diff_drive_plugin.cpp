@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "controllers/drive/steered_drive.hpp"  // step_towards
+#include "controllers/plugins/gazebo_ros_names.hpp"
 #include "controllers/plugins/plugin_params.hpp"
 #include "controllers/plugins/world_odometry.hpp"
 
@@ -38,18 +39,24 @@ bool DiffDrivePlugin::init(RobotHardware& hardware, const Params& params, std::s
     p.fail("odometrySource", "is world, but the robot is fixed to the world: its base does not move");
   }
 
-  odom_.init(plugin_odometry_prototype(p.text("odometryFrame", "odom"), p.text("robotBaseFrame", "base_footprint"),
+  const GazeboRosNames names = gazebo_ros_names(p, context_.robot_name);
+  odom_.init(plugin_odometry_prototype(names.frame(p.text("odometryFrame", "odom")),
+                                       names.frame(p.text("robotBaseFrame", "base_footprint")),
                                        {1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3}));
   JointStateSnapshot js;
   js.names = {left, right};
   js.position.assign(2, 0.0);
   joint_states_.init(js);
 
-  ros_.robot_namespace = p.text("robotNamespace", "");
-  ros_.topics.push_back({"cmd_vel", p.text("commandTopic", "cmd_vel")});
-  if (publish_tf_) ros_.topics.push_back({"odom", p.text("odometryTopic", "odom")});
+  ros_.robot_namespace = names.robot_namespace;
+  ros_.tf_prefix = names.tf_prefix;
+  ros_.topics.push_back({"cmd_vel", p.text("commandTopic", "cmd_vel"), ""});
+  if (publish_tf_) ros_.topics.push_back({"odom", p.text("odometryTopic", "odom"), ""});
   ros_.odom_tf = publish_tf_ && publish_odom_tf;
-  if (publish_joint_state_ || publish_wheel_tf) ros_.topics.push_back({"joint_states", "joint_states"});
+  // publishWheelTF alone feeds /tf from the port without a joint_states topic, as the plugin.
+  if (publish_joint_state_ || publish_wheel_tf) {
+    ros_.topics.push_back({"joint_states", publish_joint_state_ ? "joint_states" : "", ""});
+  }
   if (publish_wheel_tf) ros_.wheel_tf_joints = {left, right};
   publish_joint_state_ = publish_joint_state_ || publish_wheel_tf;
   return true;

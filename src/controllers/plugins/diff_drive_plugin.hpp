@@ -30,7 +30,8 @@
 //   updateRate 100 (Hz, >= 0; 0: every step)
 //   legacyMode false (noetic's behaviour; true swaps the wheels' turning direction as the older
 //                     plugins did)
-//   robotNamespace "" 
+//   robotNamespace: gazebo_ros_names.hpp (the namespace, and the TF prefix of every frame it
+//                   publishes: odometryFrame, robotBaseFrame, the wheels')
 // Pose covariance diagonal (1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3), twist covariance zero.
 // Ports: "cmd_vel" TwistCommandPort, "odom" StatePort<OdometrySnapshot>, "joint_states"
 // StatePort<JointStateSnapshot> (the two wheels: position).
@@ -46,6 +47,7 @@ inline constexpr const char* kDiffDrivePluginFile = "libgazebo_ros_diff_drive.so
 
 class DiffDrivePlugin : public ModelPlugin {
  public:
+  explicit DiffDrivePlugin(PluginContext context = {}) : context_(std::move(context)) {}
   bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
   void starting(double time) override;
   UpdateStatus update(double time, double period) override;
@@ -65,6 +67,7 @@ class DiffDrivePlugin : public ModelPlugin {
  private:
   void publish_odometry(double time) noexcept;
 
+  PluginContext context_;
   double separation_ = 0.34, diameter_ = 0.15, acceleration_ = 0.0, torque_ = 5.0, update_rate_ = 100.0;
   double update_period_ = 0.01;
   bool encoder_ = false, legacy_ = false, publish_tf_ = true, publish_joint_state_ = false;

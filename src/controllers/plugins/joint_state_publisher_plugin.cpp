@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "controllers/plugins/gazebo_ros_names.hpp"
 #include "controllers/plugins/plugin_params.hpp"
 
 namespace mechsim::control {
@@ -36,9 +37,8 @@ bool JointStatePublisherPlugin::init(RobotHardware& hardware, const Params& para
   prototype.position.assign(joints_.size(), 0.0);
   prototype.velocity.assign(joints_.size(), 0.0);
   joint_states_.init(prototype);
-  const std::string ns = p.text("robotNamespace", "");
-  ros_.robot_namespace = ns.empty() ? context_.robot_name : ns;
-  ros_.topics.push_back({"joint_states", "joint_states"});
+  ros_.robot_namespace = gazebo_ros_names(p, context_.robot_name).robot_namespace;
+  ros_.topics.push_back({"joint_states", "joint_states", ""});
   return true;
 }
 

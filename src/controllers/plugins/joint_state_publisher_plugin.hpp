@@ -7,7 +7,8 @@
 // Elements (gazebo_plugins' names and defaults):
 //   jointName  the joints, comma-separated (blanks ignored); required
 //   updateRate 100 (Hz, >= 0; 0: every step)
-//   robotNamespace  the model's name (the plugin's default; "" is the model's name too)
+//   robotNamespace  gazebo_ros_names.hpp: an empty one is the model's name; without one, the root
+//                   (the model's name for an SDF world's model: add_model_name_namespaces)
 // Ports: "joint_states" StatePort<JointStateSnapshot>.
 
 #include "control/ports.hpp"

@@ -17,7 +17,13 @@ namespace mechsim::control {
 // One port published or subscribed under a topic name of the plugin's choosing.
 struct PluginTopic {
   std::string port;   // the port's name ("cmd_vel", "odom", "joint_states")
-  std::string topic;  // relative to the plugin's namespace, as the plugin resolves it
+  // Relative to the plugin's namespace, as the plugin resolves it. Empty: the port is not
+  // published on a topic of its own (a "joint_states" port that only feeds publishWheelTF).
+  std::string topic;
+  // The message on the wire where it is not the port's own (ports.hpp's PortType comments):
+  // "geometry_msgs/Pose" for a TwistCommand port that takes Gazebo's gazebo.msgs.Pose velocity
+  // command (position.x the speed, the orientation's yaw the turn rate: libDiffDrivePlugin.so).
+  std::string message;
 };
 
 struct PluginRosInterface {
@@ -27,6 +33,10 @@ struct PluginRosInterface {
   // publishWheelTF: each of these joints' parent -> child link transform on /tf with the
   // "joint_states" port's positions (the diff drive's wheels).
   std::vector<std::string> wheel_tf_joints;
+  // The wheels' frames: the links' names resolved with this TF prefix (gazebo_ros_names.hpp:
+  // tf_resolve); the tricycle drive names the child frame after the joint, not its link.
+  std::string tf_prefix;
+  bool wheel_tf_child_is_joint = false;
 };
 
 // What a plugin may know beyond its own elements.

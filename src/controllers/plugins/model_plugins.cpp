@@ -6,39 +6,76 @@
 #include "control/hardware.hpp"
 #include "control/params_xml.hpp"
 #include "controllers/plugins/diff_drive_plugin.hpp"
+#include "controllers/plugins/gazebo_diff_drive_plugin.hpp"
 #include "controllers/plugins/joint_state_publisher_plugin.hpp"
 #include "controllers/plugins/mimic_joint_plugin.hpp"
 #include "controllers/plugins/planar_move_plugin.hpp"
 #include "controllers/plugins/skid_steer_plugin.hpp"
+#include "controllers/plugins/tricycle_drive_plugin.hpp"
 #include "description/mimic_plugin.hpp"
 #include "description/sensor_spec.hpp"
 
 namespace mechsim::control {
 namespace {
 
+using description::RobotModel;
+
 struct PluginKind {
   const char* filename;
   const char* what;
-  std::function<std::unique_ptr<ModelPlugin>(const PluginContext&)> make;
+  // The controller, given what the plugin may know: its context, the robot, its elements.
+  std::function<std::unique_ptr<ModelPlugin>(const PluginContext&, const RobotModel&, const Params&)> make;
   std::function<std::vector<std::string>(const Params&)> joints;
+  // What `mechsim check` adds after "simulated: <what>", or null.
+  std::function<std::string(const RobotModel&)> note = nullptr;
+  // Built on gazebo_plugins' GazeboRos helper: its namespace defaults to the model's name
+  // (gazebo_ros_names.hpp, add_model_name_namespaces).
+  bool gazebo_ros_helper = false;
 };
+
+// A kind whose controller needs nothing but itself.
+template <class T>
+std::unique_ptr<ModelPlugin> plain(const PluginContext&, const RobotModel&, const Params&) {
+  return std::make_unique<T>();
+}
+
+// A kind whose controller needs its context.
+template <class T>
+std::unique_ptr<ModelPlugin> with_context(const PluginContext& c, const RobotModel&, const Params&) {
+  return std::make_unique<T>(c);
+}
+
+std::vector<std::string> no_joints(const Params&) { return {}; }
+
+std::unique_ptr<ModelPlugin> make_gazebo_diff_drive(const PluginContext&, const RobotModel& robot, const Params& params) {
+  const std::vector<std::string> j = GazeboDiffDrivePlugin::joints(params);
+  return std::make_unique<GazeboDiffDrivePlugin>(robot.name, gazebo_diff_drive_geometry(robot, j[0], j[1]));
+}
+
+std::string gazebo_diff_drive_note(const RobotModel& robot) {
+  return "; mechsim has no Gazebo transport: its ~/" + robot.name + "/vel_cmd is the ROS topic " +
+         gazebo_vel_cmd_topic(robot.name) +
+         " (geometry_msgs/Pose as Gazebo's gazebo.msgs.Pose: position.x m/s, the orientation's yaw rad/s clockwise)";
+}
 
 const std::vector<PluginKind>& kinds() {
   // Immutable once made.
   static const std::vector<PluginKind> table = {
-      {kDiffDrivePluginFile, "differential drive", [](const PluginContext&) { return std::make_unique<DiffDrivePlugin>(); },
-       DiffDrivePlugin::joints},
-      {kSkidSteerPluginFile, "skid-steer drive", [](const PluginContext&) { return std::make_unique<SkidSteerPlugin>(); },
-       SkidSteerPlugin::joints},
-      {kPlanarMovePluginFile, "planar move of the base",
-       [](const PluginContext&) { return std::make_unique<PlanarMovePlugin>(); },
-       [](const Params&) { return std::vector<std::string>{}; }},
-      {kJointStatePublisherPluginFile, "joint state publisher",
-       [](const PluginContext& c) { return std::make_unique<JointStatePublisherPlugin>(c); }, JointStatePublisherPlugin::joints},
+      {kDiffDrivePluginFile, "differential drive", with_context<DiffDrivePlugin>, DiffDrivePlugin::joints, nullptr, true},
+      {kSkidSteerPluginFile, "skid-steer drive", plain<SkidSteerPlugin>, SkidSteerPlugin::joints},
+      {kPlanarMovePluginFile, "planar move of the base", plain<PlanarMovePlugin>, no_joints},
+      {kTricycleDrivePluginFile, "tricycle drive", with_context<TricycleDrivePlugin>, TricycleDrivePlugin::joints, nullptr,
+       true},
+      {kGazeboDiffDrivePluginFile, "Gazebo's own differential drive (no ROS)", make_gazebo_diff_drive,
+       GazeboDiffDrivePlugin::joints, gazebo_diff_drive_note},
+      {kJointStatePublisherPluginFile, "joint state publisher", with_context<JointStatePublisherPlugin>,
+       JointStatePublisherPlugin::joints, nullptr, true},
       {"libroboticsgroup_gazebo_mimic_joint_plugin.so", "mimic joint",
-       [](const PluginContext& c) { return std::make_unique<MimicJointPlugin>(c, false); }, MimicJointPlugin::joints},
+       [](const PluginContext& c, const RobotModel&, const Params&) { return std::make_unique<MimicJointPlugin>(c, false); },
+       MimicJointPlugin::joints},
       {"libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so", "mimic joint",
-       [](const PluginContext& c) { return std::make_unique<MimicJointPlugin>(c, true); }, MimicJointPlugin::joints},
+       [](const PluginContext& c, const RobotModel&, const Params&) { return std::make_unique<MimicJointPlugin>(c, true); },
+       MimicJointPlugin::joints},
   };
   return table;
 }
@@ -66,6 +103,19 @@ std::string naming(const Params& params, const std::string& joint) {
 
 }  // namespace
 
+void add_model_name_namespaces(description::RobotModel& robot) {
+  for (description::GazeboPlugin& p : robot.plugins) {
+    const PluginKind* kind = p.sensor.empty() ? find_kind(p.filename) : nullptr;
+    if (kind == nullptr || !kind->gazebo_ros_helper || p.xml.child("robotNamespace") != nullptr) continue;
+    description::XmlNode ns;
+    ns.name = "robotNamespace";
+    ns.text = robot.name;
+    ns.line = p.xml.line;
+    p.xml.children.push_back(std::move(ns));
+    p.parameters["robotNamespace"] = robot.name;
+  }
+}
+
 std::vector<ModelPluginStatus> model_plugin_status(const description::RobotModel& robot) {
   std::vector<ModelPluginStatus> out;
   for (const description::GazeboPlugin& p : robot.plugins) {
@@ -73,7 +123,7 @@ std::vector<ModelPluginStatus> model_plugin_status(const description::RobotModel
     ModelPluginStatus s{p.name, p.filename, origin_of(robot, p), PluginHandling::NotSimulated, ""};
     if (const PluginKind* k = find_kind(p.filename)) {
       s.handling = PluginHandling::Controller;
-      s.detail = std::string("simulated: ") + k->what + " (a model plugin controller)";
+      s.detail = std::string("simulated: ") + k->what + " (a model plugin controller)" + (k->note ? k->note(robot) : "");
     } else if (p.filename == "libgazebo_ros_control.so" || p.filename == "libgazebo_ros_controller_manager.so") {
       s.handling = PluginHandling::ControllerManager;
       s.detail = "simulated: mechsim's controller manager runs the controllers of the YAML";
@@ -145,7 +195,11 @@ std::vector<ModelPluginBuild> build_model_plugins(const description::RobotModel&
                                     ") is not revolute, continuous or prismatic");
       }
     }
-    b.controller = kind->make(context);
+    try {
+      b.controller = kind->make(context, robot, b.params);
+    } catch (const ControllerConfigError& e) {
+      throw ControllerConfigError(where + e.what());
+    }
     out.push_back(std::move(b));
   }
   return out;

@@ -6,6 +6,8 @@
 //   libgazebo_ros_diff_drive.so            DiffDrivePlugin            (diff_drive_plugin.hpp)
 //   libgazebo_ros_skid_steer_drive.so      SkidSteerPlugin            (skid_steer_plugin.hpp)
 //   libgazebo_ros_planar_move.so           PlanarMovePlugin           (planar_move_plugin.hpp)
+//   libgazebo_ros_tricycle_drive.so        TricycleDrivePlugin        (tricycle_drive_plugin.hpp)
+//   libDiffDrivePlugin.so (Gazebo's own)   GazeboDiffDrivePlugin      (gazebo_diff_drive_plugin.hpp)
 //   libgazebo_ros_joint_state_publisher.so JointStatePublisherPlugin  (joint_state_publisher_plugin.hpp)
 //   libroboticsgroup[_upatras]_gazebo_mimic_joint_plugin.so  MimicJointPlugin (mimic_joint_plugin.hpp)
 // Handled elsewhere: gazebo_ros_control (and the PR2's controller manager plugin) is mechsim's
@@ -42,6 +44,14 @@ struct ModelPluginStatus {
 std::vector<ModelPluginStatus> model_plugin_status(const description::RobotModel& robot);
 // "name (filename) at origin: simulated by ..." / "...: NOT SIMULATED: ..." for listings.
 std::string describe(const ModelPluginStatus& status);
+
+// What Gazebo does with a model it loads without a spawn namespace (an SDF world's model, a model
+// spawned with an empty robot_namespace): the plugins built on gazebo_plugins' GazeboRos helper
+// (diff drive, tricycle drive, joint state publisher) that name no <robotNamespace> are under the
+// model's name (gazebo_ros_names.hpp). Writes robot.name in as their <robotNamespace>; other
+// plugins keep theirs (those of gazebo_plugins default to the root). Call before
+// build_model_plugins.
+void add_model_name_namespaces(description::RobotModel& robot);
 
 // A model plugin controller made from its <plugin> element, not initialised yet.
 struct ModelPluginBuild {

@@ -15,8 +15,8 @@ bool PlanarMovePlugin::init(RobotHardware& hardware, const Params& params, std::
   odom_.init(plugin_odometry_prototype(p.text("odometryFrame", "odom"), p.text("robotBaseFrame", "base_footprint"),
                                        {1e-5, 1e-5, 1e12, 1e12, 1e12, 1e-3}));
   ros_.robot_namespace = p.text("robotNamespace", "");
-  ros_.topics.push_back({"cmd_vel", p.text("commandTopic", "cmd_vel")});
-  if (odometry_rate_ > 0.0) ros_.topics.push_back({"odom", p.text("odometryTopic", "odom")});
+  ros_.topics.push_back({"cmd_vel", p.text("commandTopic", "cmd_vel"), ""});
+  if (odometry_rate_ > 0.0) ros_.topics.push_back({"odom", p.text("odometryTopic", "odom"), ""});
   ros_.odom_tf = odometry_rate_ > 0.0;
   return true;
 }

@@ -43,7 +43,7 @@ bool SkidSteerPlugin::init(RobotHardware& hardware, const Params& params, std::s
   odom_.init(plugin_odometry_prototype(p.text("odometryFrame", "odom"), p.text("robotBaseFrame", "base_footprint"), diagonal,
                                        diagonal));
   ros_.robot_namespace = p.text("robotNamespace", "");
-  ros_.topics = {{"cmd_vel", p.text("commandTopic", "cmd_vel")}, {"odom", p.text("odometryTopic", "odom")}};
+  ros_.topics = {{"cmd_vel", p.text("commandTopic", "cmd_vel"), ""}, {"odom", p.text("odometryTopic", "odom"), ""}};
   ros_.odom_tf = p.boolean("broadcastTF", false);
   return true;
 }

@@ -72,8 +72,10 @@ int run_gazebo_world(::ros::NodeHandle& pnh, mechsim::ros::MasterWatch& master) 
                                      << "; robots come in through /gazebo/spawn_urdf_model");
   // Spawning (a robot's physics built) holds a spinner thread for a while: others keep serving.
   ::ros::AsyncSpinner spinner(4);
-  spinner.start();
+  // The world first: its services are advertised already, and a request that comes before it runs
+  // waits in the queue rather than being refused ("the world is not running").
   world.start();
+  spinner.start();
   const int status = serve(master);
   world.stop();
   spinner.stop();

@@ -17,32 +17,14 @@
 #include "controllers/plugins/mimic_joint_plugin.hpp"
 #include "controllers/plugins/model_plugins.hpp"
 #include "controllers/plugins/plugin_params.hpp"
-#include "controllers/test/test_robot.hpp"
-#include "description/urdf/urdf_parser.hpp"
-#include "mechanism/propagation.hpp"
+#include "controllers/plugins/test/plugin_rig.hpp"
 
 namespace mechsim::control {
 namespace {
 
 using ::testing::HasSubstr;
-
-// A robot with two wheels, a caster, a pan joint and two fingers, and `plugins` (<gazebo> blocks).
-std::string urdf(const std::string& plugins) {
-  std::string joints;
-  for (const char* j : {"left", "right", "pan", "finger_a", "finger_b", "rl", "rr"}) {
-    joints += std::string("<joint name=\"") + j + "\" type=\"continuous\"><parent link=\"base\"/><child link=\"" + j +
-              "_link\"/><axis xyz=\"0 1 0\"/></joint>\n<link name=\"" + j +
-              "_link\"><inertial><mass value=\"0.1\"/><inertia ixx=\"1e-4\" ixy=\"0\" ixz=\"0\" iyy=\"1e-4\" iyz=\"0\" "
-              "izz=\"1e-4\"/></inertial></link>\n";
-  }
-  return "<robot name=\"bot\">\n<link name=\"base\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" "
-         "iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>\n" +
-         joints + plugins + "</robot>\n";
-}
-
-description::RobotModel robot_with(const std::string& plugins) {
-  return description::parse_urdf_string(urdf(plugins), "bot.urdf", {});
-}
+using plugin_test::PluginRig;
+using plugin_test::robot_with;
 
 std::string build_error(const std::string& plugins) {
   try {
@@ -114,51 +96,6 @@ TEST(ModelPlugins, BadParametersNameFileLineAndPlugin) {
                           "<joint>finger_a</joint></plugin></gazebo>\n"),
               HasSubstr("<mimicJoint> is missing"));
 }
-
-// Errors init() finds: the manager reports them with the plugin's name, file and line.
-struct PluginRig {
-  std::unique_ptr<testing::TestRobot> robot;
-  std::unique_ptr<ControllerManager> manager;
-  double time = 0.0;
-
-  explicit PluginRig(const std::string& yaml = "bot: {}\n") {
-    std::vector<testing::JointSpec> specs;
-    for (const char* j : {"left", "right", "pan", "finger_a", "finger_b", "rl", "rr"}) {
-      specs.push_back({j, description::JointType::Continuous});
-    }
-    robot = testing::make_robot(specs);
-    robot->state.base.floating = true;
-    manager = std::make_unique<ControllerManager>(robot->model, robot->state, Params::from_yaml_string(yaml).child("bot"),
-                                                  builtin_controller_registry());
-  }
-  // Adds every plugin of `plugins`; returns the first error, "" when all load.
-  std::string add(const std::string& plugins, const Params& server = Params()) {
-    for (ModelPluginBuild& b : build_model_plugins(robot_with(plugins), PluginContext{"bot", server})) {
-      const ControlResult r = manager->add_model_plugin(b.name, b.filename, std::move(b.controller), b.params, b.origin, time);
-      if (!r) return r.error;
-    }
-    return {};
-  }
-  template <class T>
-  T* plugin(const std::string& name) {
-    return dynamic_cast<T*>(manager->controller(name));
-  }
-  void run(int ticks) { time = testing::run(*manager, *robot, time, ticks); }
-  // A joint's position as the encoders would report it.
-  void set_position(const std::string& joint, double q) {
-    robot->joint(joint).position = q;
-    mechanism::propagate_joint_to_actuator_position(robot->model, robot->state);
-  }
-  void send(const std::string& plugin, double vx, double vy, double wz) {
-    auto* port = dynamic_cast<TwistCommandPort*>(manager->controller(plugin)->port("cmd_vel"));
-    ASSERT_NE(port, nullptr);
-    Twist t;
-    t.linear.x = vx;
-    t.linear.y = vy;
-    t.angular.z = wz;
-    ASSERT_TRUE(port->write(t));
-  }
-};
 
 TEST(ModelPlugins, InitErrorsNameFileLineAndPlugin) {
   const auto error_of = [](const std::string& plugins) {
@@ -233,7 +170,8 @@ TEST(DiffDrivePlugin, EncoderOdometryAndWheelJointStates) {
   EXPECT_NEAR(o.x, 0.4 * std::sin(o.yaw), 2e-3);
   EXPECT_NEAR(o.y, 0.4 * (1.0 - std::cos(o.yaw)), 2e-3);
   EXPECT_NEAR(o.angular.z, 0.5, 1e-9);
-  EXPECT_EQ(o.child_frame_id, "base_footprint");
+  EXPECT_EQ(o.frame_id, "bot/odom");  // the namespace /bot is the frames' TF prefix, as GazeboRos::resolveTF
+  EXPECT_EQ(o.child_frame_id, "bot/base_footprint");
   EXPECT_DOUBLE_EQ(o.pose_covariance[0], 1e-5);
   EXPECT_DOUBLE_EQ(o.pose_covariance[14], 1e12);
   const JointStateSnapshot js = joints->read();
@@ -311,8 +249,15 @@ TEST(JointStatePublisherPlugin, PublishesItsJointsAtItsRate) {
   ASSERT_EQ(s.names, (std::vector<std::string>{"pan", "finger_a"}));
   EXPECT_DOUBLE_EQ(s.position[0], 0.25);
   EXPECT_TRUE(s.effort.empty());
-  // The plugin's default namespace is the model's name.
-  EXPECT_EQ(dynamic_cast<ModelPlugin*>(rig.manager->controller("jsp"))->ros_interface().robot_namespace, "bot");
+  // Without <robotNamespace>: the root, where spawn_model at the root puts it (an SDF world's
+  // model gets the model's name written in: WorldModelsTakeTheirNameAsGazeboRosNamespace).
+  EXPECT_EQ(dynamic_cast<ModelPlugin*>(rig.manager->controller("jsp"))->ros_interface().robot_namespace, "");
+  // An empty one is the model's name (GazeboRos).
+  PluginRig empty;
+  ASSERT_EQ(empty.add("<gazebo><plugin name=\"jsp\" filename=\"libgazebo_ros_joint_state_publisher.so\">"
+                      "<jointName>pan</jointName><robotNamespace></robotNamespace></plugin></gazebo>\n"),
+            "");
+  EXPECT_EQ(dynamic_cast<ModelPlugin*>(empty.manager->controller("jsp"))->ros_interface().robot_namespace, "bot");
 }
 
 TEST(MimicJointPlugin, PidDrivesTheFollowerWithinMaxEffort) {

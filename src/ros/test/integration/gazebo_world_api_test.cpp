@@ -36,7 +36,8 @@ namespace {
 
 // A world in the forms of gazebo_ros' test worlds: Gazebo's library models, an old-style material
 // script by name, a static model with a laser and its ROS plugin, a box whose p3d plugin publishes
-// its pose, a moving box, and a small diff-drive robot driven by its plugin.
+// its pose, a moving box, and a small diff-drive robot driven by its plugin (no <robotNamespace>:
+// gazebo_plugins put it under the model's name, so its cmd_vel is /rover/cmd_vel).
 const char* const kSensorWorld = R"(<?xml version="1.0"?>
 <sdf version="1.6">
   <world name="default">
@@ -110,8 +111,8 @@ const char* const kSensorWorld = R"(<?xml version="1.0"?>
         <wheelSeparation>0.4</wheelSeparation>
         <wheelDiameter>0.12</wheelDiameter>
         <wheelTorque>5</wheelTorque>
-        <commandTopic>rover/cmd_vel</commandTopic>
-        <odometryTopic>rover/odom</odometryTopic>
+        <commandTopic>cmd_vel</commandTopic>
+        <odometryTopic>odom</odometryTopic>
         <odometryFrame>odom</odometryFrame>
         <robotBaseFrame>chassis</robotBaseFrame>
         <updateRate>50</updateRate>

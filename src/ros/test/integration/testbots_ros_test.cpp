@@ -285,8 +285,9 @@ TEST_F(TestbotNode, DiffDrivePluginDrivesWithoutRosControl) {
               truth.x, last.pose.pose.position.x);
   EXPECT_NEAR(truth.x, commanded, 0.01 * commanded);
   EXPECT_NEAR(last.pose.pose.position.x, truth.x, 0.01 * truth.x);
-  EXPECT_EQ(last.header.frame_id, "odom");
-  EXPECT_EQ(last.child_frame_id, "base_footprint");
+  // gazebo_ros_diff_drive's frames take its namespace as their TF prefix (GazeboRos::resolveTF).
+  EXPECT_EQ(last.header.frame_id, "diffbot/odom");
+  EXPECT_EQ(last.child_frame_id, "diffbot/base_footprint");
   // At updateRate (100 Hz of simulated time), and the speed ramps at wheelAcceleration (1 m/s^2).
   std::vector<double> intervals;
   double steepest = 0.0;
@@ -301,7 +302,7 @@ TEST_F(TestbotNode, DiffDrivePluginDrivesWithoutRosControl) {
   EXPECT_NEAR(intervals[intervals.size() / 2], 0.01, 1e-6);
   EXPECT_LT(steepest, 1.0 * 1.15);
   EXPECT_GT(steepest, 1.0 * 0.85);
-  EXPECT_GT(tf("odom", "base_footprint").stamp, 0.0);
+  EXPECT_GT(tf("diffbot/odom", "diffbot/base_footprint").stamp, 0.0);
   ASSERT_EQ(wheels.name.size(), 2u);
   EXPECT_EQ(wheels.name[0], "left_wheel_joint");
   // No controller manager for a plugin: gazebo_ros_control is not in this URDF.
