@@ -80,7 +80,9 @@ void GazeboWorld::model_removing(const bridge::ModelInfo& info, SimBridge&) {
   }
   // Its outputs off, then its controllers stopped and unloaded (topics first).
   node->stop();
-  unloaded_[info.name] = node->unload_all_controllers().size();
+  const std::size_t unloaded = node->unload_all_controllers().size();
+  std::lock_guard<std::mutex> lock(nodes_mutex_);
+  unloaded_[info.name] = unloaded;
 }
 
 void GazeboWorld::model_removed(const bridge::ModelInfo& info) {
