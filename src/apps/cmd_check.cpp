@@ -113,10 +113,8 @@ void summary_step(const CheckContext& context, std::ostream& out) {
 void wheels_step(const CheckContext& context, std::ostream& out) {
   const std::vector<physics::WheelCandidate> candidates = physics::identify_wheels(context.robot.model);
   if (candidates.empty()) return;
-  out << "wheels (on a soil, world.soil; world.wheels overrides):
-";
-  for (const physics::WheelCandidate& c : candidates) out << "  " << physics::describe(c) << "
-";
+  out << "wheels (on a soil, world.soil; world.wheels overrides):\n";
+  for (const physics::WheelCandidate& c : candidates) out << "  " << physics::describe(c) << "\n";
 }
 
 // Every model plugin, simulated or not (an unknown one is named here once and is not an error),

@@ -223,25 +223,34 @@ SoilFitOutcome run_soil_fit(const SoilFitSpec& spec, const std::string& out_dir,
     soil.friction_angle = out.shear->friction_angle;
     soil.shear_modulus = out.shear->shear_modulus;
   }
-  const auto from = [&](const char* key, const char* what) {
-    const bool given = std::find(spec.given.begin(), spec.given.end(), key) != spec.given.end();
-    out.not_from_tests.push_back(std::string(what) + (given ? " (values)" : " (" + spec.start.name + ")"));
-  };
+  // What the tests did not give, and where it came from: `values`, the base, or the model's defaults.
+  const auto given = [&](const char* key) { return std::find(spec.given.begin(), spec.given.end(), key) != spec.given.end(); };
+  std::vector<std::string> from_values, from_base, from_defaults;
+  const auto from = [&](const char* key, const char* what) { (given(key) ? from_values : from_base).push_back(what); };
   if (!out.shear) {
     from("cohesion", "cohesion");
     from("friction_angle_deg", "friction angle");
     from("shear_modulus", "shear modulus K");
   }
-  from("c1", "c1, c2");
-  if (soil.model == physics::WheelSoilModel::Ding) from("rear_ratio", "rear_ratio, n1, n2");
+  from("c1", "c1");
+  from("c2", "c2");
   from("bedrock_depth", "bedrock depth");
+  if (soil.model == physics::WheelSoilModel::Ding)
+    for (const char* key : {"rear_ratio", "n1", "n2"}) (given(key) ? from_values : from_defaults).push_back(key);
+  const auto list = [](const std::vector<std::string>& v) {
+    std::string text;
+    for (const std::string& s : v) text += (text.empty() ? "" : ", ") + s;
+    return text;
+  };
+  if (!from_values.empty()) out.not_from_tests.push_back(list(from_values) + " (given: values)");
+  if (!from_base.empty()) out.not_from_tests.push_back(list(from_base) + " (from " + spec.start.name + ")");
+  if (!from_defaults.empty()) out.not_from_tests.push_back(list(from_defaults) + " (the model's defaults)");
   std::ostringstream source;
   source << (spec.method == physics::PlateFitMethod::TwoStage ? "two-stage" : "direct") << " plate fit of " << spec.plates.size()
          << " tests, " << out.plates.sizes.size() << " plate sizes (" << fs::path(spec.file).filename().string()
          << ", mechsim soil fit): n, k_c, k_phi, rms " << num(out.plates.rms, "%.0f") << " Pa";
   if (out.shear) source << "; shear fit of " << spec.shear.size() << " tests: c, phi, K";
-  source << "; from " << spec.start.name << ":";
-  for (std::size_t i = 0; i < out.not_from_tests.size(); ++i) source << (i ? "," : "") << " " << out.not_from_tests[i];
+  for (const std::string& n : out.not_from_tests) source << "; " << n;
   soil.source = source.str();
   if (const std::string problem = physics::check_soil(soil); !problem.empty())
     throw std::invalid_argument("the fitted soil '" + soil.name + "': " + problem);
@@ -270,7 +279,7 @@ SoilFitOutcome run_soil_fit(const SoilFitSpec& spec, const std::string& out_dir,
       << num(sh.rms, "%.1f") << " Pa\n";
   }
   s << "not from these tests:";
-  for (std::size_t i = 0; i < out.not_from_tests.size(); ++i) s << (i ? "," : "") << " " << out.not_from_tests[i];
+  for (std::size_t i = 0; i < out.not_from_tests.size(); ++i) s << (i ? ";" : "") << " " << out.not_from_tests[i];
   s << "\n  cohesion " << num(soil.cohesion, "%.1f") << " Pa, friction angle " << num(soil.friction_angle * 180.0 / M_PI, "%.2f")
     << " deg, K " << num(soil.shear_modulus, "%.4g") << " m";
   if (soil.model == physics::WheelSoilModel::Ding) s << ", rear_ratio " << num(soil.rear_ratio) << ", n1 " << num(soil.n1) << ", n2 " << num(soil.n2);
@@ -324,13 +333,18 @@ SoilFitOutcome run_soil_fit(const SoilFitSpec& spec, const std::string& out_dir,
      << "\nset datafile separator '\\t'\nset grid\nset key top left\n"
      << "set multiplot layout 3,1 title " << quoted("soil fit '" + soil.name + "': " + std::to_string(spec.plates.size()) + " plate tests") << " noenhanced\n";
   gp << "n = " << num(f.n, "%.8g") << "; kc = " << num(f.k_c, "%.8g") << "; kphi = " << num(f.k_phi, "%.8g") << "\n";
-  gp << "set xlabel 'sinkage z (mm)'\nset ylabel 'pressure p (kPa)'\nplot ";
+  gp << "set xlabel 'sinkage z (mm)'\nset ylabel 'pressure p (kPa)'\nset samples 400\nplot ";
   for (std::size_t k = 0; k < f.sizes.size(); ++k) {
     const double b = f.sizes[k].b;
+    double z_max = 0.0;  // the fitted curve over the size's own data
+    for (const physics::PlateTest& t : spec.plates)
+      if (std::abs(t.b - b) <= 1e-6 * b)
+        for (double z : t.z) z_max = std::max(z_max, z);
     const std::string label = "b " + num(b * 1000.0, "%.0f") + " mm";
     gp << (k ? ", " : "") << data << " using ($2 > " << num(b * 0.999999, "%.9g") << " && $2 < " << num(b * 1.000001, "%.9g")
        << " ? 1000 * $3 : 1/0):($4 / 1000) every ::1 with points pt 7 ps 0.3 lc " << k + 1 << " title " << quoted(label + " tests")
-       << ", (kc / " << num(b, "%.9g") << " + kphi) * (x / 1000) ** n / 1000 with lines lw 2 lc " << k + 1 << " title "
+       << ", (x <= " << num(1000.0 * z_max, "%.6g") << " ? (kc / " << num(b, "%.9g") << " + kphi) * (x / 1000) ** n / 1000 : 1/0) with lines lw 2 lc "
+       << k + 1 << " title "
        << quoted(label + " fit");
   }
   gp << "\nset ylabel 'residual (kPa)'\nplot 0 with lines lc rgb 'gray' notitle";
