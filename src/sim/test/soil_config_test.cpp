@@ -126,6 +126,27 @@ TEST_F(SoilConfig, AFitDescriptionReadsItsTestsAndNamesWhatIsWrong) {
   EXPECT_TRUE(fs::exists(dir_ / "out/plate_fit.tsv"));
   EXPECT_NEAR(soil_by_name((dir_ / "out/t.soil.yaml").string()).k_phi, out.soil.k_phi, 1e-5 * out.soil.k_phi);
 
+  // Shear tests at two normal pressures (c 800 Pa, phi 30 deg, K 3 mm): the soil takes c, phi, K
+  // from them, not from the base.
+  for (const double sigma : {4000.0, 12000.0}) {
+    std::string text = "j_m tau_Pa\n";
+    for (int i = 0; i <= 40; ++i) {
+      const double j = 0.0005 * i;
+      text += std::to_string(j) + " " + std::to_string((800.0 + sigma * std::tan(30.0 * M_PI / 180.0)) * (1.0 - std::exp(-j / 0.003))) + "\n";
+    }
+    write("shear_" + std::to_string(static_cast<int>(sigma)) + ".tsv", text);
+  }
+  const fs::path with_shear = write("shear.yaml", "plates:\n  - {diameter: 0.06, files: [a.tsv]}\n  - {diameter: 0.10, files: [b.tsv]}\n"
+                                                  "shear:\n  - {normal_pressure: 4000, files: [shear_4000.tsv]}\n"
+                                                  "  - {normal_pressure: 12000, files: [shear_12000.tsv]}\n");
+  const SoilFitOutcome sheared = run_soil_fit(read_soil_fit_spec(with_shear.string()), (dir_ / "out2").string(), false);
+  ASSERT_TRUE(sheared.shear);
+  EXPECT_NEAR(sheared.soil.cohesion, 800.0, 2.0);
+  EXPECT_NEAR(sheared.soil.friction_angle, 30.0 * M_PI / 180.0, 1e-3);
+  EXPECT_NEAR(sheared.soil.shear_modulus, 0.003, 1e-5);
+  EXPECT_TRUE(fs::exists(dir_ / "out2/shear_fit.tsv"));
+  EXPECT_EQ(sheared.soil.model, physics::WheelSoilModel::Ding) << "the default for fitted soils";
+
   plate("f.tsv", 0.03, true);
   const fs::path forces = write("forces.yaml", "plates_columns: {z: z_m, force: force_N}\nplates:\n  - {diameter: 0.06, files: [f.tsv]}\n"
                                                "  - {width: 0.05, length: 0.05, files: [f.tsv]}\n");
