@@ -1,5 +1,5 @@
 // What the wheel-soil model costs the CC8 on the Mars Yard, measured in one run as a ratio (the
-// acceptance of issue 38: the real-time factor on soil at least 90 % of rigid ground's). Two CC8s
+// target: the real-time factor on soil at least 90 % of rigid ground's). Two CC8s
 // (robots/cc8, its rover drive), each in its own simulation of the Mars Yard 2024 from the start
 // pad of mars_yard_route.yaml, driving at 0.3 m/s straight on: one on rigid ground, one on the
 // soil of the benchmark's name. They are stepped in alternating blocks of 50 ticks and timed by
