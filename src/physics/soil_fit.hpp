@@ -11,8 +11,7 @@
 // methodology in the characterization of the mechanical properties of terrain", J. Terramechanics
 // 17(1), 1980), every sample of every test alike:
 // - two_stage (the default): p = K_b z^n with one K per plate size and one common n, then the line
-//   K_b = k_c / b + k_phi through the sizes' K by least squares (Wong's procedure for plates of
-//   two or more sizes);
+//   K_b = k_c / b + k_phi through the sizes' K by least squares;
 // - direct: the three constants fitted to all samples at once.
 // For a fixed n each stage is linear in the moduli, so n is found by a one-dimensional search
 // (a scan, then golden-section refinement) and the moduli by linear least squares: the global
