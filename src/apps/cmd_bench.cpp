@@ -23,6 +23,7 @@
 #include "description/robot_loader.hpp"
 #include "sim/controller_set.hpp"
 #include "sim/simulation.hpp"
+#include "sim/soil_config.hpp"
 
 namespace mechsim::apps {
 namespace {
@@ -103,8 +104,11 @@ void run(const BenchArgs& args) {
   sim::WorldConfig world_config;
   world_config.name = args.world;
   if (!args.soil.empty()) {
-    world_config.soil = physics::find_soil(args.soil);
-    if (!world_config.soil) throw UserError("--soil: no soil named '" + args.soil + "' (mechsim world soils lists them)");
+    try {
+      world_config.soil = sim::soil_by_name(args.soil);
+    } catch (const std::exception& e) {
+      throw UserError(std::string("--soil: ") + e.what());
+    }
   }
   sim::SimulationOptions options;
   options.spawn.z = args.spawn_z;
@@ -196,7 +200,7 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   cmd->add_option("--start", args->start, "Controllers to start (default: the widest conflict-free set of the namespace's controllers, e.g. the CC8's rover drive)");
   cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
   cmd->add_option("--seconds", args->seconds, "Simulated seconds per measurement");
-  cmd->add_option("--soil", args->soil, "Wheels on this soil instead of rigid ground (mechsim world soils lists them)");
+  cmd->add_option("--soil", args->soil, "Wheels on this soil instead of rigid ground: a named soil (mechsim world soils lists them) or a soil file (.yaml, mechsim soil fit)");
   cmd->add_option("--spawn", args->spawn_xy, "Spawn position X Y (m; default: the Mars Yard's start pad, else the origin)")
       ->expected(2);
   cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: euler (default), implicit or rk4")

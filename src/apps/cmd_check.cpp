@@ -22,6 +22,7 @@
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/direct_joints.hpp"
 #include "physics/physics_model.hpp"
+#include "physics/wheel_identify.hpp"
 #include "sim/simulation.hpp"
 #include "description/robot_loader.hpp"
 #include "description/robot_summary.hpp"
@@ -107,6 +108,15 @@ void summary_step(const CheckContext& context, std::ostream& out) {
   out << description::summarize_robot(context.robot.model);
 }
 
+// The wheels the wheel-soil model would act on (physics/wheel_identify.hpp), narrow or wide, and
+// each link that looks like a wheel but is not one, with the reason: said once, here.
+void wheels_step(const CheckContext& context, std::ostream& out) {
+  const std::vector<physics::WheelCandidate> candidates = physics::identify_wheels(context.robot.model);
+  if (candidates.empty()) return;
+  out << "wheels (on a soil, world.soil; world.wheels overrides):\n";
+  for (const physics::WheelCandidate& c : candidates) out << "  " << physics::describe(c) << "\n";
+}
+
 // Every model plugin, simulated or not (an unknown one is named here once and is not an error),
 // then each simulated one configured as the simulation would: bad elements are errors naming the
 // file, the line and the plugin.
@@ -158,6 +168,7 @@ void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err
   CheckContext context;
   load_step(options, context);
   summary_step(context, out);
+  wheels_step(context, out);
   plugins_step(options, context, out);
   meshes_step(context);
   if (!options.controllers.empty()) controllers_step(options, context, out);

@@ -103,6 +103,13 @@ void run(const RunArgs& args, CommandResult& result) {
   std::cout << "distance " << r.distance << " m, final pose (" << r.final_x << ", " << r.final_y << ") yaw "
             << r.final_yaw * 180.0 / 3.141592653589793 << " deg, real-time factor " << r.real_time_factor << "\n";
   if (!r.completed) std::cout << "did not complete: " << r.error << "\n";
+  if (scenario.world.soil) {
+    // Which wheels met the soil, and, once, what looks like a wheel but did not.
+    std::cout << "soil wheels (" << scenario.world.soil->name << "):";
+    for (const sim::WheelOutcome& w : r.wheels) std::cout << " " << w.link << (w.narrow ? " (narrow)" : "");
+    std::cout << (r.wheels.empty() ? " none\n" : "\n");
+    for (const std::string& n : r.not_wheels) std::cout << "  " << n << "\n";
+  }
   for (const sim::CheckOutcome& c : r.checks) std::cout << (c.passed ? "  PASS " : "  FAIL ") << c.detail << "\n";
   for (const std::string& w : r.warnings) {
     if (std::find(printed->begin(), printed->end(), w) == printed->end()) std::cerr << "warning: " << w << "\n";

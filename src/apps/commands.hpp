@@ -22,6 +22,7 @@ void add_xacro_command(CLI::App& app, CommandResult& result);
 void add_xacro_options(CLI::App& app);
 void add_check_command(CLI::App& app, CommandResult& result);
 void add_world_command(CLI::App& app, CommandResult& result);
+void add_soil_command(CLI::App& app, CommandResult& result);
 void add_run_command(CLI::App& app, CommandResult& result);
 void add_render_command(CLI::App& app, CommandResult& result);
 void add_tune_command(CLI::App& app, CommandResult& result);

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
   add_xacro_command(app, result);
   add_check_command(app, result);
   add_world_command(app, result);
+  add_soil_command(app, result);
   add_run_command(app, result);
   add_render_command(app, result);
   add_tune_command(app, result);

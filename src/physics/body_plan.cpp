@@ -7,6 +7,7 @@
 #include "description/mimic_plugin.hpp"
 #include "physics/physics_error.hpp"
 #include "physics/transform.hpp"
+#include "physics/wheel_identify.hpp"
 
 namespace mechsim::physics {
 namespace {
@@ -101,21 +102,6 @@ class Planner {
     return "";
   }
 
-  // The link frame is its parent joint's frame, so the joint axis is given in it.
-  bool is_narrow_wheel(const Link& link, const description::Collision& c) const {
-    return is_wheel(link, c) && c.geometry.length <= c.geometry.radius;
-  }
-
-  bool is_wheel(const Link& link, const description::Collision& c) const {
-    if (c.geometry.type != description::GeometryType::Cylinder) return false;
-    const description::Joint* j = link.parent_joint.empty() ? nullptr : robot_.joint(link.parent_joint);
-    if (j == nullptr || (j->type != description::JointType::Continuous && j->type != description::JointType::Revolute))
-      return false;
-    const Vec3 cylinder_axis = rotate(c.origin.orientation, Vec3{0.0, 0.0, 1.0});
-    const double along = cylinder_axis.x * j->axis.x + cylinder_axis.y * j->axis.y + cylinder_axis.z * j->axis.z;
-    return std::abs(along) > 0.999;  // within ~2.6 degrees
-  }
-
   void add_geoms(const Link& link, int body, const Pose& X_BL) {
     const auto& g = gz(link.name);
     double mu = options_.contact.sliding_friction;
@@ -147,8 +133,8 @@ class Planner {
       geom.geometry = link.collisions[i].geometry;
       geom.self_collide = g.self_collide.value_or(false);
       geom.friction = mu;
-      geom.wheel = is_wheel(link, link.collisions[i]);
-      geom.narrow_wheel = is_narrow_wheel(link, link.collisions[i]);
+      geom.wheel = is_wheel_collision(robot_, link, link.collisions[i]);
+      geom.narrow_wheel = is_narrow_wheel_collision(robot_, link, link.collisions[i]);
       geom.laser_retro = link.collisions[i].laser_retro.value_or(g.laser_retro.value_or(0.0));
       out.push_back(std::move(geom));
     }

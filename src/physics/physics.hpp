@@ -19,6 +19,8 @@
 #include "physics/physics_model.hpp"
 #include "physics/ray_cast.hpp"
 #include "physics/soil.hpp"
+#include "physics/terramechanics.hpp"
+#include "physics/wheel_override.hpp"
 
 namespace mechsim::physics {
 
@@ -106,12 +108,31 @@ struct Contact {
   description::Vec3 force;          // world frame (N): normal and friction, the force a exerts on b
 };
 
-// What the soil did to one wheel (PhysicsModel::wheels()) in the last step (Physics::set_soil).
+// A wheel the soil acts on (Physics::soil_wheels()): PhysicsModel::wheels() with the world's
+// overrides applied.
+struct SoilWheelInfo {
+  std::string link;
+  std::size_t joint = 0;        // index into PhysicsModel::joints()
+  int geom = -1, body = -1;     // MuJoCo geom and body
+  WheelShape shape;             // radius, width, grousers (m)
+  bool narrow = false;          // width <= radius
+  bool axis_from_joint = false; // the axle is the joint's axis (not the geom's z: meshes, spheres)
+  std::string origin;           // "its collision cylinder" or "world.wheels (file:line)"
+};
+
+// What the soil did to one wheel (Physics::soil_wheels()) in the last step (Physics::set_soil).
 // Heading: the direction the wheel rolls, across its axle, along the ground.
 struct WheelSoilReading {
   bool contact = false;       // in the soil
+  // Slip and slip angle are defined while the wheel rolls or slides at all: moving is true when
+  // max(|r w|, |v|) (for the slip) or the ground speed (for the slip angle) exceeds
+  // kSlipRestSpeed, 0.1 mm/s (a test rig's carriage runs at a few mm/s). Below it they are 0 and
+  // the flags false: undefined, not zero (the report leaves them blank).
+  bool moving = false;        // slip defined
+  bool sliding = false;       // slip angle defined
   double slip = 0.0;          // (r w - v) / max(|r w|, |v|): > 0 spinning faster than it travels
-                              // (driving), < 0 slower (braking); v along the heading
+                              // (driving), < 0 slower (braking); v along the heading, r the rim's
+                              // radius (without grousers)
   double slip_angle = 0.0;    // rad: atan2(sideways velocity, |velocity along the heading|)
   double sinkage = 0.0;       // m, of the wheel's lowest point below the soil surface
   double normal_force = 0.0;  // N, the load the soil carries
@@ -121,6 +142,7 @@ struct WheelSoilReading {
   double rut_depth = 0.0;     // m: how deep another wheel compacted the soil where this one is
                               // (SoilParameters::multi_pass), 0 on virgin soil
 };
+inline constexpr double kSlipRestSpeed = 1e-4;  // m/s
 
 // Acceleration of a point (Physics::link_acceleration), world frame.
 struct Acceleration {
@@ -290,17 +312,23 @@ class Physics {
   // (another robot's: "<name>::"); "" for the first robot's alone (links without "::").
   Bounds collision_bounds(const std::string& link_prefix) const;
 
-  // Wheel-soil: with a soil, every wheel of the model (PhysicsModel::wheels()) meets the ground
-  // through the Bekker-Wong model (terramechanics.hpp) instead of rigid contact: step() computes
-  // each wheel's sinkage, slip and slip angle from the state and applies the soil's force and
-  // moment to the wheel's body within the step (MuJoCo's mj_step1, the forces, mj_step2). The
-  // wheels' rigid contact with the ground then starts soil.bedrock_depth below its surface (a
-  // bound on sinkage); other contacts are untouched. nullopt (the default): rigid ground. Set-up
-  // only (allocates); the soil's state (shear displacements) restarts on reset(). Throws
-  // std::invalid_argument naming the bad parameter (check_soil).
-  void set_soil(std::optional<SoilParameters> soil);
+  // Wheel-soil: with a soil, every wheel of the model (PhysicsModel::wheels(), narrow ones
+  // included), as `wheels` overrides it (WheelOverride: a link that is not a wheel, one that is,
+  // dimensions, grousers), meets the ground through the soil's wheel-soil model (terramechanics.hpp)
+  // instead of rigid contact: step() computes each wheel's sinkage, slip and slip angle from the
+  // state and applies the soil's force and moment to the wheel's body within the step (MuJoCo's
+  // mj_step1, the forces, mj_step2). The wheels' rigid contact with the ground then starts
+  // soil.bedrock_depth below its surface (a bound on sinkage); other contacts are untouched.
+  // nullopt (the default): rigid ground. Set-up only (allocates); the soil's state (shear
+  // displacements) restarts on reset(). Throws std::invalid_argument naming the bad parameter
+  // (check_soil), the wheel a soil cannot carry (check_soil_width) or the override's link.
+  void set_soil(std::optional<SoilParameters> soil, std::vector<WheelOverride> wheels = {});
   const std::optional<SoilParameters>& soil() const;
-  // One reading per PhysicsModel::wheels() for the last step; empty without a soil.
+  // The wheels the soil acts on (empty without a soil), and one line for each wheel an override
+  // took out.
+  const std::vector<SoilWheelInfo>& soil_wheels() const;
+  const std::vector<std::string>& soil_wheel_notes() const;
+  // One reading per soil_wheels() for the last step; empty without a soil.
   const std::vector<WheelSoilReading>& wheel_soil() const;
 
   // Contacts of the last step. Fills `out` (cleared first); allocates only when `out` has

@@ -47,6 +47,9 @@ struct Physics::Data {
     double pushing = 0.0;   // [-1, 1]: the same for the compaction ahead of it (travel only)
   };
   std::optional<SoilParameters> soil;
+  std::vector<WheelOverride> soil_overrides;  // as set_soil was given them (a rebuild sets them again)
+  std::vector<SoilWheelInfo> soil_wheels;
+  std::vector<std::string> soil_wheel_notes;
   std::vector<SoilWheel> soil_state, soil_pending;
   std::vector<WheelSoilReading> soil_readings, soil_pending_readings;
   int soil_ground = -1;

@@ -9,6 +9,7 @@
 
 #include "physics/arena_estimate.hpp"
 #include "physics/body_plan.hpp"
+#include "physics/wheel_identify.hpp"
 #include "physics/mjcf_writer.hpp"
 #include "physics/mujoco_internal.hpp"
 #include "physics/physics_error.hpp"
@@ -278,12 +279,18 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
     for (const PlannedBody& b : p.bodies)
       for (const PlannedGeom& g : b.geoms) {
         const int geom = g.wheel ? mj_name2id(m, mjOBJ_GEOM, g.name.c_str()) : -1;
-        if (geom < 0 || m->geom_type[geom] != mjGEOM_CYLINDER) continue;
+        if (geom < 0) continue;
+        // A narrow wheel is an ellipsoid (radius, radius, half width), a wide one a cylinder (radius, half width).
+        const bool cylinder = m->geom_type[geom] == mjGEOM_CYLINDER;
+        if (!cylinder && !(g.narrow_wheel && m->geom_type[geom] == mjGEOM_ELLIPSOID)) continue;
         const description::Link* link = description.link(g.link.substr(prefix.size()));
         const auto joint = link != nullptr ? pm->joint_index(prefix + link->parent_joint) : std::nullopt;
         if (!joint) continue;
-        pm->wheels_.push_back({g.link, *joint, geom, m->geom_bodyid[geom], m->geom_size[3 * geom], 2.0 * m->geom_size[3 * geom + 1]});
+        const double radius = m->geom_size[3 * geom], width = 2.0 * m->geom_size[3 * geom + (cylinder ? 1 : 2)];
+        pm->wheels_.push_back({g.link, *joint, geom, m->geom_bodyid[geom], radius, width, width <= radius});
       }
+    for (const WheelCandidate& c : identify_wheels(description))
+      if (!c.wheel) pm->not_wheels_.push_back(describe(WheelCandidate{prefix + c.link, prefix + c.joint, false, 0.0, 0.0, c.reason}));
   };
   add_wheels(plan, robot, "");
   for (std::size_t i = 0; i < plan.passive.size() && i < options.world.models.size(); ++i)

@@ -38,8 +38,6 @@ struct LinkInfo {
   description::Pose X_BL;  // link frame in the MuJoCo body frame
 };
 
-// A wheel: a collision cylinder turning about its axis on its link's revolute or continuous
-// joint (the wheel-soil model acts on these; physics/soil.hpp).
 // A primitive collision shape of the world's passive models (WorldSpec::models), for drawing
 // them: the compiled body that carries it and its frame there. Meshes are not listed.
 struct PassiveShape {
@@ -52,11 +50,16 @@ struct PassiveShape {
   description::Pose X_BG;  // in the body frame
 };
 
+// A wheel: a collision cylinder turning about its axis on its link's revolute or continuous
+// joint (physics/wheel_identify.hpp; the wheel-soil model acts on these, physics/soil.hpp). A
+// narrow one (width <= radius) is an ellipsoid in MuJoCo (ContactDefaults::point_contact_wheels)
+// with the same rolling circle; the soil sees its radius and width.
 struct WheelInfo {
   std::string link;         // URDF link
   std::size_t joint = 0;    // index into PhysicsModel::joints(): the joint it turns on
-  int geom = -1, body = -1;  // MuJoCo geom (a cylinder) and body
+  int geom = -1, body = -1;  // MuJoCo geom (a cylinder, or an ellipsoid for a narrow wheel) and body
   double radius = 0.0, width = 0.0;  // m
+  bool narrow = false;      // width <= radius
 };
 
 // The gazebo differential plugin's law, when the description names one.
@@ -124,9 +127,11 @@ class PhysicsModel {
   // URDF joints that are not simulated (massless child link merged into its parent).
   const std::vector<std::string>& dropped_joints() const { return dropped_joints_; }
   // The robot's wheels (WheelInfo), in document order, then the other robots' (actuated world
-  // models; their links "<model>::<link>"). Narrow wheels given to MuJoCo as
-  // ellipsoids (ContactDefaults::point_contact_wheels) are not among them.
+  // models; their links "<model>::<link>"), narrow ones included.
   const std::vector<WheelInfo>& wheels() const { return wheels_; }
+  // The links that look like wheels but are not, one line each with the reason
+  // (physics/wheel_identify.hpp), the other robots' under their prefix.
+  const std::vector<std::string>& not_wheels() const { return not_wheels_; }
   const std::vector<PassiveShape>& passive_shapes() const { return passive_shapes_; }
 
   const std::string& mjcf() const { return mjcf_; }  // the generated document (arena size included)
@@ -164,6 +169,7 @@ class PhysicsModel {
   std::vector<LinkInfo> links_;
   std::optional<DifferentialInfo> differential_;
   std::vector<WheelInfo> wheels_;
+  std::vector<std::string> not_wheels_;
   std::vector<PassiveShape> passive_shapes_;
   std::vector<std::string> dropped_joints_, warnings_, gravity_off_links_;
   std::vector<int> gravity_off_bodies_;

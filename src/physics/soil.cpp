@@ -1,6 +1,7 @@
 #include "physics/soil.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace mechsim::physics {
 namespace {
@@ -53,6 +54,16 @@ std::vector<SoilParameters> make_named_soils() {
 
 }  // namespace
 
+const char* model_name(WheelSoilModel model) {
+  return model == WheelSoilModel::Ding ? "ding" : "wong_reece";
+}
+
+std::optional<WheelSoilModel> find_model(std::string_view name) {
+  if (name == "wong_reece") return WheelSoilModel::WongReece;
+  if (name == "ding") return WheelSoilModel::Ding;
+  return std::nullopt;
+}
+
 const std::vector<SoilParameters>& named_soils() {
   static const std::vector<SoilParameters> soils = make_named_soils();
   return soils;
@@ -67,8 +78,8 @@ std::optional<SoilParameters> find_soil(std::string_view name) {
 std::string check_soil(const SoilParameters& s) {
   const auto finite = [](double v) { return std::isfinite(v); };
   if (!finite(s.n) || !(s.n > 0.0 && s.n <= 3.0)) return "n must be in (0, 3], got " + std::to_string(s.n);
-  if (!finite(s.k_c) || !finite(s.k_phi) || s.k_c < 0.0 || s.k_phi < 0.0 || s.k_c + s.k_phi <= 0.0)
-    return "k_c and k_phi must be >= 0 and not both 0 (N/m^(n+1), N/m^(n+2))";
+  if (!finite(s.k_c) || !finite(s.k_phi) || s.k_phi < 0.0 || (s.k_c < 0.0 && !(s.k_phi > 0.0)) || (s.k_c == 0.0 && s.k_phi == 0.0))
+    return "k_phi must be >= 0 and k_c >= 0 or k_phi > 0, not both 0 (N/m^(n+1), N/m^(n+2))";
   if (!finite(s.cohesion) || s.cohesion < 0.0) return "cohesion must be >= 0 (Pa), got " + std::to_string(s.cohesion);
   if (!finite(s.friction_angle) || s.friction_angle < 0.0 || s.friction_angle >= 80.0 * kDeg)
     return "friction angle must be in [0, 80) degrees, got " + std::to_string(s.friction_angle / kDeg);
@@ -77,8 +88,23 @@ std::string check_soil(const SoilParameters& s) {
     return "c1 and c2 must give an angle of largest stress (c1 + c2 slip) theta_1 within the contact: c1 in [0, 1], "
            "c1 + c2 in [0, 1]";
   if (!finite(s.exit_ratio) || s.exit_ratio < 0.0 || s.exit_ratio > 1.0) return "exit ratio must be in [0, 1]";
+  if (!finite(s.rear_ratio) || s.rear_ratio < 0.0 || s.rear_ratio > 1.0) return "rear ratio must be in [0, 1]";
+  if (!finite(s.n1) || !finite(s.n2) || !(s.n + s.n1 > 0.0 && s.n + s.n1 <= 3.0) || !(s.n + s.n2 > 0.0 && s.n + s.n2 <= 3.0))
+    return "n1 and n2 must keep the slip sinkage exponents n + n1 and n + n2 in (0, 3]";
   if (!finite(s.bedrock_depth) || !(s.bedrock_depth > 0.0)) return "bedrock depth must be > 0 (m)";
   return {};
+}
+
+double bekker_modulus(const SoilParameters& soil, double width) { return soil.k_c / width + soil.k_phi; }
+
+std::string check_soil_width(const SoilParameters& soil, double width) {
+  if (bekker_modulus(soil, width) > 0.0) return {};
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "k_c / b + k_phi = %.4g N/m^(n+2) is not > 0 for a width b of %.4g m (k_c %.4g, k_phi %.4g): this soil "
+                "carries widths above %.4g m only",
+                bekker_modulus(soil, width), width, soil.k_c, soil.k_phi, soil.k_phi > 0.0 ? -soil.k_c / soil.k_phi : 0.0);
+  return text;
 }
 
 }  // namespace mechsim::physics

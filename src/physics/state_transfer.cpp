@@ -63,12 +63,16 @@ void Physics::take_state_from(const Physics& old) {
     data_->gains[i] = old.data_->gains[*oi];
     data_->motor_integral[i] = old.data_->motor_integral[*oi];
   }
-  // The soil, and every wheel of both (by link) where it was in it.
-  set_soil(old.data_->soil);
-  const std::vector<WheelInfo>& old_wheels = old.model_->wheels();
+  // The soil and the world's word on wheels (those of a robot deleted since dropped), and every
+  // wheel of both (by link) where it was in it.
+  std::vector<WheelOverride> overrides;
+  for (const WheelOverride& o : old.data_->soil_overrides)
+    if (model_->link_index(o.link)) overrides.push_back(o);
+  set_soil(old.data_->soil, std::move(overrides));
+  const std::vector<SoilWheelInfo>& old_wheels = old.data_->soil_wheels;
   for (std::size_t w = 0; w < data_->soil_state.size(); ++w) {
     for (std::size_t o = 0; o < old.data_->soil_state.size() && o < old_wheels.size(); ++o) {
-      if (old_wheels[o].link != model_->wheels()[w].link) continue;
+      if (old_wheels[o].link != data_->soil_wheels[w].link) continue;
       data_->soil_state[w] = old.data_->soil_state[o];
       data_->soil_readings[w] = old.data_->soil_readings[o];
     }

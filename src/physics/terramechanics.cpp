@@ -28,27 +28,40 @@ WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& 
   const double z = std::min(sinkage, r) - zr;
   if (!(z > 0.0)) return f;  // the rim does not reach the rut's floor: no soil under it
   const double s = std::clamp(slip, -1.0, 1.0);
+  const bool ding = soil.model == WheelSoilModel::Ding;
   const double t1 = std::acos(1.0 - z / r);
-  const double t2 = -soil.exit_ratio * t1;
+  const double t2 = ding ? -std::acos(std::max(-1.0, 1.0 - soil.rear_ratio * z / r)) : -soil.exit_ratio * t1;
   const double tm = std::clamp((soil.c1 + soil.c2 * std::max(s, 0.0)) * t1, t2, t1);
   f.entry_angle = t1;
   f.exit_angle = t2;
-  const double k = (soil.k_c / b + soil.k_phi) * std::pow(r, soil.n);
+  // sigma = K b^n (depth / b)^N: Bekker's K depth^n at N = n (Wong-Reece), Reece's dimensionless
+  // form with Ding's slip sinkage exponent otherwise.
+  const double N = ding ? soil.n + (s >= 0.0 ? soil.n1 * s : -soil.n2 * s) : soil.n;
+  const double k = bekker_modulus(soil, b) * std::pow(b, soil.n);
+  const double inv_b = 1.0 / b;
   const double cos1 = std::cos(t1), sin1 = std::sin(t1);
-  const double offset = zr / r;  // the depth the soil was loaded to before, per radius
   const double tan_phi = std::tan(soil.friction_angle);
   const double span = t1 - t2;
+  // Grousers: the shear acts at their tips, r_s = r + lambda_s h (Ding et al. 2009).
+  double lug = 0.0;
+  if (wheel.grouser_height > 0.0 && wheel.grouser_count > 0)
+    lug = std::min(1.0, wheel.grouser_count * span / (2.0 * M_PI)) * wheel.grouser_height;
+  const double rs = r + lug;
+  f.shear_radius = rs;
 
   Sums sum;
   // sigma over [t2, tm] is the front's shape stretched: theta* = t1 - (theta - t2)/(tm - t2) (t1 - tm).
   const auto add = [&](double theta, double w, bool front) {
     double c_star = std::cos(theta);
     if (!front) c_star = std::cos(t1 - (theta - t2) / (tm - t2) * (t1 - tm));
-    const double sigma = k * std::pow(std::max(0.0, c_star - cos1) + offset, soil.n);
+    // The depth below the old surface of the soil under this point of the rim.
+    const double depth = r * std::max(0.0, c_star - cos1) + zr;
+    const double sigma = k * std::pow(depth * inv_b, N);
     // Wong and Reece's j = r [(t1 - theta) - (1 - s)(sin t1 - sin theta)], split into the slip's
     // part and the rolling rim's own (the arc being longer than its chord), which a wheel at rest
-    // does not have.
-    const double jx = r * (s * (t1 - theta) + rolling * (1.0 - s) * ((t1 - theta) - (sin1 - std::sin(theta))));
+    // does not have; grousers add (r_s - r)(t1 - theta) while the wheel turns.
+    const double jx = r * (s * (t1 - theta) + rolling * (1.0 - s) * ((t1 - theta) - (sin1 - std::sin(theta)))) +
+                      rolling * lug * (t1 - theta);
     const double jy = span > 0.0 ? lateral_shear * (t1 - theta) / span : 0.0;
     const double j = std::hypot(jx, jy);
     double tx = 0.0, ty = 0.0;
@@ -79,7 +92,7 @@ WheelSoilForces wheel_soil_forces(const SoilParameters& soil, const WheelShape& 
   f.drawbar = rb * sum.x;
   f.resistance = rb * sum.resist;
   f.lateral = -rb * sum.y;  // the soil resists the slide
-  f.torque = -r * rb * sum.tau;
+  f.torque = -rs * rb * sum.tau;
   // The lateral force -tau_y at the rim point r (sin theta x - cos theta n): moment r (sin theta n +
   // cos theta x) per unit force.
   f.moment_normal = -r * rb * sum.my_sin;

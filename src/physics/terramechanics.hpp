@@ -16,14 +16,44 @@
 //                   at entry to `lateral_shear` at exit across it;
 // and the forces on the wheel are their integrals over the rim (r b d theta per unit angle).
 // Slip: (r omega - v) / (r omega) driving (0..1), (r omega - v) / v braking (-1..0).
+//
+// Two models, chosen per soil (SoilParameters::model):
+// - wong_reece (the default): the above, with theta_2 = -exit_ratio theta_1 (0: no rebound, as Wong
+//   and Reece assumed for sand).
+// - ding: Ding, Deng, Gao, Tao, Iagnemma and Liu, "Interaction mechanics model for rigid driving
+//   wheels of planetary rovers moving on sandy terrain with consideration of multiple physical
+//   effects", J. Field Robotics 32(6), 2015 (after Ding et al., "Experimental study and analysis on
+//   driving wheels' performance for planetary exploration rovers moving in deformable soil",
+//   J. Terramechanics 48(1), 2011), built for small, lightly loaded rover wheels in sand, where the
+//   plate-based Wong-Reece wheel meets too much compaction resistance: its whole normal stress
+//   lies ahead of the lowest point (theta_2 = 0), so the stress leans back by about theta_1 / 2,
+//   0.35-0.45 of the load for a wheel sunk a third of its radius. In Ding's model
+//   * the rim stays in contact behind its lowest point up to where the soil, springing and flowing
+//     back, stands rear_ratio x z above it: theta_2 = -acos(1 - rear_ratio z / r) (Ding's lambda;
+//     the stress behind theta_m is Wong and Reece's stretched shape over [theta_2, theta_m]). A
+//     millimetre of rebound under a 6 cm wheel is a fifth of its contact arc: the stress there
+//     pushes the wheel forward and carries part of the load, so it sinks less and meets less
+//     resistance;
+//   * slip sinkage: the exponent grows with slip, N = n + n1 s (driving) or n + n2 |s| (braking),
+//     in Reece's dimensionless form sigma = (k_c / b + k_phi) b^n (z(theta) / b)^N with z(theta) =
+//     r (cos theta - cos theta_1), which is Bekker's (k_c / b + k_phi) z^n at N = n (Ding et al.
+//     write Reece's moduli; mechsim keeps Bekker's, which plate tests give, in the same form).
+// - Grousers (lugs; both models): a wheel with grousers of height h shears the soil at their tips,
+//   r_s = r + lambda_s h (Ding, Gao, Deng, Yoshida and Nagatani, "Slip ratio for lugged wheel of
+//   planetary rover in deformable soil: definition and estimation", IROS 2009), so the shear
+//   displacement gains (r_s - r)(theta_1 - theta) and the shear's moment arm is r_s. mechsim takes
+//   lambda_s as the share of a grouser spacing the contact spans, min(1, count (theta_1 -
+//   theta_2) / 2 pi): fully effective once a grouser is always in the soil.
 
 #include "physics/soil.hpp"
 
 namespace mechsim::physics {
 
 struct WheelShape {
-  double radius = 0.0;  // m
+  double radius = 0.0;  // m, of the rim (grousers stand on it)
   double width = 0.0;   // m
+  double grouser_height = 0.0;  // m; 0: a smooth wheel
+  int grouser_count = 0;        // around the rim
 };
 
 // What the soil exerts on the wheel, in the wheel's contact frame: normal n (out of the soil),
@@ -39,6 +69,7 @@ struct WheelSoilForces {
   double moment_normal = 0.0;   // N m about n from the lateral shear (self-aligning)
   double moment_heading = 0.0;  // N m about x from the lateral shear
   double entry_angle = 0.0, exit_angle = 0.0;  // theta_1, theta_2 (rad)
+  double shear_radius = 0.0;  // m: r_s, where the shear acts (the rim's radius without grousers)
 };
 
 // The forces for sinkage `sinkage` (m, >= 0; above the wheel's radius counts as the radius), the

@@ -15,7 +15,7 @@
 //     that stands still holds like a spring (Janosi-Hanamoto's curve) instead of creeping at
 //     the rate a slip ratio divided by nothing would allow. Integrated exactly over the step
 //     (the exponential), so it is stable at any speed;
-//  4. the Bekker-Wong forces at the slip j_x / L (terramechanics.hpp), in the frame of the
+//  4. the soil model's forces at the slip j_x / L (terramechanics.hpp), in the frame of the
 //     direction the wheel rolls (a wheel driven backwards mirrors the model). The rolling rim's
 //     own shear and the compaction resistance (the horizontal part of the normal stress, against
 //     the travel) build up as states over the contact length and over 5 mm of travel, so that a
@@ -37,7 +37,6 @@
 namespace mechsim::physics {
 namespace {
 
-constexpr double kRestSpeed = 0.02;     // m/s: below it a reading's slip is 0 (undefined)
 constexpr double kPushLength = 0.005;  // m of travel over which the compaction resistance turns
 constexpr double kMinContactLength = 0.005;  // m: shortest contact patch the shear relaxes over
 constexpr double kDampingCap = 0.25;    // damping x dt / mass: the explicit step's bound
@@ -125,19 +124,109 @@ int find_ground(const mjModel* m) {
 
 }  // namespace
 
-void Physics::set_soil(std::optional<SoilParameters> soil) {
+namespace {
+
+// The collision geom of `body` the soil acts on when a link is made a wheel: its largest (by
+// bounding sphere) geom that collides.
+int largest_collision_geom(const mjModel* m, int body) {
+  int best = -1;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] != body || (m->geom_contype[g] == 0 && m->geom_conaffinity[g] == 0)) continue;
+    if (best < 0 || m->geom_rbound[g] > m->geom_rbound[best]) best = g;
+  }
+  return best;
+}
+
+// The soil's wheels: the model's, with the world's overrides (WheelOverride) applied. Throws
+// std::invalid_argument naming the override.
+std::vector<SoilWheelInfo> soil_wheel_list(const PhysicsModel& model, const mjModel* m, const std::vector<WheelOverride>& overrides,
+                                           std::vector<std::string>& notes) {
+  std::vector<SoilWheelInfo> list;
+  for (const WheelInfo& w : model.wheels())
+    list.push_back({w.link, w.joint, w.geom, w.body, {w.radius, w.width}, w.narrow, false,
+                    w.narrow ? "its collision cylinder (narrow: an ellipsoid on rigid ground)" : "its collision cylinder"});
+  for (const WheelOverride& o : overrides) {
+    const std::string where = "world.wheels" + (o.origin.empty() ? std::string() : " (" + o.origin + ")") + ": link '" + o.link + "'";
+    const auto it = std::find_if(list.begin(), list.end(), [&](const SoilWheelInfo& w) { return w.link == o.link; });
+    if (!o.wheel) {
+      if (it == list.end()) {
+        if (!model.link_index(o.link)) throw std::invalid_argument(where + ": the model has no such link");
+        continue;
+      }
+      notes.push_back("'" + o.link + "' is not a soil wheel: " + where + " says so");
+      list.erase(it);
+      continue;
+    }
+    SoilWheelInfo* w = it == list.end() ? nullptr : &*it;
+    if (w == nullptr) {
+      const auto link = model.link_index(o.link);
+      if (!link) throw std::invalid_argument(where + ": the model has no such link");
+      const int body = model.links()[*link].body;
+      std::optional<std::size_t> joint;
+      for (std::size_t j = 0; j < model.joints().size(); ++j) {
+        const JointInfo& info = model.joints()[j];
+        if (!info.prismatic && info.mj_joint >= 0 && m->jnt_bodyid[info.mj_joint] == body) joint = j;
+      }
+      const int geom = body > 0 ? largest_collision_geom(m, body) : -1;
+      if (!joint || geom < 0)
+        throw std::invalid_argument(where + ": a wheel must turn on its link's own revolute or continuous joint and have a collision geom");
+      SoilWheelInfo info;
+      info.link = o.link;
+      info.joint = *joint;
+      info.geom = geom;
+      info.body = body;
+      const double* size = m->geom_size + 3 * geom;
+      if (m->geom_type[geom] == mjGEOM_CYLINDER) info.shape = {size[0], 2.0 * size[1]};
+      else if (m->geom_type[geom] == mjGEOM_ELLIPSOID) info.shape = {size[0], 2.0 * size[2]};
+      else info.axis_from_joint = true;
+      info.origin = where;
+      list.push_back(info);
+      w = &list.back();
+      if (w->axis_from_joint && (!o.radius || !o.width))
+        throw std::invalid_argument(where + ": its collision geom is not a cylinder: give its radius and width (m)");
+    }
+    if (o.radius) w->shape.radius = *o.radius;
+    if (o.width) w->shape.width = *o.width;
+    if (!(w->shape.radius > 0.0) || !(w->shape.width > 0.0) || !std::isfinite(w->shape.radius) || !std::isfinite(w->shape.width))
+      throw std::invalid_argument(where + ": radius and width must be > 0 (m)");
+    if (!(o.grouser_height >= 0.0) || o.grouser_height > w->shape.radius || o.grouser_count < 0)
+      throw std::invalid_argument(where + ": grousers: height must be in [0, radius] (m) and count >= 0");
+    w->shape.grouser_height = o.grouser_height;
+    w->shape.grouser_count = o.grouser_count;
+    w->narrow = w->shape.width <= w->shape.radius;
+    if (it != list.end()) w->origin += ", " + where;
+  }
+  return list;
+}
+
+}  // namespace
+
+void Physics::set_soil(std::optional<SoilParameters> soil, std::vector<WheelOverride> overrides) {
   if (soil) {
     const std::string problem = check_soil(*soil);
     if (!problem.empty()) throw std::invalid_argument("soil" + (soil->name.empty() ? std::string() : " '" + soil->name + "'") + ": " + problem);
   }
   Data& data = *data_;
   mjModel* m = data.m;
-  const std::vector<WheelInfo>& wheels = model_->wheels();
-  for (const WheelInfo& w : wheels)
-    if (m->nuser_geom > 0) m->geom_user[w.geom * m->nuser_geom] = soil ? soil->bedrock_depth : 0.0;
+  std::vector<std::string> notes;
+  std::vector<SoilWheelInfo> wheels;
+  if (soil) {
+    wheels = soil_wheel_list(*model_, m, overrides, notes);
+    for (const SoilWheelInfo& w : wheels)
+      if (const std::string problem = check_soil_width(*soil, w.shape.width); !problem.empty())
+        throw std::invalid_argument("soil '" + soil->name + "' under wheel '" + w.link + "': " + problem);
+  }
+  // The bedrock: under the earlier soil's wheels none, under this one's its depth.
+  if (m->nuser_geom > 0) {
+    for (const SoilWheelInfo& w : data.soil_wheels) m->geom_user[w.geom * m->nuser_geom] = 0.0;
+    for (const SoilWheelInfo& w : wheels) m->geom_user[w.geom * m->nuser_geom] = soil->bedrock_depth;
+  }
   data.soil = std::move(soil);
+  data.soil_overrides = std::move(overrides);
+  data.soil_wheels = std::move(wheels);
+  data.soil_wheel_notes = std::move(notes);
   data.soil_ground = data.soil ? find_ground(m) : -1;
-  const std::size_t n = data.soil ? wheels.size() : 0;
+  const std::size_t n = data.soil_wheels.size();
   data.soil_state.assign(n, {});
   data.soil_pending.assign(n, {});
   data.soil_readings.assign(n, {});
@@ -149,6 +238,8 @@ void Physics::set_soil(std::optional<SoilParameters> soil) {
 
 const std::optional<SoilParameters>& Physics::soil() const { return data_->soil; }
 const std::vector<WheelSoilReading>& Physics::wheel_soil() const { return data_->soil_readings; }
+const std::vector<SoilWheelInfo>& Physics::soil_wheels() const { return data_->soil_wheels; }
+const std::vector<std::string>& Physics::soil_wheel_notes() const { return data_->soil_wheel_notes; }
 
 void Physics::mujoco_step() {
   mjModel* m = data_->m;
@@ -177,11 +268,11 @@ void Physics::commit_soil() {
   data_->soil_state = data_->soil_pending;
   data_->soil_readings = data_->soil_pending_readings;
   if (!data_->soil->multi_pass) return;
-  const std::vector<WheelInfo>& wheels = model_->wheels();
+  const std::vector<SoilWheelInfo>& wheels = data_->soil_wheels;
   for (std::size_t i = 0; i < wheels.size(); ++i) {
     const Data::Press& p = data_->soil_press[i];
     if (!(p.sinkage > 0.0)) continue;
-    for_each_rut_cell(p.low, p.axle, wheels[i].width, [&](double x, double y) {
+    for_each_rut_cell(p.low, p.axle, wheels[i].shape.width, [&](double x, double y) {
       data_->ruts.press(static_cast<int>(i), x, y, p.sinkage);
     });
   }
@@ -192,25 +283,29 @@ void Physics::apply_soil() {
   const mjModel* m = data.m;
   mjData* d = data.d;
   const SoilParameters& soil = *data.soil;
-  const std::vector<WheelInfo>& wheels = model_->wheels();
+  const std::vector<SoilWheelInfo>& wheels = data.soil_wheels;
   const double dt = m->opt.timestep;
   const double g = std::sqrt(dot(m->opt.gravity, m->opt.gravity));
   const double tan_phi = std::tan(soil.friction_angle);
-  for (const WheelInfo& w : wheels)
+  for (const SoilWheelInfo& w : wheels)
     for (int k = 0; k < 6; ++k) d->xfrc_applied[6 * w.body + k] = data.xfrc_base[6 * static_cast<std::size_t>(w.body) + k];
 
   for (std::size_t i = 0; i < wheels.size(); ++i) {
-    const WheelInfo& w = wheels[i];
+    const SoilWheelInfo& w = wheels[i];
     const Data::SoilWheel& before = data.soil_state[i];
     Data::SoilWheel& after = data.soil_pending[i];
     WheelSoilReading& reading = data.soil_pending_readings[i];
     after = before;
     reading = {};
     data.soil_press[i].sinkage = 0.0;
-    const double r = w.radius;
+    const double r = w.shape.radius;
     const mjtNum* c = d->geom_xpos + 3 * w.geom;
     const mjtNum* R = d->geom_xmat + 9 * w.geom;
-    const double a[3] = {R[2], R[5], R[8]};  // the cylinder's axis
+    const int mj_joint = model_->joints()[w.joint].mj_joint;
+    // The axle: the cylinder's (or ellipsoid's) axis; a mesh's or sphere's joint's.
+    double a[3] = {R[2], R[5], R[8]};
+    if (w.axis_from_joint)
+      for (int k = 0; k < 3; ++k) a[k] = d->xaxis[3 * mj_joint + k];
     double ground[3], n[3];
     if (data.soil_ground < 0 || !ground_plane_at(m, d, data.soil_ground, c, 0.5 * r, ground, n)) {
       after = {};
@@ -233,7 +328,7 @@ void Physics::apply_soil() {
     double rut = 0.0;
     if (soil.multi_pass) {
       int cells = 0;
-      for_each_rut_cell(low, a, w.width, [&](double x, double y) {
+      for_each_rut_cell(low, a, w.shape.width, [&](double x, double y) {
         rut += data.ruts.depth(static_cast<int>(i), x, y);
         ++cells;
       });
@@ -259,8 +354,11 @@ void Physics::apply_soil() {
     // Shear displacements over the step, and the forces in the frame of the motion.
     const SoilParameters& s = soil;
     // The arc in the soil (in a rut: below its floor, terramechanics.hpp).
-    const double theta1 = std::acos(std::clamp(1.0 - (std::min(sinkage, r) - rut) / r, -1.0, 1.0));
-    const double length = std::max(kMinContactLength, r * theta1 * (1.0 + s.exit_ratio));
+    const double below = std::min(sinkage, r) - rut;
+    const double theta1 = std::acos(std::clamp(1.0 - below / r, -1.0, 1.0));
+    const double theta2 = s.model == WheelSoilModel::Ding ? std::acos(std::clamp(1.0 - s.rear_ratio * below / r, -1.0, 1.0))
+                                                          : s.exit_ratio * theta1;
+    const double length = std::max(kMinContactLength, r * (theta1 + theta2));
     after.shear_x = std::clamp(relax(before.shear_x, rw - v, u, length, dt), -length, length);
     after.shear_y = std::clamp(relax(before.shear_y, v_side, u, length, dt), -length, length);
     // Rolling (rim and centre together) builds up over the contact's length; the compaction ahead
@@ -270,7 +368,7 @@ void Physics::apply_soil() {
     after.rolling = toward(before.rolling, mean, length, dt);
     after.pushing = toward(before.pushing, v, kPushLength, dt);
     const double dir = after.rolling >= 0.0 ? 1.0 : -1.0;
-    const WheelSoilForces f = wheel_soil_forces(s, {r, w.width}, sinkage, dir * after.shear_x / length, dir * after.shear_y,
+    const WheelSoilForces f = wheel_soil_forces(s, w.shape, sinkage, dir * after.shear_x / length, dir * after.shear_y,
                                                 std::abs(after.rolling), rut);
     // The shear's thrust in the rolling's frame; the compaction resistance against the travel.
     double fx = dir * (f.drawbar + f.resistance) - after.pushing * f.resistance;
@@ -288,7 +386,7 @@ void Physics::apply_soil() {
     // d(load)/d(sinkage): the stress grows as z^n and the arc as (z - rut)^(1/2).
     const double k_normal = fn * (s.n / std::max(sinkage, 1e-4) + 0.5 / std::max(sinkage - rut, 1e-4));
     fn = std::max(0.0, fn - std::min(cap_normal, 2.0 * std::sqrt(k_normal * load_mass)) * v_normal);
-    const double capacity = s.cohesion * w.width * length + fn * tan_phi;
+    const double capacity = s.cohesion * w.shape.width * length + fn * tan_phi;
     const double c_shear = std::min(cap_shear, 2.0 * std::sqrt(capacity / s.shear_modulus * load_mass));
     fx += c_shear * (after.shear_x - before.shear_x) / dt;
     fy -= c_shear * (after.shear_y - before.shear_y) / dt;
@@ -308,10 +406,13 @@ void Physics::apply_soil() {
       d->xfrc_applied[6 * w.body + 3 + k] += torque[k] + shift[k];
     }
 
-    // Readings in the frame of the motion (heading dir x, axle dir y).
+    // Readings in the frame of the motion (heading dir x, axle dir y). Slip is a ratio of speeds:
+    // defined at any speed a rig runs at, undefined (flagged, not zero) only at rest.
     reading.contact = true;
-    reading.slip = u > kRestSpeed ? dir * (rw - v) / u : 0.0;
-    reading.slip_angle = std::abs(v) + std::abs(v_side) > kRestSpeed ? std::atan2(dir * v_side, std::abs(v)) : 0.0;
+    reading.moving = u > kSlipRestSpeed;
+    reading.slip = reading.moving ? dir * (rw - v) / u : 0.0;
+    reading.sliding = std::hypot(v, v_side) > kSlipRestSpeed;
+    reading.slip_angle = reading.sliding ? std::atan2(dir * v_side, std::abs(v)) : 0.0;
     reading.sinkage = sinkage;
     reading.normal_force = fn;
     reading.traction = dir * fx;

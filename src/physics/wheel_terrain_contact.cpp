@@ -173,10 +173,10 @@ mjfCollision mujoco_hfield_routine() {
 // bedrock (Physics::set_soil writes it into the geom's user number), 0 on rigid ground.
 double bedrock(const mjModel* m, int g) { return m->nuser_geom > 0 ? m->geom_user[g * m->nuser_geom] : 0.0; }
 
-// MuJoCo's plane-cylinder routine, its contacts moved down to a soil wheel's bedrock.
-int collide_plane_cylinder(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2, mjtNum margin) {
-  const int n = mujoco_routine<mjGEOM_PLANE, mjGEOM_CYLINDER>()(m, d, con, g1, g2, margin);
-  const double depth = bedrock(m, g2);
+// Contacts con[0, n) of geom g with the ground moved down to its bedrock (a soil wheel's; none
+// for any other geom): those not that deep are dropped. Returns how many are left.
+int to_bedrock(const mjModel* m, int g, mjContact* con, int n, mjtNum margin) {
+  const double depth = bedrock(m, g);
   if (depth <= 0.0) return n;
   int kept = 0;
   for (int i = 0; i < n; ++i) {
@@ -186,6 +186,13 @@ int collide_plane_cylinder(const mjModel* m, const mjData* d, mjContact* con, in
     ++kept;
   }
   return kept;
+}
+
+// MuJoCo's plane routine for a geom of `type`, its contacts moved down to a soil wheel's bedrock
+// (a wide wheel is a cylinder, a narrow one an ellipsoid, a wheel the world names may be any shape).
+template <int type>
+int collide_plane_bedrock(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2, mjtNum margin) {
+  return to_bedrock(m, g2, con, mujoco_routine<mjGEOM_PLANE, type>()(m, d, con, g1, g2, margin), margin);
 }
 
 // The geom's centre c and the half extents of its box aligned with the height field's frame.
@@ -247,7 +254,7 @@ int collide_hfield_convex(const mjModel* m, const mjData* d, mjContact* con, int
   double c[3], half[3];
   box_in_hfield(m, d, g1, g2, margin, c, half);
   if (clear_of_surface(HfieldSurface(hfield_grid(m, g1)), c, half)) return 0;
-  return mujoco_hfield_routine<type>()(m, d, con, g1, g2, margin);
+  return to_bedrock(m, g2, con, mujoco_hfield_routine<type>()(m, d, con, g1, g2, margin), margin);
 }
 
 // mjCOLLISIONFUNC's signature: geom g1 is the height field, g2 the cylinder; fills con[] with
@@ -314,8 +321,18 @@ void install_wheel_terrain_contact() {
     mjCOLLISIONFUNC[mjGEOM_HFIELD][mjGEOM_CYLINDER] = collide_hfield_cylinder;
     mjCOLLISIONFUNC[mjGEOM_HFIELD][mjGEOM_BOX] = collide_hfield_convex<mjGEOM_BOX>;
     mjCOLLISIONFUNC[mjGEOM_HFIELD][mjGEOM_MESH] = collide_hfield_convex<mjGEOM_MESH>;
+    (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_SPHERE>();
+    (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_CAPSULE>();
+    (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_ELLIPSOID>();
     (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_CYLINDER>();
-    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_CYLINDER] = collide_plane_cylinder;
+    (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_BOX>();
+    (void)mujoco_routine<mjGEOM_PLANE, mjGEOM_MESH>();
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_SPHERE] = collide_plane_bedrock<mjGEOM_SPHERE>;
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_CAPSULE] = collide_plane_bedrock<mjGEOM_CAPSULE>;
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_ELLIPSOID] = collide_plane_bedrock<mjGEOM_ELLIPSOID>;
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_CYLINDER] = collide_plane_bedrock<mjGEOM_CYLINDER>;
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_BOX] = collide_plane_bedrock<mjGEOM_BOX>;
+    mjCOLLISIONFUNC[mjGEOM_PLANE][mjGEOM_MESH] = collide_plane_bedrock<mjGEOM_MESH>;
   });
 }
 

@@ -54,10 +54,11 @@ int rim_contacts(const HfieldSurface& surface, const double c[3], const double a
 
 // Replaces MuJoCo's height field-cylinder collision with mechsim's, puts the cheap test in front
 // of its height field routines for other shapes, and moves a soil wheel's contacts with the
-// ground (height field or plane) down to its bedrock (the geom's user number, written by
-// Physics::set_soil; 0 for every other geom). Once per process; every later call does nothing. MuJoCo's table is process-global: the entry written is a pure function of
-// the model and data it is given, the same for every simulation, so instances still share nothing
-// mutable.
+// ground (height field or plane, whatever the wheel's shape: a cylinder, a narrow wheel's
+// ellipsoid, a link the world made a wheel) down to its bedrock (the geom's user number, written by
+// Physics::set_soil; 0 for every other geom). Once per process; every later call does nothing.
+// MuJoCo's table is process-global: the entry written is a pure function of the model and data it
+// is given, the same for every simulation, so instances still share nothing mutable.
 void install_wheel_terrain_contact();
 
 }  // namespace mechsim::physics::detail

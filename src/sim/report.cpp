@@ -439,12 +439,27 @@ void write_report(const Scenario& s, const Simulation& sim, const Recorder& reco
     }
   }
   if (sim.world().soil) {
-    j["soil"] = {{"name", sim.world().soil->name}, {"source", sim.world().soil->source}, {"multi_pass", sim.world().soil->multi_pass}};
+    const physics::SoilParameters& soil = *sim.world().soil;
+    j["soil"] = {{"name", soil.name}, {"source", soil.source}, {"model", physics::model_name(soil.model)}, {"multi_pass", soil.multi_pass}};
     j["wheels"] = nlohmann::ordered_json::array();
     for (const WheelOutcome& w : result.wheels) {
-      j["wheels"].push_back({{"link", w.link}, {"mean_slip", w.mean_slip}, {"mean_traction_N", w.mean_traction},
-                             {"max_sinkage_m", w.max_sinkage}, {"mean_sinkage_m", w.mean_sinkage},
-                             {"mean_rut_depth_m", w.mean_rut_depth}, {"time_in_soil_s", w.time_in_soil}});
+      nlohmann::ordered_json wheel = {{"link", w.link}, {"radius_m", w.radius}, {"width_m", w.width}, {"narrow", w.narrow}};
+      if (w.grouser_count > 0) wheel["grousers"] = {{"height_m", w.grouser_height}, {"count", w.grouser_count}};
+      wheel.update({{"why", w.origin}, {"mean_slip", w.mean_slip}, {"mean_traction_N", w.mean_traction},
+                    {"max_sinkage_m", w.max_sinkage}, {"mean_sinkage_m", w.mean_sinkage},
+                    {"mean_rut_depth_m", w.mean_rut_depth}, {"time_in_soil_s", w.time_in_soil}});
+      j["wheels"].push_back(std::move(wheel));
+    }
+    j["not_wheels"] = result.not_wheels;
+    if (!result.steady_state_wheel.empty()) {
+      nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+      for (const SteadyStateRow& r : result.steady_states) {
+        if (r.samples == 0) continue;
+        rows.push_back({{"from_s", r.from}, {"to_s", r.to}, {"slip", r.slip}, {"drawbar_N", r.drawbar}, {"load_N", r.load},
+                        {"dp_per_w", r.load > 0.0 ? r.drawbar / r.load : 0.0}, {"torque_Nm", r.torque},
+                        {"sinkage_m", r.sinkage}});
+      }
+      j["steady_states"] = {{"wheel", result.steady_state_wheel}, {"rows", std::move(rows)}};
     }
   }
   j["tracking"] = nlohmann::ordered_json::array();

@@ -377,6 +377,20 @@ Scenario load_scenario(const Params& root, const std::string& path) {
         s.camera_overrides[name] = c;
       }
     }
+    if (auto steady = root.find("steady_states")) {
+      only_keys(*steady, {"wheel", "windows"});
+      SteadyStateSpec spec;
+      spec.wheel = steady->get<std::string>("wheel", "");
+      const Params windows = steady->child("windows");
+      if (!windows.is_list() || windows.size() == 0) fail(windows, "expected a list of [from, to] windows (s)");
+      for (const Params& w : windows.items()) {
+        const std::vector<double> v = w.as<std::vector<double>>();
+        if (v.size() != 2 || !(v[0] >= 0.0) || !(v[1] > v[0]) || !std::isfinite(v[1]))
+          fail(w, "a window is [from, to] with 0 <= from < to (s)");
+        spec.windows.push_back({v[0], v[1]});
+      }
+      s.steady_states = std::move(spec);
+    }
     if (root.has("camera_picture_times")) {
       s.camera_picture_times = root.get<std::vector<double>>("camera_picture_times");
       for (const double t : s.camera_picture_times)

@@ -115,6 +115,10 @@
 //     # than travelling) over [from, to] s of a wheel (its link; default every wheel), sampled
 //     # every tick while the wheel is in the soil.
 //     - {slip: {wheel: wheel_FL_1, from: 2, to: 10, min_mean: 0.05, max_mean: 0.6}}
+//   # With a soil: a test rig's steady states, one row per window of a wheel's means (slip,
+//   # drawbar pull, DP/W, torque, sinkage, load) in steady_states.csv and steady_states.png (DP/W,
+//   # torque / (W r) and sinkage against slip) and summary.json. wheel: default the first soil wheel.
+//   steady_states: {wheel: wheel_link, windows: [[10, 20], [30, 40]]}
 //   # More robots in the world (sim::OtherRobot), each with its own controller manager; they
 //   # collide with the robot and each other. `robot` and `controllers` default to the first
 //   # robot's (its description, args and packages; its controllers file, namespace and start).
@@ -265,6 +269,12 @@ struct OtherRobotConfig {
   std::vector<std::string> start;
 };
 
+// A scenario's steady_states: the windows (s) over which a wheel's soil readings are averaged.
+struct SteadyStateSpec {
+  std::string wheel;  // a soil wheel's link; "": the first
+  std::vector<std::array<double, 2>> windows;
+};
+
 // What a run does when the robot leaves the usable ground.
 enum class LeavingTerrain { Stop, Continue };
 
@@ -300,6 +310,7 @@ struct Scenario {
   std::vector<double> camera_picture_times;  // s; empty: no camera pictures
   // camera_overrides: per camera sensor (or "all") a lower rate or resolution for a fast run.
   std::map<std::string, description::CameraOverride> camera_overrides;
+  std::optional<SteadyStateSpec> steady_states;
 };
 
 // Reads and validates a scenario file. Errors name the file and the parameter path.

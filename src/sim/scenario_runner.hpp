@@ -131,15 +131,32 @@ struct GripperGoalOutcome {
   control::GripperResult result;  // finished only: gap (m), effort (N), stalled, reached_goal
 };
 
-// One wheel in the soil (world.soil) over a run: means while it was in the soil.
+// One wheel in the soil (world.soil) over a run: means while it was in the soil (the slip's while
+// it moved: physics::WheelSoilReading::moving).
 struct WheelOutcome {
   std::string link;
+  double radius = 0.0, width = 0.0;  // m, as the soil sees it
+  bool narrow = false;               // width <= radius
+  double grouser_height = 0.0;       // m
+  int grouser_count = 0;
+  std::string origin;                // why it is a wheel (physics::SoilWheelInfo::origin)
   double mean_slip = 0.0;      // physics::WheelSoilReading::slip
   double mean_traction = 0.0;  // N
   double max_sinkage = 0.0;    // m
   double mean_sinkage = 0.0;   // m
   double mean_rut_depth = 0.0;  // m: the ruts of other wheels it ran in (soil multi_pass), 0 without
   double time_in_soil = 0.0;   // s
+};
+
+// A test rig's steady state (Scenario::steady_states): one window's means of one wheel.
+struct SteadyStateRow {
+  double from = 0.0, to = 0.0;  // s
+  double slip = 0.0;            // while moving
+  double drawbar = 0.0;         // N, the soil's net pull along the heading
+  double load = 0.0;            // N, the normal force
+  double torque = 0.0;          // N m, the soil's on the axle (< 0 resists a driven wheel)
+  double sinkage = 0.0;         // m
+  long samples = 0;             // ticks in the soil
 };
 
 struct ScenarioResult {
@@ -164,6 +181,11 @@ struct ScenarioResult {
   std::vector<CheckOutcome> checks;
   std::vector<RobotMotion> others;   // the scenario's `others:`, in order
   std::vector<WheelOutcome> wheels;  // with a soil only
+  // With a soil: what looks like a wheel but is not a soil wheel, one line each with the reason
+  // (physics::PhysicsModel::not_wheels, physics::Physics::soil_wheel_notes).
+  std::vector<std::string> not_wheels;
+  std::string steady_state_wheel;             // Scenario::steady_states' wheel
+  std::vector<SteadyStateRow> steady_states;  // one per window
   std::vector<TimingWindow> timing;  // RunOptions::timing_window
   std::vector<std::string> files;  // written, relative to output_dir
   std::vector<std::string> warnings;

@@ -9,6 +9,7 @@
 
 #include "sim/scenario_read.hpp"
 #include "sim/soil_config.hpp"
+#include "sim/wheel_config.hpp"
 
 namespace mechsim::sim {
 
@@ -112,7 +113,8 @@ WorldConfig read_world_config(const Params& world, const fs::path& base) {
   const std::string name = world.get<std::string>("name", "empty");
   w.name = (name == "empty" || name == "mars_yard_2024" || name == "slope") ? name : resolve_path(base, name);
   if (world.has("slope_deg")) w.slope_deg = finite(world, "slope_deg", 10.0);
-  if (auto soil = world.find("soil")) w.soil = read_soil(*soil);
+  if (auto soil = world.find("soil")) w.soil = read_soil(*soil, base);
+  if (auto wheels = world.find("wheels")) w.wheels = read_wheel_overrides(*wheels);
   w.seed = static_cast<std::uint64_t>(world.get<int>("seed", static_cast<int>(physics::kMarsYardDefaultSeed)));
   if (world.has("size_x")) w.heightmap.size_x = world.get<double>("size_x");
   if (world.has("size_y")) w.heightmap.size_y = world.get<double>("size_y");

@@ -105,7 +105,7 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
   startup_times_.compile = physics_model_->build_times().compile;
   physics::StageTimer timer;
   physics_ = std::make_shared<physics::Physics>(physics_model_);
-  physics_->set_soil(world_.soil);
+  physics_->set_soil(world_.soil, world_.wheels);
   startup_times_.data = timer.lap();
   if (options_.settle_on_ground && world_.spec.terrain && !physics_model_->fixed_to_world()) settle_on_ground();
   if (options_.settle_on_ground)

@@ -219,6 +219,7 @@ World make_world(const WorldConfig& config) {
   World world;
   world.name = config.name;
   world.soil = config.soil;
+  world.wheels = config.wheels;
   world.mars_yard = std::move(terrain.yard);
   if (terrain.usable) {
     world.usable = terrain.usable;

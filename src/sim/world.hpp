@@ -19,6 +19,7 @@
 #include "physics/mars_yard.hpp"
 #include "physics/physics_options.hpp"
 #include "physics/soil.hpp"
+#include "physics/wheel_override.hpp"
 #include "physics/terrain_stats.hpp"
 
 namespace mechsim::sim {
@@ -34,6 +35,8 @@ struct WorldConfig {
   std::optional<double> slope_deg;                     // slope only (default 10)
   // The wheels meet soil (physics/soil.hpp) instead of rigid ground; nullopt: rigid.
   std::optional<physics::SoilParameters> soil;
+  // Which links are soil wheels, over the description's (sim/wheel_config.hpp); with a soil only.
+  std::vector<physics::WheelOverride> wheels;
   // An SDF world's models with sensors or model plugins are left out of the world's own objects
   // and listed in World::sdf_robots instead, for the caller to bring in as robots of their own
   // (gazebo_ros' gzserver mode: bridge::World). False: their sensors and plugins are listed as
@@ -61,6 +64,7 @@ struct World {
   std::optional<physics::Region> usable;
   std::string usable_what;
   std::optional<physics::SoilParameters> soil;  // WorldConfig::soil
+  std::vector<physics::WheelOverride> wheels;   // WorldConfig::wheels
   // A Gazebo SDF world file (.world, .sdf): the models it simulates (as Gazebo names them: the
   // ground plane, static boxes) and what it leaves out, one line each ("model 'cup1_model': ...").
   std::vector<std::string> sdf_models;

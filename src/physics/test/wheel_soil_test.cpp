@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "physics/physics.hpp"
 #include "physics/terramechanics.hpp"
@@ -21,26 +22,27 @@ namespace {
 // world -> "tow" (prismatic x) -> "lift" (prismatic z) -> "spin" (continuous about y) -> wheel.
 // `carriage_kg` loads the wheel. The wheel's spin inertia is large (0.05 kg m^2) so that its
 // velocity servo can be stiff.
-std::string rig_urdf(double carriage_kg) {
+std::string rig_urdf(double carriage_kg, double radius = 0.09, double width = 0.12) {
   char text[3000];
   std::snprintf(text, sizeof text, R"(<robot name="rig">
   <link name="world"/>
   <link name="sled"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
   <link name="carriage"><inertial><mass value="%g"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial></link>
   <link name="wheel"><inertial><mass value="1"/><inertia ixx="0.03" iyy="0.05" izz="0.03" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin rpy="1.5707963267948966 0 0"/><geometry><cylinder radius="0.09" length="0.12"/></geometry></collision></link>
+    <collision><origin rpy="1.5707963267948966 0 0"/><geometry><cylinder radius="%g" length="%g"/></geometry></collision></link>
   <joint name="tow" type="prismatic"><parent link="world"/><child link="sled"/><axis xyz="1 0 0"/>
     <limit lower="-100" upper="100" effort="2000" velocity="10"/></joint>
-  <joint name="lift" type="prismatic"><parent link="sled"/><child link="carriage"/><origin xyz="0 0 0.09"/><axis xyz="0 0 1"/>
+  <joint name="lift" type="prismatic"><parent link="sled"/><child link="carriage"/><origin xyz="0 0 %g"/><axis xyz="0 0 1"/>
     <limit lower="-0.2" upper="0.2" effort="0" velocity="10"/></joint>
   <joint name="spin" type="continuous"><parent link="carriage"/><child link="wheel"/><axis xyz="0 1 0"/>
     <limit effort="200" velocity="100"/></joint>
-</robot>)", carriage_kg);
+</robot>)", carriage_kg, radius, width, radius);
   return text;
 }
 
 struct RigRun {
   double slip = 0.0, sinkage = 0.0, load = 0.0, drawbar = 0.0;
+  double kinematic_slip = 0.0;  // 1 - v / (r w) from the joints' velocities
 };
 
 // Tows the rig at (1 - slip) r w with the wheel at w = 3.33 rad/s (r w = 0.3 m/s), and averages
@@ -244,6 +246,158 @@ TEST(WheelSoil, TheModelsWheelsAreItsTurningCylindersAndBadSoilIsRefused) {
     EXPECT_NE(std::string(e.what()).find("shear modulus"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(physics.soil());
+}
+
+// The CMU sand's plate fit (two_stage, large box) under the Ding model with dry sand's shear
+// values: robots/single_wheel_rig/soil/cmu_sand.soil.yaml.
+SoilParameters cmu_sand() {
+  SoilParameters s = *find_soil("dry_sand");
+  s.name = "cmu_sand";
+  s.n = 1.4765;
+  s.k_c = -4.0648e5;
+  s.k_phi = 1.973e7;
+  s.model = WheelSoilModel::Ding;
+  return s;
+}
+
+// A rig at a test rig's speed: towed at 10 mm/s, the wheel turning for slip `slip`; the means
+// of the last `average` s of `seconds`.
+RigRun run_slow_rig(const SoilParameters& soil, double radius, double width, double carriage_kg, double slip, double seconds,
+                    double average, std::vector<WheelOverride> overrides = {}) {
+  const auto model = test::build(rig_urdf(carriage_kg, radius, width));
+  Physics physics(model);
+  physics.set_soil(soil, std::move(overrides));
+  const std::size_t tow = *model->joint_index("tow"), spin = *model->joint_index("spin");
+  physics.set_mode(spin, JointMode::Velocity, {0.0, 0.0, true});  // a motor: holds its speed under load
+  physics.set_mode(tow, JointMode::Velocity, {0.0, 0.0, true});
+  const double v = 0.01;
+  RigRun out;
+  int samples = 0;
+  const int steps = static_cast<int>(seconds * 1000), from = static_cast<int>((seconds - average) * 1000);
+  for (int k = 0; k < steps; ++k) {
+    physics.set_velocity_command(spin, v / (radius * (1.0 - slip)));
+    physics.set_velocity_command(tow, v);
+    EXPECT_TRUE(physics.step().ok());
+    if (k < from) continue;
+    const WheelSoilReading& r = physics.wheel_soil().at(0);
+    EXPECT_TRUE(r.moving) << "a wheel at 10 mm/s moves: its slip is defined";
+    out.slip += r.slip;
+    out.sinkage += r.sinkage;
+    out.load += r.normal_force;
+    out.drawbar += r.traction;
+    out.kinematic_slip += 1.0 - physics.velocity(tow) / (radius * physics.velocity(spin));
+    ++samples;
+  }
+  out.slip /= samples;
+  out.sinkage /= samples;
+  out.load /= samples;
+  out.drawbar /= samples;
+  out.kinematic_slip /= samples;
+  return out;
+}
+
+// A narrow wheel (b <= r: the CMU rig's, r 58 mm, b 50 mm; an ellipsoid to MuJoCo on rigid
+// ground) is a soil wheel as a wide one (b 100 mm) is; at a test rig's 10 mm/s each reads the
+// slip it is set to (not 0) and settles on the steady model for its own width: they differ by
+// what the width explains.
+TEST(WheelSoil, NarrowAndWideWheelsAreSoilWheelsAndDifferByTheirWidthAtRigSpeed) {
+  for (const double width : {0.05, 0.10}) {
+    const auto model = test::build(rig_urdf(2.0, 0.058, width));
+    ASSERT_EQ(model->wheels().size(), 1u) << "width " << width;
+    EXPECT_EQ(model->wheels()[0].narrow, width <= 0.058);
+    EXPECT_DOUBLE_EQ(model->wheels()[0].radius, 0.058);
+    EXPECT_DOUBLE_EQ(model->wheels()[0].width, width);
+    for (const double slip : {0.0, 0.3}) {
+      const RigRun rig = run_slow_rig(cmu_sand(), 0.058, width, 2.0, slip, 20.0, 4.0);
+      const SteadyWheel steady = steady_wheel(cmu_sand(), {0.058, width}, rig.load, rig.slip);
+      std::printf("[ figures  ] b %.2f m slip %.2f at 10 mm/s: read slip %.4f, load %.2f N, sinkage %.2f mm (model %.2f), DP %.3f N "
+                  "(model %.3f)\n", width, slip, rig.slip, rig.load, 1000 * rig.sinkage, 1000 * steady.sinkage, rig.drawbar,
+                  steady.forces.drawbar);
+      EXPECT_NEAR(rig.slip, rig.kinematic_slip, 0.002) << "width " << width << ": the reading is the joints' slip";
+      EXPECT_NEAR(rig.slip, slip, 0.02) << "width " << width << ": the servos hold it near the set slip";
+      EXPECT_NEAR(rig.load, 9.81 * 3.0, 0.02 * 9.81 * 3.0);
+      EXPECT_NEAR(rig.sinkage, steady.sinkage, 0.1 * steady.sinkage) << "width " << width << " slip " << slip;
+      EXPECT_NEAR(rig.drawbar, steady.forces.drawbar, 0.15 * std::abs(steady.forces.drawbar) + 0.01 * rig.load)
+          << "width " << width << " slip " << slip;
+    }
+  }
+}
+
+WheelOverride override_of(const std::string& link, bool wheel = true) {
+  WheelOverride o;
+  o.link = link;
+  o.wheel = wheel;
+  return o;
+}
+
+// The world's word on wheels (WheelOverride): a wheel taken out meets rigid ground and is named;
+// a link the model does not count as a wheel (a sphere on the spin joint) becomes one with the
+// dimensions given; grousers reach the soil; an unknown link, or a non-cylinder without
+// dimensions, is refused with its name.
+TEST(WheelSoil, TheWorldSaysWhichLinksAreWheels) {
+  const auto model = test::build(rig_urdf(9.0));
+  {
+    Physics physics(model);
+    physics.set_soil(*find_soil("dry_sand"), {override_of("wheel", false)});
+    EXPECT_TRUE(physics.soil_wheels().empty());
+    ASSERT_EQ(physics.soil_wheel_notes().size(), 1u);
+    EXPECT_NE(physics.soil_wheel_notes()[0].find("'wheel' is not a soil wheel"), std::string::npos);
+  }
+  {
+    Physics physics(model);
+    WheelOverride lugs = override_of("wheel");
+    lugs.grouser_height = 0.01;
+    lugs.grouser_count = 12;
+    physics.set_soil(*find_soil("dry_sand"), {lugs});
+    ASSERT_EQ(physics.soil_wheels().size(), 1u);
+    EXPECT_EQ(physics.soil_wheels()[0].shape.grouser_count, 12);
+    EXPECT_DOUBLE_EQ(physics.soil_wheels()[0].shape.grouser_height, 0.01);
+  }
+  std::string sphere = rig_urdf(9.0);
+  sphere.replace(sphere.find("<cylinder radius=\"0.09\" length=\"0.12\"/>"), std::string("<cylinder radius=\"0.09\" length=\"0.12\"/>").size(),
+                 "<sphere radius=\"0.09\"/>");
+  const auto ball = test::build(sphere);
+  EXPECT_TRUE(ball->wheels().empty());
+  ASSERT_EQ(ball->not_wheels().size(), 1u);
+  EXPECT_NE(ball->not_wheels()[0].find("'wheel' on joint 'spin' is not a wheel: its collision is a sphere"), std::string::npos)
+      << ball->not_wheels()[0];
+  Physics physics(ball);
+  try {
+    physics.set_soil(*find_soil("dry_sand"), {override_of("wheel")});
+    FAIL() << "a sphere without a width";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("give its radius and width"), std::string::npos) << e.what();
+  }
+  try {
+    physics.set_soil(*find_soil("dry_sand"), {override_of("no_such_link")});
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'no_such_link'"), std::string::npos) << e.what();
+  }
+  WheelOverride made = override_of("wheel");
+  made.radius = 0.09;
+  made.width = 0.12;
+  physics.set_soil(*find_soil("dry_sand"), {made});
+  ASSERT_EQ(physics.soil_wheels().size(), 1u);
+  EXPECT_TRUE(physics.soil_wheels()[0].axis_from_joint);
+  // The sphere rolls in the soil as the cylinder did: it sinks to where the soil carries it.
+  physics.set_mode(*ball->joint_index("tow"), JointMode::Velocity, {0.0, 4000.0});
+  for (int k = 0; k < 2000; ++k) ASSERT_TRUE(physics.step().ok());
+  const WheelSoilReading& r = physics.wheel_soil().at(0);
+  EXPECT_TRUE(r.contact);
+  EXPECT_NEAR(r.normal_force, 9.81 * 10.0, 0.03 * 9.81 * 10.0);
+  EXPECT_NEAR(r.sinkage, steady_wheel(*find_soil("dry_sand"), {0.09, 0.12}, r.normal_force, 0.0).sinkage, 0.003);
+  // A soil whose k_c < 0 cannot carry a wheel narrower than -k_c / k_phi: refused, naming it.
+  SoilParameters sand = cmu_sand();
+  WheelOverride thin = override_of("wheel");
+  thin.radius = 0.09;
+  thin.width = 0.015;
+  try {
+    physics.set_soil(sand, {thin});
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("under wheel 'wheel'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
