@@ -118,7 +118,7 @@ class PointHeadAction {
       reject(gh, "the call to " + query_.getService() + " failed");
       return;
     }
-    if (query.response.name != chain->joint_names()) {
+    if (query.response.name != chain->joint_names() || query.response.position.size() != query.response.name.size()) {
       reject(gh, "the controller's joints are not the chain's from " + chain->root() + " to " + frame);
       return;
     }

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -38,7 +39,7 @@ std::string sled_urdf(const std::string& gazebo) {
 
 // The slide: an 8 m board, 0.1 m thick, its top through the origin, pitched theta about y (so it
 // falls along +x), its surface as given.
-std::string slide_world(const std::string& surface) {
+std::string slide_world(const std::string& surface_xml) {
   return R"(<?xml version="1.0"?>
 <sdf version="1.6"><world name="slide">
   <include><uri>model://ground_plane</uri></include>
@@ -46,7 +47,7 @@ std::string slide_world(const std::string& surface) {
          std::to_string(kTheta) + R"( 0</pose>
     <link name="board"><collision name="surface"><pose>0 0 -0.05 0 0 0</pose>
       <geometry><box><size>8 1 0.1</size></box></geometry>)" +
-         surface + R"(</collision></link></model>
+         surface_xml + R"(</collision></link></model>
 </world></sdf>
 )";
 }
@@ -58,10 +59,10 @@ struct TempDir {
 };
 
 // The sled's acceleration down the slope (m/s^2).
-double acceleration(const std::string& surface, const std::string& sled_gazebo) {
+double acceleration(const std::string& surface_xml, const std::string& sled_gazebo) {
   TempDir dir;
   const fs::path file = dir.path / "slide.world";
-  std::ofstream(file) << slide_world(surface);
+  std::ofstream(file) << slide_world(surface_xml);
   WorldConfig config;
   config.name = file.string();
   const World world = make_world(config);
