@@ -5,6 +5,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <optional>
 #include <string>
 
 #include "physics_test_util.hpp"
@@ -82,6 +85,50 @@ TEST(PhysicsFriction, TheGroundPlaneIsGazebosGroundPlane) {
   EXPECT_THAT(model->mjcf(), HasSubstr("name=\"ground\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\" "
                                        "group=\"2\" priority=\"1\" friction=\"75 "));
   EXPECT_THAT(model->mjcf(), HasSubstr("priority=\"0\" friction=\"500 "));
+}
+
+// A box on a plank inclined 25 degrees slides down with a = g (sin theta - mu cos theta), mu the
+// smaller coefficient of box and plank (zero: g sin theta), measured from its position along the
+// slope at three instants 0.4 s apart; within 3 % of g sin theta.
+double slope_acceleration(double box_mu, double plank_mu) {
+  const double theta = 25.0 * M_PI / 180.0;
+  BuildOptions o;
+  o.world.ground_plane = false;
+  WorldBox plank;
+  plank.name = "plank";
+  plank.size = {8.0, 1.0, 0.1};
+  // Its top through (0, 0, 3): the centre 5 cm below along the plank's normal.
+  plank.pose.position = {-0.05 * std::sin(theta), 0.0, 3.0 - 0.05 * std::cos(theta)};
+  plank.pose.orientation = {std::cos(theta / 2), 0.0, std::sin(theta / 2), 0.0};
+  plank.mu = plank_mu;
+  plank.mu2 = plank_mu;
+  o.world.boxes = {plank};
+  const double s0 = -2.5, h = 0.051;
+  o.spawn.x = s0 * std::cos(theta) + h * std::sin(theta);
+  o.spawn.z = 3.0 - s0 * std::sin(theta) + h * std::cos(theta);
+  o.spawn.pitch = theta;
+  Physics p(test::build(box_with_mu(box_mu), o));
+  double s[3];
+  for (int i = 0; i < 3; ++i) {
+    while (p.time() < 0.2 + 0.4 * i - 1e-9) EXPECT_TRUE(p.step().ok());
+    const auto& x = p.base_pose().position;
+    s[i] = x.x * std::cos(theta) - (x.z - 3.0) * std::sin(theta);
+  }
+  return (s[2] - 2.0 * s[1] + s[0]) / (0.4 * 0.4);
+}
+
+TEST(PhysicsFriction, ABoxSlidesDownASlopeAsTheSmallerCoefficientPredicts) {
+  const double theta = 25.0 * M_PI / 180.0, g_sin = kG * std::sin(theta);
+  const auto predicted = [&](double mu) { return kG * (std::sin(theta) - mu * std::cos(theta)); };
+  const double frictionless = slope_acceleration(1.0, 0.0), plank_low = slope_acceleration(1.0, 0.2),
+               box_low = slope_acceleration(0.2, 1.0), both_high = slope_acceleration(1.0, 1.0);
+  std::printf("[ figures  ] 25 deg slope: a = %.4f (mu 0; predicted %.4f), %.4f and %.4f (mu 0.2 on either side; %.4f), "
+              "%.4f (mu 1)\n",
+              frictionless, predicted(0.0), plank_low, box_low, predicted(0.2), both_high);
+  EXPECT_NEAR(frictionless, predicted(0.0), 0.03 * g_sin);
+  EXPECT_NEAR(plank_low, predicted(0.2), 0.03 * g_sin);
+  EXPECT_NEAR(box_low, predicted(0.2), 0.03 * g_sin);
+  EXPECT_NEAR(both_high, 0.0, 0.03 * g_sin);  // mu 1 > tan 25 deg: it holds
 }
 
 }  // namespace

@@ -44,6 +44,7 @@ finger: {type: position_controllers/JointPositionController, joint: finger_joint
   Simulation sim(robot.model, make_world({}), params);
   ASSERT_TRUE(sim.controllers().load_controller("finger").ok);
   ASSERT_TRUE(sim.controllers().switch_controllers({"finger"}, {}, control::SwitchStrictness::Strict).ok);
+  ASSERT_TRUE(sim.step());  // the switch applies at the tick, whose starting() holds the joint where it is
   auto* cmd = sim.controllers().controller("finger")->port_as<control::ScalarCommandPort>("command");
   ASSERT_NE(cmd, nullptr);
   ASSERT_TRUE(cmd->write(0.5));
