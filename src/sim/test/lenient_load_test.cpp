@@ -35,9 +35,9 @@ TEST(LenientLoad, TheGrippersMimicPidsTakeTheRunsGainsAndFollowTheKnuckle) {
   const control::Params params = control::Params::from_yaml_string(R"(
 gazebo_ros_control:
   pid_gains:
-    right_outer_knuckle_joint: {p: 20.0, i: 0.0, d: 0.5}
-    left_inner_knuckle_joint: {p: 20.0, i: 0.0, d: 0.5}
-    right_inner_knuckle_joint: {p: 20.0, i: 0.0, d: 0.5}
+    right_outer_knuckle_joint: {p: 2.0, i: 0.0, d: 0.01}
+    left_inner_knuckle_joint: {p: 2.0, i: 0.0, d: 0.01}
+    right_inner_knuckle_joint: {p: 2.0, i: 0.0, d: 0.01}
 finger: {type: position_controllers/JointPositionController, joint: finger_joint}
 )",
                                                                    "gripper");
