@@ -40,7 +40,9 @@ class GazeboRosPackage : public ::testing::Test {
     });
   }
   void TearDown() override {
-    if (launch_) EXPECT_NE(launch_->stop(15.0), -1) << "roslaunch did not stop on SIGINT within 15 s";
+    if (launch_) {
+      EXPECT_NE(launch_->stop(15.0), -1) << "roslaunch did not stop on SIGINT within 15 s";
+    }
   }
   void launch(const std::vector<std::string>& args) {
     const char* path = std::getenv("PATH");
