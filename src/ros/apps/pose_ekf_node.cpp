@@ -7,7 +7,8 @@
 //   parameters  ~freq (30 Hz of ROS time), ~sensor_timeout (1 s), ~odom_used, ~imu_used (true),
 //               ~vo_used, ~gps_used (visual odometry and GPS are not fused: named once when set),
 //               ~output_frame (odom_combined), ~base_footprint_frame (base_footprint), ~publish_tf
-// Stamps: the older of the two sources' latest stamps, as robot_pose_ekf's filter time. A source
+// Stamps: the older of the two sources' latest stamps, as robot_pose_ekf's filter time; an update
+// happens only when that time has moved on (no repeated stamps on /tf). A source
 // that has been silent for sensor_timeout (ROS time) is left out until it speaks again; without
 // odometry nothing is published. robot_pose_ekf's ~get_status service is not offered.
 #include <algorithm>
@@ -101,9 +102,14 @@ class PoseEkfNode {
       fusion_.drop_imu();
       ROS_INFO("mechsim robot_pose_ekf: IMU not active any more");
     }
-    if (!odom_active_ || !fusion_.update()) return;
+    if (!odom_active_) return;
     ::ros::Time stamp = odom_stamp_;
     if (imu_active_ && imu_stamp_ < stamp) stamp = imu_stamp_;
+    // Only newer measurements make a new estimate (robot_pose_ekf's filter updates only forward
+    // in time): no repeated stamps on /tf while the clock stands (paused, or no new data).
+    if (stamp <= last_stamp_) return;
+    last_stamp_ = stamp;
+    if (!fusion_.update()) return;
     const mechsim::ros::FusedPose& e = fusion_.estimate();
     geometry_msgs::PoseWithCovarianceStamped out;
     out.header.stamp = stamp;
@@ -135,7 +141,7 @@ class PoseEkfNode {
   ::ros::Subscriber odom_sub_, imu_sub_;
   ::ros::Timer timer_;
   PoseFusion fusion_;
-  ::ros::Time odom_stamp_, imu_stamp_, odom_seen_, imu_seen_;
+  ::ros::Time odom_stamp_, imu_stamp_, odom_seen_, imu_seen_, last_stamp_;
   bool odom_active_ = false, imu_active_ = false;
 };
 
