@@ -4,7 +4,8 @@
 //               them to base_odometry/odom and torso_lift_imu/data)
 //   publishes   ~odom_combined (geometry_msgs/PoseWithCovarianceStamped, frame ~output_frame)
 //               and ~output_frame -> ~base_footprint_frame on /tf (unless ~publish_tf is false)
-//   parameters  ~freq (30 Hz of ROS time), ~sensor_timeout (1 s), ~odom_used, ~imu_used (true),
+//   parameters  ~freq (30 Hz of ROS time: an estimate with the odometry message due then, so that
+//               no period is lost on a loaded machine), ~sensor_timeout (1 s), ~odom_used, ~imu_used (true),
 //               ~vo_used, ~gps_used (visual odometry and GPS are not fused: named once when set),
 //               ~output_frame (odom_combined), ~base_footprint_frame (base_footprint), ~publish_tf
 // Stamps: the older of the two sources' latest stamps, as robot_pose_ekf's filter time; an update
@@ -59,7 +60,8 @@ class PoseEkfNode {
     if (publish_tf_) tf_pub_ = nh_.advertise<tf2_msgs::TFMessage>("/tf", 100);
     if (pnh_.param("odom_used", true)) odom_sub_ = nh_.subscribe("odom", 10, &PoseEkfNode::on_odom, this);
     if (pnh_.param("imu_used", true)) imu_sub_ = nh_.subscribe("imu_data", 10, &PoseEkfNode::on_imu, this);
-    timer_ = nh_.createTimer(::ros::Duration(1.0 / freq), &PoseEkfNode::spin, this);
+    period_ = 1.0 / freq;
+    timer_ = nh_.createTimer(::ros::Duration(0.1), &PoseEkfNode::check_timeouts, this);
     ROS_INFO_STREAM("mechsim robot_pose_ekf: " << output_frame_ << " -> " << base_frame_ << " at " << freq
                                                << " Hz from odom and imu_data");
   }
@@ -78,6 +80,14 @@ class PoseEkfNode {
     odom_seen_ = ::ros::Time::now();
     if (!odom_active_) ROS_INFO("mechsim robot_pose_ekf: odometry active");
     odom_active_ = true;
+    // Due at ~freq of ROS time, on the measurements' arrival rather than a timer's: a timer that
+    // falls behind on a loaded machine skips periods, queued measurements are all taken.
+    const ::ros::Time now = ::ros::Time::now();
+    if (next_due_.isZero() || now >= next_due_) {
+      next_due_ = (next_due_.isZero() || (now - next_due_).toSec() > period_) ? now + ::ros::Duration(period_)
+                                                                             : next_due_ + ::ros::Duration(period_);
+      publish();
+    }
   }
 
   void on_imu(const sensor_msgs::Imu::ConstPtr& msg) {
@@ -91,7 +101,8 @@ class PoseEkfNode {
     imu_active_ = true;
   }
 
-  void spin(const ::ros::TimerEvent&) {
+  // A source silent for ~sensor_timeout is left out until it speaks again.
+  void check_timeouts(const ::ros::TimerEvent&) {
     const ::ros::Time now = ::ros::Time::now();
     if (odom_active_ && (now - odom_seen_).toSec() > timeout_) {
       odom_active_ = false;
@@ -102,6 +113,9 @@ class PoseEkfNode {
       fusion_.drop_imu();
       ROS_INFO("mechsim robot_pose_ekf: IMU not active any more");
     }
+  }
+
+  void publish() {
     if (!odom_active_) return;
     ::ros::Time stamp = odom_stamp_;
     if (imu_active_ && imu_stamp_ < stamp) stamp = imu_stamp_;
@@ -135,13 +149,13 @@ class PoseEkfNode {
 
   ::ros::NodeHandle nh_, pnh_;
   std::string output_frame_, base_frame_;
-  double timeout_ = 1.0;
+  double timeout_ = 1.0, period_ = 1.0 / 30.0;
   bool publish_tf_ = true;
   ::ros::Publisher pose_pub_, tf_pub_;
   ::ros::Subscriber odom_sub_, imu_sub_;
   ::ros::Timer timer_;
   PoseFusion fusion_;
-  ::ros::Time odom_stamp_, imu_stamp_, odom_seen_, imu_seen_, last_stamp_;
+  ::ros::Time odom_stamp_, imu_stamp_, odom_seen_, imu_seen_, last_stamp_, next_due_;
   bool odom_active_ = false, imu_active_ = false;
 };
 
