@@ -80,12 +80,12 @@ class PoseEkfNode {
     odom_seen_ = ::ros::Time::now();
     if (!odom_active_) ROS_INFO("mechsim robot_pose_ekf: odometry active");
     odom_active_ = true;
-    // Due at ~freq of ROS time, on the measurements' arrival rather than a timer's: a timer that
-    // falls behind on a loaded machine skips periods, queued measurements are all taken.
-    const ::ros::Time now = ::ros::Time::now();
-    if (next_due_.isZero() || now >= next_due_) {
-      next_due_ = (next_due_.isZero() || (now - next_due_).toSec() > period_) ? now + ::ros::Duration(period_)
-                                                                             : next_due_ + ::ros::Duration(period_);
+    // Due at ~freq of ROS time by the odometry's stamps, on its arrival rather than a timer's: a
+    // timer that falls behind on a loaded machine skips periods, queued measurements are all taken.
+    const ::ros::Time t = msg->header.stamp;
+    if (next_due_.isZero() || t >= next_due_) {
+      next_due_ = (next_due_.isZero() || (t - next_due_).toSec() > period_) ? t + ::ros::Duration(period_)
+                                                                           : next_due_ + ::ros::Duration(period_);
       publish();
     }
   }
