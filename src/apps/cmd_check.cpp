@@ -144,8 +144,12 @@ void plugins_step(const CheckOptions& options, CheckContext& context, std::ostre
       break;
     }
   }
+  // Without the run's YAML the parameter server is not the run's: what plugins read from it at
+  // run time (a mimic joint's PID gains) is named, not checked.
+  control::PluginContext plugin_context{robot.name, server};
+  plugin_context.runtime_params = !options.controllers.empty();
   try {
-    std::vector<control::ModelPluginBuild> plugins = control::build_model_plugins(robot, control::PluginContext{robot.name, server});
+    std::vector<control::ModelPluginBuild> plugins = control::build_model_plugins(robot, plugin_context);
     mechanism::MechanismModel mechanism = mechanism::build_mechanism(robot);
     for (const control::ModelPluginBuild& b : plugins) mechanism::add_direct_joints(mechanism, robot, b.joints);
     mechanism::MechanismState state = mechanism::make_state(mechanism);
@@ -162,6 +166,7 @@ void plugins_step(const CheckOptions& options, CheckContext& context, std::ostre
     std::cerr << "mechsim check: error: " << e.what() << "\n";
     context.failed = true;
   }
+  context.warnings.insert(context.warnings.end(), plugin_context.deferred->begin(), plugin_context.deferred->end());
 }
 
 void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err, CommandResult& result) {

@@ -104,17 +104,17 @@ class Planner {
 
   void add_geoms(const Link& link, int body, const Pose& X_BL) {
     const auto& g = gz(link.name);
+    // One sliding coefficient per geom (contact_defaults.hpp, isotropic_friction); each contact
+    // takes the smaller of its two geoms' (mjcf_writer.cpp's priorities), as ODE does.
     double mu = options_.contact.sliding_friction;
-    if (g.mu1 && g.mu2) {
-      mu = 0.5 * (*g.mu1 + *g.mu2);
-      if (*g.mu1 != *g.mu2)
-        plan_.warnings.push_back("link '" + link.name + "': anisotropic friction mu1=" + std::to_string(*g.mu1) +
-                                 " mu2=" + std::to_string(*g.mu2) + " approximated by their mean " +
-                                 std::to_string(mu) + " (MuJoCo geoms have one sliding coefficient)");
-    } else if (g.mu1) {
-      mu = *g.mu1;
-    } else if (g.mu2) {
-      mu = *g.mu2;
+    if (g.mu1 || g.mu2) {
+      mu = isotropic_friction(g.mu1, g.mu2);
+      const double mu1 = g.mu1.value_or(kGazeboDefaultMu), mu2 = g.mu2.value_or(kGazeboDefaultMu);
+      if (mu1 != mu2 && !link.collisions.empty())
+        plan_.warnings.push_back("link '" + link.name + "': anisotropic friction mu1=" + std::to_string(mu1) +
+                                 " mu2=" + std::to_string(mu2) + (g.mu1 && g.mu2 ? "" : " (Gazebo's default 1 where left out)") +
+                                 " approximated by their mean " + std::to_string(mu) +
+                                 " (MuJoCo 2.2.2's geoms have one sliding coefficient and its contact frames no set direction)");
     }
     if (g.gravity && !*g.gravity && !massless(link)) plan_.gravity_off_links.push_back(link.name);
     std::vector<PlannedGeom>& out = body < 0 ? plan_.world_geoms : plan_.bodies[body].geoms;

@@ -5,8 +5,18 @@
 // Why these values: Gazebo's ODE surface default is mu = 1 (mechsim follows it so a URDF
 // without <mu1> behaves as in Gazebo); torsional and rolling friction and the soft-contact
 // parameters are MuJoCo's own defaults, which are stable at 1 ms steps.
+//
+// Two surfaces' friction, as Gazebo's ODE combines it (gazebo/physics/ode/ODEPhysics.cc,
+// ODEPhysics::Collide): the contact's mu is the smaller of the two surfaces' mu, its mu2 the
+// smaller of their mu2 (mu along fdir1, mu2 across it; ODE's friction pyramid). mechsim writes
+// every collision geom with one sliding coefficient (isotropic_friction) and ranks the geoms'
+// MuJoCo priorities by it, lowest friction highest (mjcf_writer.cpp): MuJoCo takes the
+// parameters of the geom with the higher priority, so each contact gets the smaller coefficient
+// of its two geoms, on either side, whatever kind of geom each is (robot link, world object,
+// ground).
 
 #include <array>
+#include <optional>
 
 namespace mechsim::physics {
 
@@ -40,10 +50,21 @@ struct ContactDefaults {
   // Joint limits use the same soft-constraint model; stiffer than contacts so a limit stop
   // behaves like Gazebo ODE's hard stop (time constant >= 2 timesteps at 1 kHz).
   std::array<double, 2> limit_solref{0.005, 1.0};
-  // Sliding friction of the ground plane / terrain. Robot geoms carry a higher MuJoCo
-  // priority, so a contact with the ground uses the robot link's friction, as ODE's
-  // min(mu_a, mu_b) does against Gazebo's high-friction ground plane.
+  // Sliding friction of height-field terrain (mechsim's own worlds: mars_yard_2024, slope,
+  // heightmap files), SDF's surface default. The ground plane's is WorldSpec::ground_mu/mu2.
   double ground_friction = 1.0;
 };
+
+// Gazebo's surface default for a coefficient a description leaves out (SDF <mu>, <mu2>; URDF
+// <mu1>, <mu2>).
+inline constexpr double kGazeboDefaultMu = 1.0;
+
+// The one sliding coefficient of a geom whose surface has mu1 along fdir1 and mu2 across it:
+// MuJoCo 2.2.2's geoms have one (its contact frame's tangents are chosen by its collision code,
+// so no direction can be given), so an anisotropic surface is approximated by the mean of the
+// two. A coefficient left out is Gazebo's default, 1.
+inline double isotropic_friction(std::optional<double> mu1, std::optional<double> mu2) {
+  return 0.5 * (mu1.value_or(kGazeboDefaultMu) + mu2.value_or(kGazeboDefaultMu));
+}
 
 }  // namespace mechsim::physics

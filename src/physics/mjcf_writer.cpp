@@ -97,6 +97,7 @@ class Writer {
     }
     for (const MeshAsset& m : meshes) all_[mesh_key(m.path, m.scale)] = &m;
     children_ = children_of(plan);
+    collect_frictions();
   }
 
   static std::vector<std::vector<std::size_t>> children_of(const BodyPlan& plan) {
@@ -104,6 +105,40 @@ class Writer {
     for (std::size_t i = 0; i < plan.bodies.size(); ++i)
       if (plan.bodies[i].parent >= 0) children[static_cast<std::size_t>(plan.bodies[i].parent)].push_back(i);
     return children;
+  }
+
+  // Every collision geom's sliding coefficient, for the priorities (contact_defaults.hpp): the
+  // lower the friction, the higher the priority, so that MuJoCo, which takes the parameters of
+  // the geom with the higher priority, gives each contact the smaller coefficient of its two
+  // geoms, as ODE's min rule does. Equal coefficients share a priority (MuJoCo then takes the
+  // larger, which is the same).
+  void collect_frictions() {
+    const auto add_plan = [&](const BodyPlan& p) {
+      for (const PlannedGeom& g : p.world_geoms)
+        if (!g.visual) frictions_.push_back(g.friction);
+      for (const PlannedBody& b : p.bodies)
+        for (const PlannedGeom& g : b.geoms)
+          if (!g.visual) frictions_.push_back(g.friction);
+    };
+    add_plan(plan_);
+    for (const BodyPlan& p : plan_.passive) add_plan(p);
+    for (const WorldBox& b : options_.world.boxes) frictions_.push_back(box_friction(b));
+    frictions_.push_back(ground_plane_friction());
+    frictions_.push_back(options_.contact.ground_friction);
+    std::sort(frictions_.begin(), frictions_.end());
+    frictions_.erase(std::unique(frictions_.begin(), frictions_.end()), frictions_.end());
+  }
+  // The number of distinct coefficients above `mu`: 0 for the highest friction.
+  int priority(double mu) const {
+    return static_cast<int>(frictions_.end() - std::upper_bound(frictions_.begin(), frictions_.end(), mu));
+  }
+  static double box_friction(const WorldBox& b) { return isotropic_friction(b.mu, b.mu2); }
+  double ground_plane_friction() const { return isotropic_friction(options_.world.ground_mu, options_.world.ground_mu2); }
+  // A collision geom's contact attributes: friction (sliding, torsional, rolling) and its priority.
+  std::string contact_attrs(double mu) const {
+    const ContactDefaults& c = options_.contact;
+    return " priority=\"" + std::to_string(priority(mu)) + "\" friction=\"" + num(mu) + " " + num(c.torsional_friction) + " " +
+           num(c.rolling_friction) + "\"";
   }
 
   MjcfDocument write(const std::string& model_name) {
@@ -213,13 +248,12 @@ class Writer {
 
   void write_world() {
     const ContactDefaults& c = options_.contact;
-    const std::string friction = num(c.ground_friction) + " " + num(c.torsional_friction) + " " + num(c.rolling_friction);
     if (options_.world.kind == WorldSpec::Kind::Heightmap) {
       if (!options_.world.terrain) throw PhysicsError("world: heightmap world without a heightmap");
       const Heightmap& h = *options_.world.terrain;
       const double lo = static_cast<double>(*std::min_element(h.heights.begin(), h.heights.end()));
       x_ << "    <geom name=\"" << kTerrainName << "\" type=\"hfield\" hfield=\"" << kTerrainName << "\" pos=\"0 0 "
-         << num(lo) << "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";
+         << num(lo) << "\" contype=\"1\" conaffinity=\"1\" group=\"2\"" << contact_attrs(c.ground_friction) << "/>\n";
       if (options_.render_terrain)
         for (const TerrainTile& t : plan_terrain_tiles(h))
           x_ << "    <geom name=\"" << t.name << "\" type=\"hfield\" hfield=\"" << t.name << "\" pos=\""
@@ -227,20 +261,19 @@ class Writer {
              << " conaffinity=\"0\" group=\"" << kTileGroup << "\"/>\n";
     } else if (options_.world.ground_plane) {
       x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""
-         << " group=\"2\" priority=\"0\" friction=\"" << friction << "\"/>\n";
+         << " group=\"2\"" << contact_attrs(ground_plane_friction()) << "/>\n";
     }
   }
 
   // Fixed objects (boxes, cylinders, spheres) as world geoms, free ones as bodies with a free joint (after the robot's bodies,
   // so that the robot's root joint stays the model's first free joint).
   void write_boxes() {
-    const ContactDefaults& c = options_.contact;
-    const std::string friction = num(c.ground_friction) + " " + num(c.torsional_friction) + " " + num(c.rolling_friction);
     std::set<std::string> names;
     for (const WorldBox& b : options_.world.boxes) {
       const std::string where = "world box '" + b.name + "'";
       if (b.name.empty()) throw PhysicsError("world: a box has no name");
       if (!names.insert(b.name).second) throw PhysicsError(where + ": the name is used twice");
+      const std::string friction = contact_attrs(box_friction(b));
       if (b.shape == WorldBox::Shape::Mesh) {
         write_mesh_object(b, where, friction);
         continue;
@@ -267,7 +300,7 @@ class Writer {
         inertia = {i, i, i};
       }
       const std::string geom = "<geom name=\"box:" + escape(b.name) + "\" type=\"" + type + "\" size=\"" + size +
-                               "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" + friction + "\"";
+                               "\" contype=\"1\" conaffinity=\"1\" group=\"2\"" + friction;
       if (b.fixed) {
         x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
       } else {
@@ -284,7 +317,8 @@ class Writer {
   // inertia): MuJoCo 2.2.2's compiler takes inertia from all geoms or none, and mechsim gives
   // every body its own. One whose mesh could not be loaded or compiled is left out with a warning,
   // as a robot's mesh geom is.
-  void write_mesh_object(const WorldBox& b, const std::string& where, const std::string& friction) {
+  // `contact`: the geom's priority and friction attributes.
+  void write_mesh_object(const WorldBox& b, const std::string& where, const std::string& contact) {
     if (!b.fixed && !(b.mass > 0.0 && std::isfinite(b.mass))) throw PhysicsError(where + ": mass must be finite and > 0 (kg)");
     const auto it = b.mesh_path.empty() ? usable_.end() : usable_.find(mesh_key(b.mesh_path, b.mesh_scale));
     if (it == usable_.end()) {
@@ -294,7 +328,7 @@ class Writer {
       return;
     }
     const std::string geom = "<geom name=\"box:" + escape(b.name) + "\" type=\"mesh\" mesh=\"" + it->second->name +
-                             "\" contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" + friction + "\"";
+                             "\" contype=\"1\" conaffinity=\"1\" group=\"2\"" + contact;
     if (b.fixed) {
       x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
       return;
@@ -376,20 +410,15 @@ class Writer {
       // Another robot's geoms (an actuated world model): its own bit, touching the world (bit 0),
       // the first robot (bit 1) and the other robots; its own links as the first robot's do.
       const int affinity = 1 | 2 | (other_robot_bits_ & ~robot_bit_) | (g.self_collide ? robot_bit_ : 0);
-      x_ << " contype=\"" << robot_bit_ << "\" conaffinity=\"" << affinity << "\" group=\"0\" priority=\"1\" friction=\""
-         << num(g.friction) << " " << num(options_.contact.torsional_friction) << " "
-         << num(options_.contact.rolling_friction) << "\"";
+      x_ << " contype=\"" << robot_bit_ << "\" conaffinity=\"" << affinity << "\" group=\"0\"" << contact_attrs(g.friction);
     } else if (passive_) {
       // A passive model's geoms are world objects (bit 0): they touch the ground, the robot,
       // other objects and each other (MuJoCo skips a body and its parent).
-      x_ << " contype=\"1\" conaffinity=\"1\" group=\"2\" priority=\"0\" friction=\"" << num(g.friction) << " "
-         << num(options_.contact.torsional_friction) << " " << num(options_.contact.rolling_friction) << "\"";
+      x_ << " contype=\"1\" conaffinity=\"1\" group=\"2\"" << contact_attrs(g.friction);
     } else {
       // bit 0: world; bit 1: this robot. Links without selfCollide do not accept bit 1, so two
       // of them never touch; a selfCollide link touches every link (SDF: collide if either).
-      x_ << " contype=\"2\" conaffinity=\"" << (g.self_collide ? 3 : 1) << "\" group=\"0\" priority=\"1\" friction=\""
-         << num(g.friction) << " " << num(options_.contact.torsional_friction) << " "
-         << num(options_.contact.rolling_friction) << "\"";
+      x_ << " contype=\"2\" conaffinity=\"" << (g.self_collide ? 3 : 1) << "\" group=\"0\"" << contact_attrs(g.friction);
     }
     x_ << "/>\n";
   }
@@ -418,6 +447,7 @@ class Writer {
   }
 
   const BodyPlan& plan_;
+  std::vector<double> frictions_;  // distinct sliding coefficients of the collision geoms, ascending
   const BuildOptions& options_;
   ArenaSize arena_;
   std::map<std::string, const MeshAsset*> usable_, all_;

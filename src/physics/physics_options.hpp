@@ -45,8 +45,9 @@ enum class DifferentialMode {
 // An object in the world (to grasp, push or bump into): a box, a cylinder or a sphere (the
 // shapes of Gazebo's SDF worlds), or a fixed mesh (a static SDF model's). A fixed one is a world geom; a free one is a body with a free
 // joint, after the robot's (the robot's root stays the first free joint). Both collide with the
-// robot and the ground, with the ground's friction; contacts name them "box:<name>" whatever the
-// shape (the name scenarios and contact sensors already use).
+// robot and the ground, with their surface's friction (each contact takes the smaller of its two
+// surfaces', contact_defaults.hpp); contacts name them "box:<name>" whatever the shape (the name
+// scenarios and contact sensors already use).
 struct WorldBox {
   enum class Shape { Box, Cylinder, Sphere, Mesh };
   std::string name;                      // unique among the world's objects
@@ -66,6 +67,9 @@ struct WorldBox {
                                          // as if it filled its bounds)
   bool fixed = true;
   double laser_retro = 0.0;              // what lasers report hitting it (SDF <laser_retro>)
+  // The surface's friction along fdir1 and across it (SDF <mu>, <mu2>; unset: Gazebo's 1), one
+  // coefficient in the physics (isotropic_friction).
+  std::optional<double> mu, mu2;
 };
 
 // A passive articulated object in the world (an SDF world's moving model of several links): its
@@ -99,6 +103,10 @@ struct WorldSpec {
   SharedHeightmap terrain;         // required when kind == Heightmap
   double gravity = 9.81;           // m/s^2 along -z of the world
   bool ground_plane = true;        // an infinite plane at z = 0 (Empty only)
+  // The ground plane's friction along fdir1 and across it: Gazebo's ground_plane model's (mu 100,
+  // mu2 50) unless an SDF world's plane says otherwise; one coefficient in the physics, their
+  // mean (isotropic_friction). Height fields have ContactDefaults::ground_friction.
+  std::optional<double> ground_mu = 100.0, ground_mu2 = 50.0;
   std::vector<WorldBox> boxes;     // objects in the world (any kind of world)
   std::vector<WorldModel> models;  // passive articulated objects and other robots (WorldModel)
 };

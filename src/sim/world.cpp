@@ -122,6 +122,9 @@ World make_sdf_world(const std::string& path, bool active_apart) {
       const description::Vec3 n = physics::rotate(X_WP.orientation, {0.0, 0.0, 1.0});
       if (std::abs(X_WP.position.z) < 1e-9 && n.z > 1.0 - 1e-9) {
         world.spec.ground_plane = true;
+        // The plane's surface as written; what it leaves out is Gazebo's default (1).
+        world.spec.ground_mu = plane.mu;
+        world.spec.ground_mu2 = plane.mu2;
         used = true;
       } else {
         world.not_simulated.push_back("model '" + model.name + "': plane '" + plane.name + "' (not the ground z = 0)");
@@ -161,6 +164,10 @@ World make_sdf_world(const std::string& path, bool active_apart) {
             set_shape(c.geometry, box);
           }
           box.fixed = model.is_static;
+          if (auto gz = model.robot.gazebo_links.find(link.name); gz != model.robot.gazebo_links.end()) {
+            box.mu = gz->second.mu1;
+            box.mu2 = gz->second.mu2;
+          }
           if (!model.is_static) box.mass = link.inertial && link.inertial->mass > 0.0 ? link.inertial->mass : 1.0;
           world.spec.boxes.push_back(box);
         }

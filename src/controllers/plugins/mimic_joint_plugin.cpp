@@ -39,11 +39,17 @@ bool MimicJointPlugin::init(RobotHardware& hardware, const Params& params, std::
     if (ns.empty()) ns = "gazebo_ros_control/pid_gains/" + follower;
     while (!ns.empty() && ns.front() == '/') ns.erase(ns.begin());
     const auto gains = context_.server.find(ns);
-    if (!gains || !gains->is_map()) {
-      p.fail("hasPID", "asks for a PID, but the parameter server has no gains at " + join_param_path(context_.server.path(), ns) +
-                           " (p, i, d, i_clamp)");
+    if ((!gains || !gains->is_map()) && !context_.runtime_params) {
+      // The gains come with the run (the launch file's YAML): nothing to check yet.
+      context_.deferred->push_back(p.location("hasPID") + ": <hasPID>: the PID gains at " + join_param_path(context_.server.path(), ns) +
+                                   " are read from the parameter server when the run starts (not checked here)");
+    } else {
+      if (!gains || !gains->is_map()) {
+        p.fail("hasPID", "asks for a PID, but the parameter server has no gains at " +
+                             join_param_path(context_.server.path(), ns) + " (p, i, d, i_clamp)");
+      }
+      pid_.init(*gains);
     }
-    pid_.init(*gains);
   }
   JointControllerState prototype;
   state_.init(prototype);

@@ -6,6 +6,7 @@
 // (PluginRosInterface) so that the ROS layer binds the ports to gazebo_plugins' topic names and
 // the standalone runner to a scenario's timeline and recorders.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,11 @@ struct PluginRosInterface {
 struct PluginContext {
   std::string robot_name;  // the model's name (the joint state publisher's default namespace)
   Params server;           // the parameter server's robot namespace (mimic joint PID gains)
+  // False when `server` is not the run's (`mechsim check` without the launch file's YAML): what a
+  // plugin reads from the parameter server at run time is not checked, and each such read is
+  // named in `deferred` instead ("...: read from the parameter server when the run starts").
+  bool runtime_params = true;
+  std::shared_ptr<std::vector<std::string>> deferred = std::make_shared<std::vector<std::string>>();
 };
 
 class ModelPlugin : public Controller {

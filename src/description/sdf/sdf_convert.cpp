@@ -52,8 +52,9 @@ Iso resolved(const T& element, const std::string& relative_to, const std::string
   return iso(p);
 }
 
-// <surface><friction><ode><mu>/<mu2>, where written.
-void surface_friction(const sdf::Collision& c, std::optional<double>& mu, std::optional<double>& mu2) {
+// <surface><friction><ode><mu>/<mu2>/<fdir1>, where written.
+void surface_friction(const sdf::Collision& c, std::optional<double>& mu, std::optional<double>& mu2,
+                      std::optional<Vec3>& fdir1) {
   const sdf::ElementPtr e = c.Element();
   if (!e || !e->HasElement("surface")) return;
   const sdf::ElementPtr s = e->GetElement("surface");
@@ -63,6 +64,10 @@ void surface_friction(const sdf::Collision& c, std::optional<double>& mu, std::o
   const sdf::ElementPtr ode = f->GetElement("ode");
   if (ode->HasElement("mu") && ode->GetElement("mu")->GetExplicitlySetInFile()) mu = ode->Get<double>("mu");
   if (ode->HasElement("mu2") && ode->GetElement("mu2")->GetExplicitlySetInFile()) mu2 = ode->Get<double>("mu2");
+  if (ode->HasElement("fdir1") && ode->GetElement("fdir1")->GetExplicitlySetInFile()) {
+    const auto d = ode->Get<ignition::math::Vector3d>("fdir1");
+    if (d != ignition::math::Vector3d::Zero) fdir1 = Vec3{d.X(), d.Y(), d.Z()};
+  }
 }
 
 bool has_contact_parameters(const sdf::Collision& c) {
@@ -223,9 +228,10 @@ class Converter {
       const std::string scoped = out_.name + "::" + l.Name() + "::" + c.Name();
       if (has_contact_parameters(c)) note(cw + ": surface contact parameters (MuJoCo's contact model is used)");
       std::optional<double> mu, mu2;
-      surface_friction(c, mu, mu2);
+      std::optional<Vec3> fdir1;
+      surface_friction(c, mu, mu2, fdir1);
       if (c.Geom()->Type() == sdf::GeometryType::PLANE) {
-        add_plane(c, X_ML_[l.Name()] * X_LC, scoped, cw, mu);
+        add_plane(c, X_ML_[l.Name()] * X_LC, scoped, cw, mu, mu2);
         continue;
       }
       if (c.Geom()->Type() == sdf::GeometryType::HEIGHTMAP) {
@@ -245,6 +251,7 @@ class Converter {
         out_.warnings.push_back(cw + ": its friction differs from the link's other collisions; the first one's is used");
       if (mu && !gz.mu1) gz.mu1 = mu;
       if (mu2 && !gz.mu2) gz.mu2 = mu2;
+      if (fdir1) note(cw + ": <fdir1> (MuJoCo's contact frames have no set direction; mu and mu2 make one coefficient, their mean)");
     }
     for (uint64_t i = 0; i < l.VisualCount(); ++i) {
       const sdf::Visual& v = *l.VisualByIndex(i);
@@ -274,7 +281,7 @@ class Converter {
   }
 
   void add_plane(const sdf::Collision& c, const Iso& X_MC, const std::string& name, const std::string& what,
-                 std::optional<double> mu) {
+                 std::optional<double> mu, std::optional<double> mu2) {
     if (!out_.is_static) {
       note(what + ": a plane on a link that moves (planes belong to static models)");
       return;
@@ -287,7 +294,8 @@ class Converter {
     SdfPlane p;
     p.name = name;
     p.pose = pose(X);
-    if (mu) p.mu = *mu;
+    p.mu = mu;
+    p.mu2 = mu2;
     out_.planes.push_back(std::move(p));
   }
 

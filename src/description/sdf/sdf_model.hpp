@@ -51,7 +51,7 @@ struct SdfOptions {
 struct SdfPlane {
   std::string name;  // "<model>::<link>::<collision>"
   Pose pose;         // in the model frame; its z axis is the plane's normal
-  double mu = 1.0;   // <surface><friction><ode><mu>
+  std::optional<double> mu, mu2;  // <surface><friction><ode><mu>, <mu2> where written (Gazebo's default: 1)
 };
 
 // A <heightmap> collision of a static model.

@@ -156,7 +156,8 @@ TEST(SdfWorld, Pr2EmptyWorldGroundPlaneAndSun) {
   const SdfModel& ground = model(w, "ground_plane");
   EXPECT_TRUE(ground.is_static);
   ASSERT_EQ(ground.planes.size(), 1u);
-  EXPECT_DOUBLE_EQ(ground.planes[0].mu, 100.0);
+  EXPECT_EQ(ground.planes[0].mu, 100.0);
+  EXPECT_EQ(ground.planes[0].mu2, 50.0);
   expect_near(iso(ground.planes[0].pose).rotation() * Eigen::Vector3d::UnitZ(), {0, 0, 1}, "plane normal");
   EXPECT_TRUE(mentions(w.not_simulated, "light 'sun'"));
 }

@@ -40,6 +40,13 @@ bool read_link_property(const XMLElement& c, Problems& p, const std::string& wha
   const std::string tag = c.Name();
   if (tag == "mu1") props.mu1 = p.number_text(c, what);
   else if (tag == "mu2") props.mu2 = p.number_text(c, what);
+  else if (tag == "fdir1") {
+    // mu1's direction ("x y z" in the link's collision frame): MuJoCo 2.2.2 chooses its contact
+    // frames' tangents itself, so no direction can be followed (physics/contact_defaults.hpp).
+    const auto v = parse_numbers(value_text(c));
+    if (!v || v->size() != 3) p.error(c.GetLineNum(), what + ": <fdir1> is not three numbers: \"" + value_text(c) + "\"");
+    else p.warning(c.GetLineNum(), what + ": <fdir1> not followed (MuJoCo's contact frames have no set direction; mu1 and mu2 make one coefficient, their mean)");
+  }
   else if (tag == "kp") props.kp = p.number_text(c, what);
   else if (tag == "kd") props.kd = p.number_text(c, what);
   else if (tag == "minDepth") props.min_depth = p.number_text(c, what);
@@ -94,6 +101,13 @@ void read_gazebo(const XMLElement& robot, Problems& p, RobotModel& model) {
         read_sensor_plugin(model.plugins.back().xml, model, p, model.sensors);
       } else if (tag == "sensor") {
         const std::string sensor = c->Attribute("name") != nullptr ? c->Attribute("name") : "";
+        if (!reference.empty() && !is_link && !is_joint) {
+          // Gazebo's URDF reader attaches a sensor to the link it names, and ignores one whose link
+          // the robot does not have (a macro used on another robot, a renamed link).
+          p.warning(c->GetLineNum(), "sensor '" + sensor + "' left out: <gazebo reference=\"" + reference +
+                                         "\"> names no link or joint of the robot (Gazebo ignores it too)");
+          continue;
+        }
         for (const XMLElement* s = c->FirstChildElement("plugin"); s; s = s->NextSiblingElement("plugin"))
           model.plugins.push_back(read_plugin(*s, reference, sensor, p));
         read_sensor(to_xml_node(*c), reference, model, p, model.sensors);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "description/sensor_spec.hpp"
+#include "description/transmission_types.hpp"
 #include "description/urdf/urdf_reading.hpp"
 #include "description/urdf/urdf_sensors.hpp"
 #include "description/urdf/validation.hpp"
@@ -326,6 +327,21 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
     by_name.at(j.parent_link)->child_joints.push_back(j.name);
   }
   model.transmissions = std::move(skeleton.transmissions);
+  if (options.lenient) {
+    // Gazebo's gazebo_ros_control reads any transmission type (it only takes the joints' hardware
+    // interfaces); mechsim builds those of kTransmissionTypes, so a lenient load leaves the
+    // others out, each named.
+    std::erase_if(model.transmissions, [&](const Transmission& t) {
+      const bool known = t.type.empty() || std::find(kTransmissionTypes.begin(), kTransmissionTypes.end(), t.type) !=
+                                               kTransmissionTypes.end();
+      if (!known) {
+        report.warnings.push_back(location(source_name, t.line) + "transmission '" + t.name + "' of type '" + t.type +
+                                  "' left out: mechsim does not simulate that type (a vendor's hardware interface; " +
+                                  "accepted: lenient)");
+      }
+      return !known;
+    });
+  }
   model.gazebo_links = std::move(skeleton.gazebo_links);
   model.gazebo_joints = std::move(skeleton.gazebo_joints);
   model.plugins = std::move(skeleton.plugins);

@@ -3,7 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "description/transmission_types.hpp"
 #include "mechanism/propagation.hpp"
+#include "mechanism/transmission_factory.hpp"
 #include "mechanism_test_util.hpp"
 
 namespace mechsim::mechanism {
@@ -64,6 +66,16 @@ TEST(BuildMechanism, UnknownTransmissionType) {
   EXPECT_THAT(e, HasSubstr("test.urdf:12: transmission 't1' (transmission_interface/WarpDrive)"));
   EXPECT_THAT(e, HasSubstr("unknown transmission type 'transmission_interface/WarpDrive'"));
   EXPECT_THAT(e, HasSubstr("pr2_mechanism_model/PR2GripperTransmission"));  // lists the known ones
+}
+
+// The description layer's list of simulated types (a lenient parse leaves out the others) is the
+// factory's.
+TEST(BuildMechanism, TheDescriptionsTransmissionTypesAreTheFactorys) {
+  std::vector<std::string> described(description::kTransmissionTypes.begin(), description::kTransmissionTypes.end());
+  std::vector<std::string> built = known_transmission_types();
+  std::sort(described.begin(), described.end());
+  std::sort(built.begin(), built.end());
+  EXPECT_EQ(described, built);
 }
 
 TEST(BuildMechanism, MissingJoint) {

@@ -206,9 +206,23 @@ TEST(UrdfSensors, UnknownTypeIsAnError) {
   EXPECT_THAT(e, HasSubstr("t.urdf:5: sensor 'r1': unknown sensor type \"radar\""));
 }
 
+// Gazebo ignores a sensor in a <gazebo reference> that names nothing of the robot (a camera macro
+// used on a robot without its link): it is left out with a warning naming it and why, its plugin
+// with it.
+TEST(UrdfSensors, ASensorOnALinkTheRobotLacksIsLeftOutWithAWarning) {
+  std::vector<std::string> warnings;
+  const RobotModel m = parse_urdf_string(robot_with(R"(<gazebo reference="camera_link"><sensor type="camera" name="front_cam">
+  <camera><horizontal_fov>1.0</horizontal_fov><image><width>64</width><height>48</height></image></camera>
+  <plugin name="cam" filename="libgazebo_ros_camera.so"><cameraName>front</cameraName></plugin></sensor></gazebo>)"),
+                                         "t.urdf", {}, &warnings);
+  EXPECT_TRUE(m.sensors.empty());
+  EXPECT_TRUE(m.plugins.empty());
+  EXPECT_THAT(::testing::PrintToString(warnings),
+              HasSubstr("t.urdf:4: sensor 'front_cam' left out: <gazebo reference=\\\"camera_link\\\"> names no link or joint "
+                        "of the robot (Gazebo ignores it too)"));
+}
+
 TEST(UrdfSensors, OtherBadValuesAreErrors) {
-  EXPECT_THAT(error_of(R"(<gazebo reference="nowhere"><sensor type="imu" name="i"/></gazebo>)"),
-              HasSubstr("t.urdf:4: sensor 'i': <gazebo reference=\"nowhere\"> names no link or joint"));
   EXPECT_THAT(error_of(R"(<gazebo reference="base"><sensor type="ray" name="l"/></gazebo>)"),
               HasSubstr("sensor 'l': a ray sensor needs a <ray> element"));
   EXPECT_THAT(error_of(R"(<gazebo reference="base"><sensor type="imu" name="i"><update_rate>fast</update_rate></sensor></gazebo>)"),

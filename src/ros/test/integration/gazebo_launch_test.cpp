@@ -3,7 +3,8 @@
 // ROS_PACKAGE_PATH set to <build>/ros_package and ../shared/robots (and xacro on PATH, as a ROS
 // install has it): cc8_description's cc8_gazebo.launch (its 11 controllers running,
 // robot_state_publisher's TF), pr2_gazebo's pr2_empty_world.launch (pr2_gazebo's default
-// controllers; the base follows a Twist) and pr2_gazebo's own rostests hztest_pr2_scan.launch and
+// controllers; the base follows a Twist; robot_pose_ekf's odom_combined follows the odometry;
+// pr2_head_action's point_head_action turns the head) and pr2_gazebo's own rostests hztest_pr2_scan.launch and
 // (with MECHSIM_SLOW_TESTS=1) hztest_pr2_image.launch.
 // Skipped without roslaunch or the shared robots. Each test stops roslaunch (its process group)
 // also on failure; waits are bounded (at most 90 s of wall time each).
@@ -14,9 +15,12 @@
 #include <mutex>
 #include <set>
 
+#include <actionlib/client/simple_action_client.h>
 #include <controller_manager_msgs/ListControllers.h>
 #include <gazebo_msgs/GetModelState.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/Twist.h>
+#include <pr2_controllers_msgs/PointHeadAction.h>
 #include <nav_msgs/Odometry.h>
 #include <pr2_mechanism_msgs/ListControllers.h>
 #include <sensor_msgs/JointState.h>
@@ -175,18 +179,62 @@ TEST_F(GazeboLaunch, Pr2GazebosEmptyWorldLaunchRunsUnchanged) {
       },
       20.0);
   EXPECT_TRUE(moved) << "base_odometry x " << x0 << " -> " << x << "\n" << tail();
+
+  // pr2_bringup's robot_pose_ekf: odom_combined follows the base odometry (it started with it),
+  // and its transform odom_combined -> base_footprint is on /tf.
+  double fused = std::numeric_limits<double>::quiet_NaN();
+  std::set<std::string> fused_tf;
+  ::ros::Subscriber ekf = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+      "/robot_pose_ekf/odom_combined", 10, [&](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
+        std::lock_guard<std::mutex> l(m);
+        if (msg->header.frame_id == "odom_combined") fused = msg->pose.pose.position.x;
+      });
+  ::ros::Subscriber tf = nh.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessage::ConstPtr& msg) {
+    std::lock_guard<std::mutex> l(m);
+    for (const auto& t : msg->transforms)
+      if (t.header.frame_id == "odom_combined") fused_tf.insert(t.child_frame_id);
+  });
+  EXPECT_TRUE(wait_until([&] {
+    std::lock_guard<std::mutex> l(m);
+    return std::abs(fused - x) < 0.05 && fused_tf.count("base_footprint") > 0;
+  }, 15.0)) << "odom_combined x " << fused << ", base_odometry x " << x << "\n" << tail();
+
+  // pr2_head_action's point_head_action: the head turns to a point ahead and to the left.
+  actionlib::SimpleActionClient<pr2_controllers_msgs::PointHeadAction> head("/head_traj_controller/point_head_action", true);
+  ASSERT_TRUE(head.waitForServer(::ros::Duration(30.0))) << tail();
+  double pan = std::numeric_limits<double>::quiet_NaN();
+  ::ros::Subscriber js = nh.subscribe<sensor_msgs::JointState>("/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& msg) {
+    std::lock_guard<std::mutex> l(m);
+    for (std::size_t i = 0; i < msg->name.size() && i < msg->position.size(); ++i)
+      if (msg->name[i] == "head_pan_joint") pan = msg->position[i];
+  });
+  pr2_controllers_msgs::PointHeadGoal goal;
+  goal.target.header.frame_id = "base_link";
+  goal.target.point.x = 2.0;
+  goal.target.point.y = 2.0;
+  goal.target.point.z = 1.2;
+  goal.min_duration = ::ros::Duration(0.5);
+  head.sendGoal(goal);
+  ASSERT_TRUE(head.waitForResult(::ros::Duration(30.0))) << tail();
+  EXPECT_EQ(head.getState(), actionlib::SimpleClientGoalState::SUCCEEDED) << head.getState().getText() << "\n" << tail();
+  {
+    std::lock_guard<std::mutex> l(m);
+    // The pan axis stands 6.7 cm behind base_link's origin: the target is 0.77 rad to the left.
+    EXPECT_NEAR(pan, std::atan2(2.0, 2.0 + 0.067), 0.15);
+  }
 }
 
 // pr2_gazebo's own rostests, through its launch files and gazebo_ros' (rostest --reuse-master on
 // the test's master; hztest's Python from Debian). Rates are in simulated time (/use_sim_time).
 class Pr2GazeboHztest : public GazeboLaunch {
  protected:
-  void run(const std::string& launch_file, int tests, double limit, const std::vector<std::string>& extra_env = {}) {
+  void run(const std::string& launch_file, int tests, double limit, const std::vector<std::string>& extra_env = {},
+           const std::string& package = "pr2_gazebo") {
     const char* const rostest = "/usr/bin/rostest";
     if (!std::filesystem::exists(rostest)) GTEST_SKIP() << rostest << " is missing (Debian's python3-rostest)";
     ::ros::param::set("/run_id", std::string("mechsim_gazebo_hztest"));
     launch_ = std::make_unique<ChildProcess>(
-        in_gazebo_env({"/usr/bin/python3", rostest, "--reuse-master", "pr2_gazebo", launch_file}, extra_env),
+        in_gazebo_env({"/usr/bin/python3", rostest, "--reuse-master", package, launch_file}, extra_env),
         log_dir() + "/rostest_gazebo_" + launch_file + ".log");
     const int status = launch_->wait(limit);
     const std::string log = tail();
@@ -220,6 +268,18 @@ TEST_F(Pr2GazeboHztest, StereoPasses) {
     GTEST_SKIP() << "about 30 s (two rate tests, each with the PR2 brought up afresh): run with MECHSIM_SLOW_TESTS=1";
   }
   run("hztest_pr2_stereo.launch", 2, 600.0);
+}
+
+// pr2_gazebo's bring-up rates (robots/pr2/test/hztest_pr2_gazebo_bringup.test): the bounds of
+// pr2_gazebo's mechanism rate test, /tf with robot_pose_ekf's transform among its publishers, and
+// robot_pose_ekf's odom_combined. Five tests, each with the PR2 brought up afresh.
+TEST_F(Pr2GazeboHztest, BringupRatesPass) {
+  if (std::getenv("MECHSIM_SLOW_TESTS") == nullptr) {
+    GTEST_SKIP() << "about 2 minutes (five rate tests, each with the PR2 brought up afresh): run with MECHSIM_SLOW_TESTS=1";
+  }
+  run("hztest_pr2_gazebo_bringup.test", 5, 600.0,
+      {"ROS_PACKAGE_PATH=" + std::string(MECHSIM_BINARY_DIR) + "/ros_package:" + MECHSIM_SOURCE_DIR + "/robots:" + kShared + "/robots"},
+      "mechsim_pr2");
 }
 
 }  // namespace

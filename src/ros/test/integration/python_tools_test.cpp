@@ -52,6 +52,17 @@ bool running(const std::string& controller) {
   return false;
 }
 
+// A shell set up by ros_env.sh is a Noetic shell as launch and CMake files test it (ROS_DISTRO),
+// and finds pr2_gazebo's test dependency pr2_machine with its sim.machine.
+TEST(RosPython, RosEnvIsANoeticShellWithPr2Machine) {
+  const std::string script = std::string("unset ROS_DISTRO ROS_VERSION; . '") + MECHSIM_SOURCE_DIR + "/scripts/ros_env.sh' '" +
+                             MECHSIM_BINARY_DIR + "' && echo \"distro=$ROS_DISTRO version=$ROS_VERSION\" && ls \"$(rospack find pr2_machine)\"";
+  ChildProcess p({"/bin/bash", "-c", script}, log_dir() + "/ros_env_noetic.log");
+  EXPECT_EQ(p.wait(60.0), 0) << p.log();
+  EXPECT_THAT(p.log(), HasSubstr("distro=noetic version=1"));
+  EXPECT_THAT(p.log(), HasSubstr("sim.machine"));
+}
+
 TEST(RosPython, GeneratedModulesHaveTheTableMd5s) {
   const std::string table = std::string(MECHSIM_SHARED_DIR) + "/msgs/md5sums.tsv";
   if (!std::ifstream(table)) GTEST_SKIP() << "no " << table << " (the shared data folder is absent)";
