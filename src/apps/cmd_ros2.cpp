@@ -1,0 +1,209 @@
+// `mechsim ros2 ROBOT --controllers FILE`: one world and its robot on a ROS 2 domain, as gzserver
+// with gazebo_ros and gazebo_ros2_control presents them to Humble and Jazzy nodes (src/ros2/README.md,
+// docs/ros2.md). Built with the ROS 2 layer (MECHSIM_ROS2, Debian's Fast DDS); without it the command
+// says why it is unavailable.
+//
+// Runs until SIGINT/SIGTERM (exit status 0), or for --duration seconds of simulated time.
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "apps/cmd_common.hpp"
+#include "apps/commands.hpp"
+#include "apps/stop_on_signals.hpp"
+
+#ifdef MECHSIM_HAS_ROS2
+#include "bridge/sim_bridge.hpp"
+#include "description/robot_loader.hpp"
+#include "ros2/sim_node.hpp"
+#include "sim/controller_set.hpp"
+#endif
+
+namespace mechsim::apps {
+namespace {
+
+struct Ros2Args {
+  RobotArgs robot;
+  std::string controllers, yaml_ns;
+  std::vector<std::string> start;
+  bool no_controllers = false;
+  std::string world = "empty";
+  std::vector<double> spawn;  // x y [z]
+  double yaw = 0.0;
+  double real_time_factor = 1.0;
+  std::string distro = "jazzy";
+  double clock_rate = 0.0;
+  double tf_rate = 20.0;
+  bool no_tf = false;
+  std::string robot_namespace;
+  std::string use_stamped_vel = "true";
+  double duration = 0.0;
+  bool paused = false;
+};
+
+#ifdef MECHSIM_HAS_ROS2
+
+// The description's controller manager namespace: gazebo_ros_control's <robotNamespace> (ROS 1
+// descriptions); "/" when it has none.
+std::string plugin_namespace(const description::RobotModel& robot) {
+  for (const auto& plugin : robot.plugins) {
+    if (plugin.filename.find("gazebo_ros_control") != std::string::npos) {
+      if (auto it = plugin.parameters.find("robotNamespace"); it != plugin.parameters.end() && !it->second.empty()) {
+        return it->second;
+      }
+    }
+  }
+  return "/";
+}
+
+// Without --start: the robot's usual set, as `mechsim bench` picks it (sim::widest_conflict_free).
+std::vector<std::string> usual_set(const std::vector<bridge::ControllerSummary>& loaded) {
+  std::vector<control::ControllerInfo> infos;
+  for (const bridge::ControllerSummary& c : loaded) {
+    control::ControllerInfo& i = infos.emplace_back();
+    i.name = c.name;
+    i.type = c.type;
+    for (const bridge::ClaimedResources& claim : c.claims) i.claims.push_back({control::HardwareInterface::Effort, claim.resources});
+  }
+  return sim::widest_conflict_free(infos);
+}
+
+void run(const Ros2Args& args, CommandResult& result) {
+  const auto distro = ros2::parse_distro(args.distro);
+  if (!distro) throw UserError("--ros-distro '" + args.distro + "': humble or jazzy");
+  ros2::NodeOptions options;
+  options.participant = ros2::options_from_environment(*distro);
+  options.clock_rate = args.clock_rate;
+  options.tf_rate = args.tf_rate;
+  options.publish_tf = !args.no_tf;
+  options.use_stamped_vel = args.use_stamped_vel == "true";
+
+  description::LoadedRobot loaded = description::load_robot(args.robot.file, load_options(args.robot));
+  for (const std::string& w : loaded.warnings) std::cerr << "warning: " << args.robot.file << ": " << w << "\n";
+  options.robot_description = loaded.urdf;
+  options.robot_namespace = args.robot_namespace.empty() ? plugin_namespace(loaded.model) : args.robot_namespace;
+
+  bridge::BridgeOptions bridge;
+  bridge.robot = std::move(loaded.model);
+  bridge.world = args.world;
+  if (args.spawn.size() >= 2) {
+    bridge.x = args.spawn[0];
+    bridge.y = args.spawn[1];
+  }
+  if (args.spawn.size() >= 3) bridge.z = args.spawn[2];
+  bridge.yaw = args.yaw;
+  bridge.paused = args.paused;
+  bridge.real_time_factor = args.real_time_factor;
+  std::vector<std::string> in_yaml;
+  if (!args.controllers.empty()) {
+    control::Params root = control::Params::from_yaml_file(args.controllers);
+    bridge.controller_params = controller_namespace(args.controllers, args.yaml_ns);
+    bridge.parameter_root = root;
+    for (const std::string& k : bridge.controller_params.keys()) {
+      if (bridge.controller_params.child(k).is_map() && bridge.controller_params.child(k).has("type")) in_yaml.push_back(k);
+    }
+  }
+
+  ros2::SimNode node(std::move(bridge), options);
+  ros2::Participant& p = node.participant();
+  for (const std::string& w : node.bridge().physics_warnings()) p.log("physics: " + w);
+  // Controllers: --start, or the usual set of the YAML's controllers (all loaded, then the widest
+  // conflict-free set started); none with --no-controllers.
+  std::vector<std::string> start = args.start;
+  if (!args.no_controllers && start.empty() && !in_yaml.empty()) {
+    for (const std::string& name : in_yaml) {
+      const bridge::BridgeResult r = node.load_controller(name);
+      if (!r.ok) p.log("controller '" + name + "' not loaded: " + r.error);
+    }
+    start = usual_set(node.bridge().list_controllers());
+  }
+  if (!args.no_controllers && !start.empty()) {
+    const bridge::BridgeResult r = node.start_controllers(start);
+    if (!r.ok) p.log("controllers: " + r.error);
+  }
+  std::printf("mechsim ros2: %s in world '%s' on ROS 2 domain %d (%s layout, %s); controller manager %s\n",
+              node.bridge().robot().name.c_str(), args.world.c_str(), p.domain_id(), ros2::distro_name(p.distro()),
+              "rmw_fastrtps_cpp and rmw_cyclonedds_cpp peers", options.robot_namespace.c_str());
+  std::printf("mechsim ros2: nodes:");
+  for (const std::string& n : p.node_names()) std::printf(" %s", n.c_str());
+  std::printf("\n");
+  for (const std::string& t : node.topic_lines()) std::printf("mechsim ros2: topic %s\n", t.c_str());
+  std::fflush(stdout);
+
+  const StopOnSignals stop_on_signals;
+  const auto wall_start = std::chrono::steady_clock::now();
+  const double sim_start = node.bridge().time();
+  node.start();
+  while (g_stop_signal.load() == 0) {
+    if (args.duration > 0.0 && node.bridge().time() - sim_start >= args.duration) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  node.stop();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double simulated = node.bridge().time() - sim_start;
+  const ros2::NodeStats s = node.stats();
+  std::printf("mechsim ros2: %.3f s simulated in %.3f s of wall time (real-time factor %.3f); %llu /clock, %llu /tf "
+              "messages, %llu commands taken, %llu rejected\n",
+              simulated, wall, wall > 0.0 ? simulated / wall : 0.0, static_cast<unsigned long long>(s.clock_messages),
+              static_cast<unsigned long long>(s.tf_messages), static_cast<unsigned long long>(s.commands),
+              static_cast<unsigned long long>(s.commands_rejected));
+  result.exit_code = 0;
+}
+
+#else
+
+void run(const Ros2Args&, CommandResult&) {
+  throw UserError(
+      "this mechsim was built without its ROS 2 layer: it needs eProsima Fast DDS (Debian's libfastrtps-dev and "
+      "libfastcdr-dev). Install them with `scripts/install-deps.sh --with-ros` and build again (CMake option "
+      "MECHSIM_ROS2=AUTO, the default, picks them up)");
+}
+
+#endif
+
+}  // namespace
+
+void add_ros2_command(CLI::App& app, CommandResult& result) {
+  auto args = std::make_shared<Ros2Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "ros2", "Serve a world and its robot on a ROS 2 domain (Humble or Jazzy nodes; ROS_DOMAIN_ID from the environment)");
+  add_robot_options(cmd, args->robot);
+  cmd->add_option("--controllers", args->controllers, "Controller YAML (ros_control or mechsim form)");
+  cmd->add_option("--namespace", args->yaml_ns, "Namespace of the controllers in the YAML");
+  cmd->add_option("--start", args->start,
+                  "Controllers to load and start (default: every controller of the YAML loaded, the widest "
+                  "conflict-free set started, as `mechsim bench`)");
+  cmd->add_flag("--no-controllers", args->no_controllers, "Start no controller");
+  cmd->add_option("--world", args->world, "empty, mars_yard_2024 or a heightmap file");
+  cmd->add_option("--spawn", args->spawn, "Spawn position X Y [Z] (m)")->expected(2, 3);
+  cmd->add_option("--yaw", args->yaw, "Spawn yaw (rad)");
+  cmd->add_option("--real-time-factor", args->real_time_factor,
+                  "Simulated time runs this many times as fast as wall time (default 1; 0: as fast as it goes)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--ros-distro", args->distro,
+                  "humble or jazzy (default): the graph message's layout and Jazzy's type hashes")
+      ->check(CLI::IsMember({"humble", "jazzy"}));
+  cmd->add_option("--clock-rate", args->clock_rate, "Hz of simulated time of /clock (default 0: every tick)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--tf-rate", args->tf_rate, "Hz of simulated time of /tf (default 20, robot_state_publisher's)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-tf", args->no_tf, "No robot_state_publisher (/tf, /tf_static, /robot_description): run your own");
+  cmd->add_option("--robot-namespace", args->robot_namespace,
+                  "Namespace of the controller manager and controllers (default: the description's plugin's, else /)");
+  cmd->add_option("--use-stamped-vel", args->use_stamped_vel,
+                  "Humble: diff_drive_controller's use_stamped_vel default (true: TwistStamped on ~/cmd_vel; false: "
+                  "Twist on ~/cmd_vel_unstamped); a controller's own parameter wins")
+      ->check(CLI::IsMember({"true", "false"}));
+  cmd->add_option("--duration", args->duration, "Stop after this many seconds of simulated time (default: run until "
+                                                 "SIGINT/SIGTERM)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--paused", args->paused, "Start paused");
+  cmd->callback([args, &result] { run(*args, result); });
+}
+
+}  // namespace mechsim::apps
