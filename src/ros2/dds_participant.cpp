@@ -163,6 +163,12 @@ class CdrType final : public dds::TopicDataType {
   bool getKey(void*, rtps::InstanceHandle_t*, bool) override { return false; }
 };
 
+// Reliable writers announce what they hold this often (Fast DDS's default: 3 s). A peer that
+// matched the writer after its first heartbeat (discovery is not symmetric: one side may match
+// before the other) asks for a transient-local sample (/tf_static, /robot_description, the graph)
+// at the next one; 3 s made a late joiner wait that long.
+const eprosima::fastrtps::Duration_t kHeartbeatPeriod{0, 200000000};
+
 std::vector<rtps::octet> user_data_of(const std::string& text) { return {text.begin(), text.end()}; }
 
 // At most one line a second per caller (a flood of bad samples must not flood the log).
@@ -525,6 +531,7 @@ Participant::Participant(ParticipantOptions options) : impl_(std::make_shared<Im
   dds::DataWriterQos wq = dds::DATAWRITER_QOS_DEFAULT;
   p.endpoint_qos(graph, wq.endpoint(), wq.user_data(), wq.reliability(), wq.durability(), wq.history());
   wq.data_sharing().off();
+  wq.reliable_writer_qos().times.heartbeatPeriod = kHeartbeatPeriod;
   p.graph_writer = p.publisher->create_datawriter(topic, wq);
   if (p.graph_writer == nullptr) throw std::runtime_error("Fast DDS refused the ros_discovery_info writer");
   p.publish_graph();
@@ -568,6 +575,7 @@ std::unique_ptr<Writer> Participant::create_writer(int node, const EndpointSpec&
     p.endpoint_qos(spec, qos.endpoint(), qos.user_data(), qos.reliability(), qos.durability(), qos.history());
     qos.data_sharing().off();
     qos.publish_mode().kind = spec.asynchronous ? dds::ASYNCHRONOUS_PUBLISH_MODE : dds::SYNCHRONOUS_PUBLISH_MODE;
+    qos.reliable_writer_qos().times.heartbeatPeriod = kHeartbeatPeriod;
     impl->writer = p.publisher->create_datawriter(topic, qos, impl.get(), dds::StatusMask::publication_matched() <<
                                                                             dds::StatusMask::offered_incompatible_qos());
     if (impl->writer == nullptr) {
