@@ -49,7 +49,7 @@ struct Ros2Args {
 #ifdef MECHSIM_HAS_ROS2
 
 // The description's controller manager namespace: gazebo_ros_control's <robotNamespace> (ROS 1
-// descriptions); "/" when it has none.
+// descriptions); "" when it has none.
 std::string plugin_namespace(const description::RobotModel& robot) {
   for (const auto& plugin : robot.plugins) {
     if (plugin.filename.find("gazebo_ros_control") != std::string::npos) {
@@ -58,7 +58,17 @@ std::string plugin_namespace(const description::RobotModel& robot) {
       }
     }
   }
-  return "/";
+  return "";
+}
+
+// The namespace the controllers' YAML puts them in: --namespace, or the file's single top-level
+// map when that is not itself a controller (the `pr2:` of mechsim's PR2 YAML); "" for the root.
+std::string yaml_namespace(const std::string& file, const std::string& ns) {
+  if (!ns.empty()) return ns;
+  const control::Params root = control::Params::from_yaml_file(file);
+  const std::vector<std::string> keys = root.keys();
+  if (keys.size() == 1 && root.child(keys[0]).is_map() && !root.child(keys[0]).has("type")) return keys[0];
+  return "";
 }
 
 // Without --start: the robot's usual set, as `mechsim bench` picks it (sim::widest_conflict_free).
@@ -86,7 +96,14 @@ void run(const Ros2Args& args, CommandResult& result) {
   description::LoadedRobot loaded = description::load_robot(args.robot.file, load_options(args.robot));
   for (const std::string& w : loaded.warnings) std::cerr << "warning: " << args.robot.file << ": " << w << "\n";
   options.robot_description = loaded.urdf;
-  options.robot_namespace = args.robot_namespace.empty() ? plugin_namespace(loaded.model) : args.robot_namespace;
+  // The controller manager's namespace: --robot-namespace, else the description's plugin's, else
+  // the YAML's, else the root.
+  options.robot_namespace = args.robot_namespace;
+  if (options.robot_namespace.empty()) options.robot_namespace = plugin_namespace(loaded.model);
+  if (options.robot_namespace.empty() && !args.controllers.empty()) {
+    options.robot_namespace = yaml_namespace(args.controllers, args.yaml_ns);
+  }
+  if (options.robot_namespace.empty()) options.robot_namespace = "/";
 
   bridge::BridgeOptions bridge;
   bridge.robot = std::move(loaded.model);
@@ -122,10 +139,20 @@ void run(const Ros2Args& args, CommandResult& result) {
     }
     start = usual_set(node.bridge().list_controllers());
   }
+  // The loop runs before the switch: a switch applies at a tick (as a spawner's does).
+  const StopOnSignals stop_on_signals;
+  const auto wall_start = std::chrono::steady_clock::now();
+  const double sim_start = node.bridge().time();
+  node.start();
   if (!args.no_controllers && !start.empty()) {
     const bridge::BridgeResult r = node.start_controllers(start);
     if (!r.ok) p.log("controllers: " + r.error);
   }
+  std::printf("mechsim ros2: controllers running:");
+  for (const bridge::ControllerSummary& c : node.bridge().list_controllers()) {
+    if (c.state == "running") std::printf(" %s", c.name.c_str());
+  }
+  std::printf("\n");
   std::printf("mechsim ros2: %s in world '%s' on ROS 2 domain %d (%s layout, %s); controller manager %s\n",
               node.bridge().robot().name.c_str(), args.world.c_str(), p.domain_id(), ros2::distro_name(p.distro()),
               "rmw_fastrtps_cpp and rmw_cyclonedds_cpp peers", options.robot_namespace.c_str());
@@ -135,10 +162,6 @@ void run(const Ros2Args& args, CommandResult& result) {
   for (const std::string& t : node.topic_lines()) std::printf("mechsim ros2: topic %s\n", t.c_str());
   std::fflush(stdout);
 
-  const StopOnSignals stop_on_signals;
-  const auto wall_start = std::chrono::steady_clock::now();
-  const double sim_start = node.bridge().time();
-  node.start();
   while (g_stop_signal.load() == 0) {
     if (args.duration > 0.0 && node.bridge().time() - sim_start >= args.duration) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -194,7 +217,8 @@ void add_ros2_command(CLI::App& app, CommandResult& result) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-tf", args->no_tf, "No robot_state_publisher (/tf, /tf_static, /robot_description): run your own");
   cmd->add_option("--robot-namespace", args->robot_namespace,
-                  "Namespace of the controller manager and controllers (default: the description's plugin's, else /)");
+                  "Namespace of the controller manager and controllers (default: the description's gazebo_ros_control "
+                  "<robotNamespace>, else the YAML's namespace, else /)");
   cmd->add_option("--use-stamped-vel", args->use_stamped_vel,
                   "Humble: diff_drive_controller's use_stamped_vel default (true: TwistStamped on ~/cmd_vel; false: "
                   "Twist on ~/cmd_vel_unstamped); a controller's own parameter wins")

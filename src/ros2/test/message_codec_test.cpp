@@ -1,5 +1,6 @@
 // The generated message code: byte layout as XCDR1 puts it on the wire, round trips, and
 // malformed samples refused with a reason, never a crash or an allocation beyond the sample.
+#include <cstring>
 #include <random>
 
 #include <gtest/gtest.h>

@@ -5,6 +5,7 @@
 
 #include <mechsim_ros2_msgs/rosgraph_msgs.hpp>
 
+#include "topic_checks.hpp"
 #include "wire_fixture.hpp"
 
 namespace mechsim::ros2::test {
@@ -74,85 +75,11 @@ TEST_P(CycloneWire, TopicsAreDecoded) {
   auto args = ros2bot_args();
   args.insert(args.end(), {"--ros-distro", distro, "--real-time-factor", "1"});
   start_mechsim(args);
-  const auto lines = run_cyclone(
-      distro, {"--seconds", "4", "--sub", "/tf=tf", "--sub", "/tf_static=tf_static", "--sub",
-               "/ros2bot/joint_states=joint_state", "--sub", "/ros2bot/scan=laser", "--sub",
-               "/ros2bot/front_camera/image_raw=image", "--sub", "/ros2bot/front_camera/camera_info=camera_info",
-               "--sub", "/robot_description=string", "--sub", "/ros2bot/diff_drive_controller/odom=odometry", "--sub",
-               "/ros2bot/imu=imu", "--save-image", dir_ + "/front_camera.ppm"});
+  auto subs = ros2bot_subscriptions();
+  subs.insert(subs.end(), {"--seconds", "4", "--save-image", dir_ + "/front_camera.ppm"});
+  const auto lines = run_cyclone(distro, subs);
   stop_mechsim();
-
-  // /tf_static: every fixed joint in one message (transient local: the peer came after it).
-  const auto tf_static = summary(lines, "/tf_static");
-  ASSERT_FALSE(tf_static.is_null());
-  EXPECT_EQ(tf_static["count"], 1);
-  std::vector<std::string> children;
-  for (const auto& t : tf_static["last"]["transforms"]) children.push_back(t["child"]);
-  EXPECT_THAT(children, ::testing::UnorderedElementsAre("base_link", "front_caster_link", "rear_caster_link",
-                                                        "laser_link", "camera_link"));
-  // /tf: the moving joints (20 Hz), and the diff drive's odom -> base_footprint.
-  const auto tf = summary(lines, "/tf");
-  ASSERT_FALSE(tf.is_null());
-  EXPECT_GT(tf["count"].get<int>(), 40);
-  bool joints = false, odom = false;
-  for (const auto& l : lines) {
-    if (l.value("topic", "") != "/tf" || !l.contains("sample")) continue;
-    for (const auto& t : l["sample"]["transforms"]) {
-      if (t["child"] == "mast_link") joints = t["frame_id"] == "base_link";
-      if (t["child"] == "base_footprint") odom = t["frame_id"] == "odom";
-    }
-  }
-  for (const auto& t : tf["last"]["transforms"]) {
-    if (t["child"] == "mast_link") joints = true;
-    if (t["child"] == "base_footprint") odom = true;
-  }
-  EXPECT_TRUE(joints) << tf;
-  EXPECT_TRUE(odom) << tf;
-
-  const auto js = summary(lines, "/ros2bot/joint_states");
-  ASSERT_FALSE(js.is_null());
-  EXPECT_THAT(js["last"]["name"].get<std::vector<std::string>>(),
-              ::testing::IsSupersetOf({"left_wheel_joint", "right_wheel_joint", "pan_joint"}));
-  EXPECT_GT(js["count"].get<int>(), 100);  // 50 Hz for 4 s
-
-  // The laser looks 0.35 rad down from ~0.30 m: the ground ~0.87 m ahead, farther to the sides.
-  const auto scan = summary(lines, "/ros2bot/scan");
-  ASSERT_FALSE(scan.is_null());
-  const auto& s = scan["last"];
-  EXPECT_EQ(s["frame_id"], "laser_link");
-  EXPECT_EQ(s["ranges"], 181);
-  EXPECT_NEAR(s["angle_min"].get<double>(), -1.5708, 1e-4);
-  EXPECT_GT(s["finite"].get<int>(), 100);
-  EXPECT_NEAR(s["nearest"].get<double>(), 0.87, 0.1);
-  EXPECT_GT(scan["count"].get<int>(), 40);  // 20 Hz
-
-  const auto image = summary(lines, "/ros2bot/front_camera/image_raw");
-  ASSERT_FALSE(image.is_null());
-  EXPECT_EQ(image["last"]["width"], 64);
-  EXPECT_EQ(image["last"]["height"], 48);
-  EXPECT_EQ(image["last"]["encoding"], "rgb8");
-  EXPECT_EQ(image["last"]["bytes"], 64 * 48 * 3);
-  EXPECT_GT(image["last"]["mean"].get<double>(), 5.0);  // something was rendered
-  EXPECT_EQ(image["last"]["frame_id"], "camera_link");
-  const auto info = summary(lines, "/ros2bot/front_camera/camera_info");
-  ASSERT_FALSE(info.is_null());
-  EXPECT_EQ(info["last"]["width"], 64);
-  EXPECT_NEAR(info["last"]["k"][0].get<double>(), 32.0 / std::tan(0.6), 0.5);  // fx from the 1.2 rad FOV
-
-  const auto description = summary(lines, "/robot_description");
-  ASSERT_FALSE(description.is_null());
-  EXPECT_GT(description["last"]["length"].get<int>(), 2000);
-  EXPECT_NE(description["last"]["head"].get<std::string>().find("<"), std::string::npos);
-
-  const auto odometry = summary(lines, "/ros2bot/diff_drive_controller/odom");
-  ASSERT_FALSE(odometry.is_null());
-  EXPECT_EQ(odometry["last"]["frame_id"], "odom");
-  EXPECT_EQ(odometry["last"]["child_frame_id"], "base_footprint");
-
-  const auto imu = summary(lines, "/ros2bot/imu");
-  ASSERT_FALSE(imu.is_null());
-  EXPECT_EQ(imu["last"]["frame_id"], "base_link");
-  EXPECT_NEAR(imu["last"]["linear_acceleration"][2].get<double>(), 9.81, 0.3);
+  expect_ros2bot_topics(lines);
 }
 
 TEST_P(CycloneWire, CommandsMoveTheRobot) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -72,6 +73,33 @@ class WireTest : public ::testing::Test {
     peers_.push_back(std::make_unique<Process>(argv, dir_ + "/" + name + ".log",
                                                std::map<std::string, std::string>{{"CYCLONEDDS_URI", PrivateNetwork::cyclone_uri()}}));
     return *peers_.back();
+  }
+
+  // The Fast DDS peer (../peers/fastdds): same arguments and output as the Cyclone peer.
+  std::vector<nlohmann::json> run_fastdds(const std::string& distro, std::vector<std::string> args,
+                                          const std::string& name = "fastdds") {
+    std::vector<std::string> argv{std::string(MECHSIM_BINARY_DIR) + "/bin/fastdds_peer", "--domain", kDomain, "--distro", distro};
+    argv.insert(argv.end(), args.begin(), args.end());
+    peers_.push_back(std::make_unique<Process>(argv, dir_ + "/" + name + ".log"));
+    const auto status = peers_.back()->wait(std::chrono::seconds(60));
+    EXPECT_TRUE(status && *status == 0) << peers_.back()->output();
+    return json_lines(peers_.back()->output());
+  }
+  // The @foxglove/ros2 peer (../peers/foxglove, node); empty with `skip` set when node or its
+  // packages are not installed.
+  std::vector<nlohmann::json> run_foxglove(const std::string& distro, std::vector<std::string> args, std::string* skip,
+                                           const std::string& name = "foxglove") {
+    const std::string dir = std::string(MECHSIM_SOURCE_DIR) + "/src/ros2/test/peers/foxglove";
+    if (!std::filesystem::exists(dir + "/node_modules/@foxglove/ros2")) {
+      *skip = dir + "/node_modules is missing: scripts/install-deps.sh --with-ros installs the @foxglove/ros2 peer";
+      return {};
+    }
+    std::vector<std::string> argv{"node", dir + "/peer.js", "--domain", kDomain, "--distro", distro};
+    argv.insert(argv.end(), args.begin(), args.end());
+    peers_.push_back(std::make_unique<Process>(argv, dir_ + "/" + name + ".log"));
+    const auto status = peers_.back()->wait(std::chrono::seconds(60));
+    EXPECT_TRUE(status && *status == 0) << peers_.back()->output();
+    return json_lines(peers_.back()->output());
   }
 
   static constexpr const char* kDomain = "7";

@@ -61,6 +61,7 @@ typedef struct {
   long count;
   double first_wall, last_wall;
   char qos[8];  /* be, rel, tl: overrides the kind's ROS default */
+  char children[4096];  /* tf: every child frame seen, as a JSON list's items */
   char* last;   /* the last sample as JSON (malloc'd) */
 } sub_t;
 
@@ -428,6 +429,20 @@ static void publish(pub_t* p) {
   ++p->sent;
 }
 
+/* tf: the child frames of every sample, each once (a test checks frames that are not in every
+ * message: robot_state_publisher's and an odometry's go out separately). */
+static void note_children(sub_t* s, const void* sample) {
+  const tf2_msgs_msg_dds__TFMessage_* m = sample;
+  for (uint32_t i = 0; i < m->transforms._length; ++i) {
+    char quoted[300];
+    snprintf(quoted, sizeof quoted, "\"%s\"", m->transforms._buffer[i].child_frame_id);
+    if (strstr(s->children, quoted)) continue;
+    const size_t used = strlen(s->children);
+    if (used + strlen(quoted) + 2 >= sizeof s->children) return;
+    snprintf(s->children + used, sizeof s->children - used, "%s%s", used ? "," : "", quoted);
+  }
+}
+
 static void print_endpoints(dds_entity_t reader) {
   void* samples[BATCH] = {0};
   dds_sample_info_t infos[BATCH];
@@ -563,6 +578,7 @@ int main(int argc, char** argv) {
           s->last_wall = t;
           ++s->count;
           /* Every sample decoded; the first 3 printed, the last kept for the summary. */
+          if (s->kind == K_TF || s->kind == K_TF_STATIC) note_children(s, samples[j]);
           char* text = describe(s->kind, samples[j]);
           if (s->count <= 3) printf("{\"topic\":\"%s\",\"n\":%ld,\"sample\":%s}\n", s->topic, s->count, text);
           free(s->last);
@@ -577,8 +593,8 @@ int main(int argc, char** argv) {
   }
   for (int i = 0; i < nsubs; ++i) {
     const sub_t* s = &subs[i];
-    printf("{\"topic\":\"%s\",\"summary\":true,\"count\":%ld,\"span\":%.6f,\"last\":%s}\n", s->topic, s->count,
-           s->count > 1 ? s->last_wall - s->first_wall : 0.0, s->last ? s->last : "null");
+    printf("{\"topic\":\"%s\",\"summary\":true,\"count\":%ld,\"span\":%.6f,\"children\":[%s],\"last\":%s}\n", s->topic,
+           s->count, s->count > 1 ? s->last_wall - s->first_wall : 0.0, s->children, s->last ? s->last : "null");
   }
   for (int i = 0; i < npubs; ++i) printf("{\"topic\":\"%s\",\"published\":%ld}\n", pubs[i].topic, pubs[i].sent);
   dds_delete(pp);

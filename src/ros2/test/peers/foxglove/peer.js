@@ -240,7 +240,7 @@ async function main() {
     const readerEntityId = participant.subscribe(rtpsOpts);
     const sub = new Subscription({ subscribeOpts: rtpsOpts, readerEntityId, participant, skipParsing: true });
     const reader = new MessageReader(definitionOf(args.distro, type));
-    const st = { count: 0, first: 0, last: 0, lastText: null, errors: 0 };
+    const st = { count: 0, first: 0, last: 0, lastText: null, errors: 0, children: new Set() };
     stats.set(s.topic, st);
     sub.on("message", (_time, _msg, data) => {
       let text;
@@ -251,6 +251,7 @@ async function main() {
         if (st.errors <= 3) console.log(JSON.stringify({ topic: s.topic, error: String(e) }));
         return;
       }
+      if (s.kind === "tf" || s.kind === "tf_static") for (const t of text.transforms) st.children.add(t.child);
       const now = performance.now() / 1000;
       if (st.count === 0) st.first = now;
       st.last = now;
@@ -264,7 +265,7 @@ async function main() {
   for (const s of args.subs) {
     const st = stats.get(s.topic);
     console.log(JSON.stringify({ topic: s.topic, summary: true, count: st.count, span: st.count > 1 ? st.last - st.first : 0,
-                                 errors: st.errors, last: st.lastText }));
+                                 errors: st.errors, children: [...st.children], last: st.lastText }));
   }
   await node.shutdown();
   process.exit(0);
