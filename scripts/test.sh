@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh Debian 12 machine: installs what it needs (ROS 1 included,
 # for the optional ROS layer), builds the release flavour and runs every test (unit, conformance,
-# scenario, cli, ros, ros2: DDS peers in private network namespaces, slurm: a single-node Slurm the
-# test starts), then builds the unit-test
-# programs with AddressSanitizer + UBSan and runs the unit tests there, then fuzzes the readers of
+# scenario, cli, ros, ros2 (DDS peers in private network namespaces), slurm: a single-node Slurm the
+# test starts), then builds the unit-test programs with AddressSanitizer + UBSan and runs the unit
+# tests there, then fuzzes the readers of
 # robot descriptions and controller parameters for a short fixed budget.
 set -euo pipefail
 cd "$(dirname "$0")/.."

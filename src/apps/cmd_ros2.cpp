@@ -5,6 +5,8 @@
 //
 // Runs until SIGINT/SIGTERM (exit status 0), or for --duration seconds of simulated time.
 
+#include <time.h>
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -44,6 +46,7 @@ struct Ros2Args {
   std::string use_stamped_vel = "true";
   double duration = 0.0;
   bool paused = false;
+  double bench_rtf = 0.0;  // s of simulated time with publishing on (and as many off)
 };
 
 #ifdef MECHSIM_HAS_ROS2
@@ -81,6 +84,51 @@ std::vector<std::string> usual_set(const std::vector<bridge::ControllerSummary>&
     for (const bridge::ClaimedResources& claim : c.claims) i.claims.push_back({control::HardwareInterface::Effort, claim.resources});
   }
   return sim::widest_conflict_free(infos);
+}
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// --bench-rtf: the real-time factor (as fast as it goes) with the ROS 2 layer publishing and
+// without, in one run: blocks of 0.5 s of simulated time alternate (ABBA), publishing on and off, so that
+// both see the same states and the same load of the machine; wall time (what a user gets) and
+// the loop thread's CPU time (what the layer costs the tick) each give a ratio.
+void bench_rtf(ros2::SimNode& node, double seconds) {
+  bridge::SimBridge& bridge = node.bridge();
+  // Discovery and matching settle first: 2 s at real time, publishing.
+  bridge.set_real_time_factor(1.0);
+  bridge.run_for(2.0, nullptr);
+  bridge.set_real_time_factor(0.0);
+  constexpr double kBlock = 0.5;
+  double wall[2] = {0.0, 0.0}, cpu[2] = {0.0, 0.0}, sim[2] = {0.0, 0.0};
+  std::string error;
+  for (int k = 0; sim[1] < seconds || sim[0] < seconds; ++k) {
+    // ABBA: on, off, off, on, ...: a load that drifts over the run weighs on both alike.
+    const int on = (k % 4 == 0 || k % 4 == 3) ? 1 : 0;
+    node.set_publishing(on == 1);
+    const auto w0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_seconds(), s0 = bridge.time();
+    if (!bridge.run_for(kBlock, &error)) throw UserError("the simulation failed: " + error);
+    wall[on] += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+    cpu[on] += thread_cpu_seconds() - c0;
+    sim[on] += bridge.time() - s0;
+  }
+  node.set_publishing(true);
+  const double rtf_on = sim[1] / wall[1], rtf_off = sim[0] / wall[0];
+  std::printf("mechsim ros2 --bench-rtf: %.1f s simulated with the ROS 2 layer publishing, %.1f s without, in "
+              "alternating blocks of %.1f s (on, off, off, on, ...)\n",
+              sim[1], sim[0], kBlock);
+  std::printf("  real-time factor (wall):       %.3f publishing, %.3f without: ratio %.3f\n", rtf_on, rtf_off,
+              rtf_on / rtf_off);
+  std::printf("  loop thread CPU per sim second: %.4f s publishing, %.4f s without: ratio %.3f\n", cpu[1] / sim[1],
+              cpu[0] / sim[0], (cpu[0] / sim[0]) / (cpu[1] / sim[1]));
+  const ros2::NodeStats st = node.stats();
+  std::printf("  published: %llu /clock, %llu /tf messages\n", static_cast<unsigned long long>(st.clock_messages),
+              static_cast<unsigned long long>(st.tf_messages));
+  std::fflush(stdout);
 }
 
 void run(const Ros2Args& args, CommandResult& result) {
@@ -139,7 +187,33 @@ void run(const Ros2Args& args, CommandResult& result) {
     }
     start = usual_set(node.bridge().list_controllers());
   }
+  auto print_banner = [&] {
+    std::printf("mechsim ros2: controllers running:");
+    for (const bridge::ControllerSummary& c : node.bridge().list_controllers()) {
+      if (c.state == "running") std::printf(" %s", c.name.c_str());
+    }
+    std::printf("\n");
+    std::printf("mechsim ros2: %s in world '%s' on ROS 2 domain %d (%s layout, %s); controller manager %s\n",
+                node.bridge().robot().name.c_str(), args.world.c_str(), p.domain_id(), ros2::distro_name(p.distro()),
+                "rmw_fastrtps_cpp and rmw_cyclonedds_cpp peers", options.robot_namespace.c_str());
+    std::printf("mechsim ros2: nodes:");
+    for (const std::string& n : p.node_names()) std::printf(" %s", n.c_str());
+    std::printf("\n");
+    for (const std::string& t : node.topic_lines()) std::printf("mechsim ros2: topic %s\n", t.c_str());
+    std::fflush(stdout);
+  };
   // The loop runs before the switch: a switch applies at a tick (as a spawner's does).
+  if (args.bench_rtf > 0.0) {
+    node.start();
+    if (!args.no_controllers && !start.empty()) {
+      const bridge::BridgeResult r = node.start_controllers(start);
+      if (!r.ok) p.log("controllers: " + r.error);
+    }
+    node.stop();
+    print_banner();
+    bench_rtf(node, args.bench_rtf);
+    return;
+  }
   const StopOnSignals stop_on_signals;
   const auto wall_start = std::chrono::steady_clock::now();
   const double sim_start = node.bridge().time();
@@ -148,19 +222,7 @@ void run(const Ros2Args& args, CommandResult& result) {
     const bridge::BridgeResult r = node.start_controllers(start);
     if (!r.ok) p.log("controllers: " + r.error);
   }
-  std::printf("mechsim ros2: controllers running:");
-  for (const bridge::ControllerSummary& c : node.bridge().list_controllers()) {
-    if (c.state == "running") std::printf(" %s", c.name.c_str());
-  }
-  std::printf("\n");
-  std::printf("mechsim ros2: %s in world '%s' on ROS 2 domain %d (%s layout, %s); controller manager %s\n",
-              node.bridge().robot().name.c_str(), args.world.c_str(), p.domain_id(), ros2::distro_name(p.distro()),
-              "rmw_fastrtps_cpp and rmw_cyclonedds_cpp peers", options.robot_namespace.c_str());
-  std::printf("mechsim ros2: nodes:");
-  for (const std::string& n : p.node_names()) std::printf(" %s", n.c_str());
-  std::printf("\n");
-  for (const std::string& t : node.topic_lines()) std::printf("mechsim ros2: topic %s\n", t.c_str());
-  std::fflush(stdout);
+  print_banner();
 
   while (g_stop_signal.load() == 0) {
     if (args.duration > 0.0 && node.bridge().time() - sim_start >= args.duration) break;
@@ -227,6 +289,11 @@ void add_ros2_command(CLI::App& app, CommandResult& result) {
                                                  "SIGINT/SIGTERM)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--paused", args->paused, "Start paused");
+  cmd->add_option("--bench-rtf", args->bench_rtf,
+                  "Measure what publishing costs: run as fast as possible for this many seconds of simulated time "
+                  "with the ROS 2 layer publishing and as many without, in alternating blocks, and print both "
+                  "real-time factors and their ratio (subscribe peers first: a topic without subscribers costs little)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args, &result] { run(*args, result); });
 }
 

@@ -38,19 +38,18 @@ struct SimNode::Binding {
   bridge::PortRef port;
   bool alive = true;  // under bindings_mutex_: false once unbinding started
   std::shared_ptr<void> subscription;  // a Subscription<M>
-  std::unique_ptr<Publisher<sensor_msgs::msg::JointState>> joint_states;
-  std::unique_ptr<Publisher<nav_msgs::msg::Odometry>> odom;
-  std::unique_ptr<Publisher<tf2_msgs::msg::TFMessage>> odom_tf;
-  std::unique_ptr<Publisher<sensor_msgs::msg::Imu>> imu;
-  std::unique_ptr<Publisher<geometry_msgs::msg::TwistStamped>> twist_out;
+  // Shared with the outbox's jobs (outbox.hpp), which write what the loop thread filled.
+  std::shared_ptr<Publisher<sensor_msgs::msg::JointState>> joint_states;
+  std::shared_ptr<Publisher<nav_msgs::msg::Odometry>> odom;
+  std::shared_ptr<Publisher<tf2_msgs::msg::TFMessage>> odom_tf;
+  std::shared_ptr<Publisher<sensor_msgs::msg::Imu>> imu;
+  std::shared_ptr<Publisher<geometry_msgs::msg::TwistStamped>> twist_out;
   double period = 0.0;  // s (sim time) between messages; 0: every new snapshot
   double next_due = 0.0;
   std::uint64_t sequence = 0;
   bridge::JointStatesData joint_data;
   bridge::OdometryData odom_data;
   bridge::TwistStampedData twist_data;
-  sensor_msgs::msg::JointState joint_msg;
-  nav_msgs::msg::Odometry odom_msg;
 };
 
 namespace {
@@ -264,56 +263,69 @@ void SimNode::unbind(const std::string& controller) {
 }
 
 void SimNode::publish_controller_states(double time) {
+  // A message filled here and written by the outbox thread; nothing while nobody subscribes (the
+  // port's snapshot is not even read).
+  auto send = [this](const auto& publisher, auto message) {
+    auto pub = publisher;
+    outbox_->post([pub, message] { pub->publish(*message); });
+  };
   std::lock_guard<std::mutex> lock(bindings_mutex_);
   for (const std::shared_ptr<Binding>& bp : bindings_) {
     Binding& b = *bp;
     switch (b.port.type) {
-      case bridge::PortType::JointStates:
+      case bridge::PortType::JointStates: {
+        if (b.joint_states->matched() == 0) break;
         if (!bridge::read_joint_states(b.port, b.joint_data, &b.sequence)) break;
-        fill_joint_state(b.joint_data, b.joint_msg);
-        b.joint_states->publish(b.joint_msg);
+        auto msg = std::make_shared<sensor_msgs::msg::JointState>();
+        fill_joint_state(b.joint_data, *msg);
+        send(b.joint_states, msg);
         break;
+      }
       case bridge::PortType::Odometry: {
         if (time + 1e-9 < b.next_due) break;
+        if (b.odom->matched() == 0 && (!b.odom_tf || b.odom_tf->matched() == 0)) break;
         if (!bridge::read_odometry(b.port, b.odom_data, &b.sequence)) break;
         b.next_due = next_due_after(time, b.period);
-        fill_odometry(b.odom_data, b.odom_msg);
-        b.odom->publish(b.odom_msg);
-        if (b.odom_tf) {
-          tf2_msgs::msg::TFMessage tf;
-          auto& t = tf.transforms.emplace_back();
-          t.header = b.odom_msg.header;
-          t.child_frame_id = b.odom_msg.child_frame_id;
+        auto msg = std::make_shared<nav_msgs::msg::Odometry>();
+        fill_odometry(b.odom_data, *msg);
+        if (b.odom_tf && b.odom_tf->matched() > 0) {
+          auto tf = std::make_shared<tf2_msgs::msg::TFMessage>();
+          auto& t = tf->transforms.emplace_back();
+          t.header = msg->header;
+          t.child_frame_id = msg->child_frame_id;
           t.transform.translation.x = b.odom_data.x;
           t.transform.translation.y = b.odom_data.y;
           t.transform.translation.z = b.odom_data.z;
-          t.transform.rotation = b.odom_msg.pose.pose.orientation;
-          b.odom_tf->publish(tf);
+          t.transform.rotation = msg->pose.pose.orientation;
+          send(b.odom_tf, tf);
         }
+        if (b.odom->matched() > 0) send(b.odom, msg);
         break;
       }
       case bridge::PortType::ImuState: {
+        if (b.imu->matched() == 0) break;
         double stamp = 0.0;
         sensors::ImuReading reading;
-        sensor_msgs::msg::Imu msg;
-        if (!bridge::read_imu_state(b.port, stamp, msg.header.frame_id, reading, &b.sequence)) break;
-        fill_imu(reading, msg);
-        msg.header.stamp = to_time(stamp);
-        b.imu->publish(msg);
+        auto msg = std::make_shared<sensor_msgs::msg::Imu>();
+        if (!bridge::read_imu_state(b.port, stamp, msg->header.frame_id, reading, &b.sequence)) break;
+        fill_imu(reading, *msg);
+        msg->header.stamp = to_time(stamp);
+        send(b.imu, msg);
         break;
       }
       case bridge::PortType::TwistState: {
+        if (b.twist_out->matched() == 0) break;
         if (!bridge::read_twist_state(b.port, b.twist_data, &b.sequence)) break;
-        geometry_msgs::msg::TwistStamped msg;
-        msg.header.stamp = to_time(b.twist_data.stamp);
-        msg.header.frame_id = b.twist_data.frame_id;
-        msg.twist.linear.x = b.twist_data.vx;
-        msg.twist.linear.y = b.twist_data.vy;
-        msg.twist.linear.z = b.twist_data.vz;
-        msg.twist.angular.x = b.twist_data.wx;
-        msg.twist.angular.y = b.twist_data.wy;
-        msg.twist.angular.z = b.twist_data.wz;
-        b.twist_out->publish(msg);
+        auto msg = std::make_shared<geometry_msgs::msg::TwistStamped>();
+        msg->header.stamp = to_time(b.twist_data.stamp);
+        msg->header.frame_id = b.twist_data.frame_id;
+        msg->twist.linear.x = b.twist_data.vx;
+        msg->twist.linear.y = b.twist_data.vy;
+        msg->twist.linear.z = b.twist_data.vz;
+        msg->twist.angular.x = b.twist_data.wx;
+        msg->twist.angular.y = b.twist_data.wy;
+        msg->twist.angular.z = b.twist_data.wz;
+        send(b.twist_out, msg);
         break;
       }
       default:

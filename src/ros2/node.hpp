@@ -30,6 +30,7 @@ namespace mechsim::ros2 {
 template <class M>
 class Publisher {
  public:
+  using Message = M;
   explicit Publisher(std::unique_ptr<Writer> writer) : writer_(std::move(writer)) {}
   bool publish(const M& message) { return writer_->write(out(message)); }
   // A service reply (issue 37): related_sample_identity set to `related`.

@@ -26,28 +26,20 @@ struct SensorTopics::Output {
   std::string frame, child_frame;
   int row = 0;  // Laser: the published row of a multi-row scan
   std::unique_ptr<Node> node;
-  // Whichever applies to the kind.
-  std::unique_ptr<Publisher<sensor_msgs::msg::LaserScan>> laser;
-  std::unique_ptr<Publisher<sensor_msgs::msg::Imu>> imu;
-  std::unique_ptr<Publisher<geometry_msgs::msg::WrenchStamped>> wrench;
-  std::unique_ptr<Publisher<nav_msgs::msg::Odometry>> odometry;
-  std::vector<std::unique_ptr<Publisher<sensor_msgs::msg::Image>>> images;
-  std::vector<std::unique_ptr<Publisher<sensor_msgs::msg::CameraInfo>>> infos;
-  std::unique_ptr<Publisher<sensor_msgs::msg::Image>> depth;
-  std::unique_ptr<Publisher<sensor_msgs::msg::CameraInfo>> depth_info;
-  std::unique_ptr<Publisher<sensor_msgs::msg::PointCloud2>> points;
+  // Whichever applies to the kind (shared with the outbox's jobs).
+  std::shared_ptr<Publisher<sensor_msgs::msg::LaserScan>> laser;
+  std::shared_ptr<Publisher<sensor_msgs::msg::Imu>> imu;
+  std::shared_ptr<Publisher<geometry_msgs::msg::WrenchStamped>> wrench;
+  std::shared_ptr<Publisher<nav_msgs::msg::Odometry>> odometry;
+  std::vector<std::shared_ptr<Publisher<sensor_msgs::msg::Image>>> images;
+  std::vector<std::shared_ptr<Publisher<sensor_msgs::msg::CameraInfo>>> infos;
+  std::shared_ptr<Publisher<sensor_msgs::msg::Image>> depth;
+  std::shared_ptr<Publisher<sensor_msgs::msg::CameraInfo>> depth_info;
+  std::shared_ptr<Publisher<sensor_msgs::msg::PointCloud2>> points;
   std::string encoding;
   bool enabled = false;
   std::uint64_t published = 0;  // reading count last published (or skipped as stale)
   bool error_logged = false;
-  // Reused messages.
-  sensor_msgs::msg::LaserScan laser_msg;
-  sensor_msgs::msg::Imu imu_msg;
-  geometry_msgs::msg::WrenchStamped wrench_msg;
-  nav_msgs::msg::Odometry odometry_msg;
-  sensor_msgs::msg::Image image_msg;
-  sensor_msgs::msg::CameraInfo info_msg;
-  sensor_msgs::msg::PointCloud2 cloud_msg;
 
   bool wanted() const {
     auto any = [](const auto& p) { return p && p->matched() > 0; };
@@ -60,7 +52,8 @@ struct SensorTopics::Output {
   }
 };
 
-SensorTopics::SensorTopics(Participant& participant, bridge::SimBridge& bridge) : participant_(participant), bridge_(bridge) {
+SensorTopics::SensorTopics(Participant& participant, bridge::SimBridge& bridge, Outbox& outbox)
+    : participant_(participant), bridge_(bridge), outbox_(outbox) {
   for (const std::string& s : bridge.skipped_sensors()) participant_.log("sensor not simulated: " + s);
   for (std::size_t i = 0; i < bridge.sensor_count(); ++i) {
     bridge.set_sensor_enabled(i, false);  // nothing reads a sensor but its publishers
@@ -152,6 +145,14 @@ void SensorTopics::add(std::size_t i) {
   outputs_.push_back(std::move(out));
 }
 
+void SensorTopics::disable_all() {
+  for (const std::unique_ptr<Output>& o : outputs_) {
+    if (!o->enabled) continue;
+    bridge_.set_sensor_enabled(o->sensor, false);
+    o->enabled = false;
+  }
+}
+
 void SensorTopics::publish() {
   for (const std::unique_ptr<Output>& op : outputs_) {
     Output& o = *op;
@@ -167,42 +168,35 @@ void SensorTopics::publish() {
     if (r.count == o.published) continue;
     o.published = r.count;
     const auto stamp = to_time(r.stamp);
-    auto head = [&](auto& m) {
-      m.header.stamp = stamp;
-      m.header.frame_id = o.frame;
+    // A new message, stamped and framed, filled here and written by the outbox thread.
+    auto send = [&](const auto& publisher, auto fill) {
+      using M = typename std::decay_t<decltype(*publisher)>::Message;
+      auto message = std::make_shared<M>();
+      message->header.stamp = stamp;
+      message->header.frame_id = o.frame;
+      fill(*message);
+      auto pub = publisher;
+      if (outbox_.post([pub, message] { pub->publish(*message); })) ++stats_.messages;
     };
     switch (o.kind) {
       case Kind::Laser:
-        if (const auto* v = std::get_if<sensors::LaserScan>(&r.value)) {
-          head(o.laser_msg);
-          fill_laser_scan(*v, o.row, o.laser_msg);
-          o.laser->publish(o.laser_msg);
-          ++stats_.messages;
-        }
+        if (const auto* v = std::get_if<sensors::LaserScan>(&r.value))
+          send(o.laser, [&](sensor_msgs::msg::LaserScan& m) { fill_laser_scan(*v, o.row, m); });
         break;
       case Kind::Imu:
-        if (const auto* v = std::get_if<sensors::ImuReading>(&r.value)) {
-          head(o.imu_msg);
-          fill_imu(*v, o.imu_msg);
-          o.imu->publish(o.imu_msg);
-          ++stats_.messages;
-        }
+        if (const auto* v = std::get_if<sensors::ImuReading>(&r.value))
+          send(o.imu, [&](sensor_msgs::msg::Imu& m) { fill_imu(*v, m); });
         break;
       case Kind::Wrench:
-        if (const auto* v = std::get_if<sensors::WrenchReading>(&r.value)) {
-          head(o.wrench_msg);
-          fill_wrench(*v, o.wrench_msg);
-          o.wrench->publish(o.wrench_msg);
-          ++stats_.messages;
-        }
+        if (const auto* v = std::get_if<sensors::WrenchReading>(&r.value))
+          send(o.wrench, [&](geometry_msgs::msg::WrenchStamped& m) { fill_wrench(*v, m); });
         break;
       case Kind::GroundTruth:
         if (const auto* v = std::get_if<sensors::GroundTruthReading>(&r.value)) {
-          head(o.odometry_msg);
-          fill_ground_truth(*v, o.odometry_msg);
-          o.odometry_msg.child_frame_id = o.child_frame;
-          o.odometry->publish(o.odometry_msg);
-          ++stats_.messages;
+          send(o.odometry, [&](nav_msgs::msg::Odometry& m) {
+            fill_ground_truth(*v, m);
+            m.child_frame_id = o.child_frame;
+          });
         }
         break;
       case Kind::Camera: {
@@ -216,37 +210,16 @@ void SensorTopics::publish() {
         ++stats_.camera_frames;
         for (std::size_t k = 0; k < reading->images.size(); ++k) {
           const sensors::CameraImage& image = reading->images[k];
-          if (k < o.images.size() && o.images[k]->matched() > 0) {
-            head(o.image_msg);
-            fill_image(image, o.encoding, o.image_msg);
-            o.images[k]->publish(o.image_msg);
-            ++stats_.messages;
-          }
-          if (k < o.infos.size() && o.infos[k]->matched() > 0) {
-            head(o.info_msg);
-            fill_camera_info(image.info, o.info_msg);
-            o.infos[k]->publish(o.info_msg);
-            ++stats_.messages;
-          }
+          if (k < o.images.size() && o.images[k]->matched() > 0)
+            send(o.images[k], [&](sensor_msgs::msg::Image& m) { fill_image(image, o.encoding, m); });
+          if (k < o.infos.size() && o.infos[k]->matched() > 0)
+            send(o.infos[k], [&](sensor_msgs::msg::CameraInfo& m) { fill_camera_info(image.info, m); });
           if (k > 0) continue;
-          if (o.depth && o.depth->matched() > 0) {
-            head(o.image_msg);
-            fill_depth_image(image, o.image_msg);
-            o.depth->publish(o.image_msg);
-            ++stats_.messages;
-          }
-          if (o.depth_info && o.depth_info->matched() > 0) {
-            head(o.info_msg);
-            fill_camera_info(image.info, o.info_msg);
-            o.depth_info->publish(o.info_msg);
-            ++stats_.messages;
-          }
-          if (o.points && o.points->matched() > 0) {
-            head(o.cloud_msg);
-            fill_point_cloud(image, o.cloud_msg);
-            o.points->publish(o.cloud_msg);
-            ++stats_.messages;
-          }
+          if (o.depth && o.depth->matched() > 0) send(o.depth, [&](sensor_msgs::msg::Image& m) { fill_depth_image(image, m); });
+          if (o.depth_info && o.depth_info->matched() > 0)
+            send(o.depth_info, [&](sensor_msgs::msg::CameraInfo& m) { fill_camera_info(image.info, m); });
+          if (o.points && o.points->matched() > 0)
+            send(o.points, [&](sensor_msgs::msg::PointCloud2& m) { fill_point_cloud(image, m); });
         }
         break;
       }

@@ -13,8 +13,8 @@
 //
 // Cost: a sensor is sampled only while one of its topics has a matched subscriber (as the camera
 // and laser plugins activate their sensor on the first connection): unsubscribed, a tick pays one
-// atomic load per topic. Images and clouds go out through Fast DDS's asynchronous writers, so the
-// tick only fills and serializes them.
+// atomic load per topic. The tick fills a message; the outbox thread (outbox.hpp) writes it, and
+// images and clouds go out through Fast DDS's asynchronous writers besides.
 
 #include <cstdint>
 #include <memory>
@@ -23,6 +23,7 @@
 
 #include "bridge/sim_bridge.hpp"
 #include "ros2/dds_participant.hpp"
+#include "ros2/outbox.hpp"
 
 namespace mechsim::ros2 {
 
@@ -34,7 +35,8 @@ struct SensorPublishStats {
 class SensorTopics {
  public:
   // Makes the nodes and publishers; logs each topic and each sensor it leaves out, and why.
-  SensorTopics(Participant& participant, bridge::SimBridge& bridge);
+  // Samples go out through `outbox` (the loop thread fills them, the outbox thread writes them).
+  SensorTopics(Participant& participant, bridge::SimBridge& bridge, Outbox& outbox);
   ~SensorTopics();
   SensorTopics(const SensorTopics&) = delete;
   SensorTopics& operator=(const SensorTopics&) = delete;
@@ -42,6 +44,8 @@ class SensorTopics {
   // Enables the sensors with subscribers, disables the others, publishes each new reading.
   // Loop thread.
   void publish();
+  // Every sensor off (publishing paused); publish() turns on again the ones with subscribers.
+  void disable_all();
   // "sensor -> topic (type, frame F)" per topic.
   const std::vector<std::string>& topics() const { return topics_; }
   SensorPublishStats stats() const { return stats_; }
@@ -52,6 +56,7 @@ class SensorTopics {
   void add(std::size_t sensor);
   Participant& participant_;
   bridge::SimBridge& bridge_;
+  Outbox& outbox_;
   std::vector<std::unique_ptr<Output>> outputs_;
   std::vector<std::string> topics_;
   SensorPublishStats stats_;

@@ -15,13 +15,18 @@ SimNode::SimNode(bridge::BridgeOptions bridge, NodeOptions options) : options_(s
   // gzserver's ROS node: gazebo_ros_init's /clock.
   gazebo_node_ = std::make_unique<Node>(*participant_, "/", "gazebo");
   clock_pub_ = gazebo_node_->create_publisher<rosgraph_msgs::msg::Clock>("/clock", Qos::clock());
+  outbox_ = std::make_unique<Outbox>([this](double time) {
+    rosgraph_msgs::msg::Clock clock;
+    clock.clock = to_time(time);
+    clock_pub_->publish(clock);
+  });
   // gazebo_ros2_control's controller manager (its services are issue 37's).
   manager_node_ = std::make_unique<Node>(*participant_, options_.robot_namespace, "controller_manager");
   if (options_.publish_tf) {
-    state_ = std::make_unique<StatePublisher>(*participant_, "/", bridge_->robot(), options_.robot_description, "");
+    state_ = std::make_unique<StatePublisher>(*participant_, *outbox_, "/", bridge_->robot(), options_.robot_description, "");
     state_->publish_static(bridge_->time());
   }
-  sensors_ = std::make_unique<SensorTopics>(*participant_, *bridge_);
+  sensors_ = std::make_unique<SensorTopics>(*participant_, *bridge_, *outbox_);
   bridge_->add_observer([this](double time) { on_tick(time); });
   topic_lines_.push_back("/clock (rosgraph_msgs/msg/Clock, " +
                          (options_.clock_rate > 0.0 ? std::to_string(options_.clock_rate) + " Hz" : std::string("every tick")) +
@@ -43,7 +48,8 @@ SimNode::~SimNode() {
     }
     for (const std::string& n : names) unbind(n);
   }
-  // Endpoints before the participant.
+  // What is queued goes out, then the endpoints go, before the participant.
+  outbox_.reset();
   sensors_.reset();
   state_.reset();
   clock_pub_.reset();
@@ -72,10 +78,12 @@ void SimNode::loop() {
       // runs on real time; transient local keeps the last one for late subscribers anyway.
       const auto now = std::chrono::steady_clock::now();
       if (now - last_clock_ > std::chrono::milliseconds(100)) publish_clock(bridge_->time());
+      outbox_->end_of_tick();
       if (state_ && last_tf_ != bridge_->time()) {
         bridge_->joint_positions(joint_positions_);
         state_->publish(bridge_->time(), joint_positions_, bridge_->base_pose());
         last_tf_ = bridge_->time();
+        outbox_->end_of_tick();
       }
       continue;
     }
@@ -88,14 +96,15 @@ void SimNode::loop() {
 }
 
 void SimNode::publish_clock(double time) {
-  rosgraph_msgs::msg::Clock clock;
-  clock.clock = to_time(time);
-  clock_pub_->publish(clock);
-  clock_messages_.fetch_add(1, std::memory_order_relaxed);
+  outbox_->set_clock(time);
   last_clock_ = std::chrono::steady_clock::now();
 }
 
 void SimNode::on_tick(double time) {
+  if (!publishing_.load(std::memory_order_relaxed)) {
+    sensors_->disable_all();
+    return;
+  }
   if (time + 1e-9 >= next_clock_ || time < next_clock_ - 1.0) {
     publish_clock(time);
     next_clock_ = next_due_after(time, options_.clock_rate > 0.0 ? 1.0 / options_.clock_rate : 0.0);
@@ -109,6 +118,7 @@ void SimNode::on_tick(double time) {
     last_tf_ = time;
     next_tf_ = next_due_after(time, options_.tf_rate > 0.0 ? 1.0 / options_.tf_rate : 0.0);
   }
+  outbox_->end_of_tick();
 }
 
 bridge::BridgeResult SimNode::load_controller(const std::string& name) {
@@ -153,6 +163,7 @@ bridge::BridgeResult SimNode::start_controllers(const std::vector<std::string>& 
 void SimNode::unload_all_controllers() {
   stop();
   std::lock_guard<std::mutex> lock(manager_mutex_);
+  outbox_->flush();
   const std::vector<std::string> names = bridge_->stop_all_controllers_now();
   for (auto it = names.rbegin(); it != names.rend(); ++it) {
     unbind(*it);
@@ -168,7 +179,10 @@ std::vector<std::string> SimNode::topic_lines() const {
 
 NodeStats SimNode::stats() const {
   NodeStats s;
-  s.clock_messages = clock_messages_.load();
+  const OutboxStats o = outbox_->stats();
+  s.clock_messages = o.clocks;
+  s.clock_coalesced = o.coalesced;
+  s.dropped = o.dropped;
   s.tf_messages = tf_messages_.load();
   s.commands = commands_.load();
   s.commands_rejected = commands_rejected_.load();

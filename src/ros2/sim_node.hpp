@@ -9,8 +9,9 @@
 //     (controller_topics.cpp);
 //   - the sensors' topics, one node per sensor plugin (sensor_topics.hpp).
 //
-// Threads: the loop thread ticks and publishes. Command samples arrive on Fast DDS's threads and
-// are written to the controllers' ports (thread-safe, bridge/README.md) under `bindings_mutex_`.
+// Threads: the loop thread ticks and fills what is due; the outbox thread writes it (outbox.hpp).
+// Command samples arrive on Fast DDS's threads and are written to the controllers' ports
+// (thread-safe, bridge/README.md) under `bindings_mutex_`.
 
 #include <atomic>
 #include <chrono>
@@ -26,6 +27,7 @@
 #include "bridge/sim_bridge.hpp"
 #include "ros2/dds_participant.hpp"
 #include "ros2/node.hpp"
+#include "ros2/outbox.hpp"
 #include "ros2/sensor_topics.hpp"
 #include "ros2/state_publisher.hpp"
 
@@ -48,7 +50,9 @@ struct NodeOptions {
 
 // What the node publishes and counts, for logs and tests.
 struct NodeStats {
-  std::uint64_t clock_messages = 0;
+  std::uint64_t clock_messages = 0;     // written
+  std::uint64_t clock_coalesced = 0;    // times replaced by a newer one before they went out
+  std::uint64_t dropped = 0;            // samples the outbox had no room for
   std::uint64_t tf_messages = 0;
   std::uint64_t commands = 0;           // command samples written to ports
   std::uint64_t commands_rejected = 0;  // refused by a port (wrong size, not finite)
@@ -73,6 +77,9 @@ class SimNode {
   bridge::BridgeResult start_controllers(const std::vector<std::string>& names);
   // Stops every controller, drops their topics and unloads them (the loop stopped first).
   void unload_all_controllers();
+  // Publishing on (the default) or off: off, a tick publishes nothing and samples no sensor, as
+  // without the ROS 2 layer (`mechsim ros2 --bench-rtf` measures what publishing costs). Any thread.
+  void set_publishing(bool on) { publishing_.store(on, std::memory_order_relaxed); }
   // "topic (type)" per topic the node publishes or subscribes, for the start-up log.
   std::vector<std::string> topic_lines() const;
   NodeStats stats() const;
@@ -92,6 +99,7 @@ class SimNode {
   std::unique_ptr<Node> gazebo_node_;
   std::unique_ptr<Node> manager_node_;
   std::unique_ptr<Publisher<rosgraph_msgs::msg::Clock>> clock_pub_;
+  std::unique_ptr<Outbox> outbox_;  // writes what the loop thread fills (outbox.hpp)
   std::unique_ptr<StatePublisher> state_;
   std::unique_ptr<SensorTopics> sensors_;
 
@@ -102,6 +110,7 @@ class SimNode {
 
   std::thread loop_thread_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> publishing_{true};
   double next_clock_ = 0.0, next_tf_ = 0.0, last_tf_ = -1.0;
   std::chrono::steady_clock::time_point last_clock_{};
   std::vector<double> joint_positions_;

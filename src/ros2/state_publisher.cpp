@@ -47,9 +47,9 @@ Pose joint_transform(const description::Joint& joint, double q) {
   return physics::compose(joint.origin, motion);
 }
 
-StatePublisher::StatePublisher(Participant& participant, const std::string& ns, const description::RobotModel& robot,
-                               const std::string& urdf, std::string odom_frame)
-    : robot_(robot), odom_frame_(std::move(odom_frame)), node_(participant, ns, "robot_state_publisher") {
+StatePublisher::StatePublisher(Participant& participant, Outbox& outbox, const std::string& ns,
+                               const description::RobotModel& robot, const std::string& urdf, std::string odom_frame)
+    : robot_(robot), outbox_(outbox), odom_frame_(std::move(odom_frame)), node_(participant, ns, "robot_state_publisher") {
   description_pub_ = node_.create_publisher<std_msgs::msg::String>("robot_description", Qos::latched());
   tf_pub_ = node_.create_publisher<tf2_msgs::msg::TFMessage>("/tf", Qos::tf());
   static_pub_ = node_.create_publisher<tf2_msgs::msg::TFMessage>("/tf_static", Qos::latched());
@@ -68,14 +68,18 @@ void StatePublisher::publish_static(double time) {
 }
 
 void StatePublisher::publish(double time, const std::vector<double>& q, const description::Pose& X_OB) {
+  if (tf_pub_->matched() == 0) return;  // volatile: nobody misses what is not sent
   const auto stamp = to_time(time);
-  message_.transforms.clear();
+  auto message = std::make_shared<tf2_msgs::msg::TFMessage>();
+  message->transforms.reserve(robot_.joints.size() + 1);
   for (std::size_t i = 0; i < robot_.joints.size() && i < q.size(); ++i) {
     const description::Joint& j = robot_.joints[i];
-    if (moving(j)) message_.transforms.push_back(transform(joint_transform(j, q[i]), j.parent_link, j.child_link, stamp));
+    if (moving(j)) message->transforms.push_back(transform(joint_transform(j, q[i]), j.parent_link, j.child_link, stamp));
   }
-  if (!odom_frame_.empty()) message_.transforms.push_back(transform(X_OB, odom_frame_, robot_.root_link, stamp));
-  if (!message_.transforms.empty()) tf_pub_->publish(message_);
+  if (!odom_frame_.empty()) message->transforms.push_back(transform(X_OB, odom_frame_, robot_.root_link, stamp));
+  if (message->transforms.empty()) return;
+  auto pub = tf_pub_;
+  outbox_.post([pub, message] { pub->publish(*message); });
 }
 
 }  // namespace mechsim::ros2

@@ -6,7 +6,8 @@
 //                       message, tf2_ros::StaticBroadcasterQoS (reliable, transient local, 1)
 //   /tf                 tf2_msgs/msg/TFMessage, every moving joint's parent -> child = origin *
 //                       motion, at `rate` Hz of sim time, tf2_ros::DynamicBroadcasterQoS
-// Node `robot_state_publisher`. Publishing runs in the simulation's loop thread.
+// Node `robot_state_publisher`. The loop thread fills /tf (only while it has subscribers), the
+// outbox thread writes it.
 
 #include <memory>
 #include <string>
@@ -17,6 +18,7 @@
 
 #include "description/robot_model.hpp"
 #include "ros2/node.hpp"
+#include "ros2/outbox.hpp"
 
 namespace mechsim::ros2 {
 
@@ -27,7 +29,7 @@ class StatePublisher {
  public:
   // `ns`: the node's namespace (robot_description is relative to it); `odom_frame` non-empty adds
   // odom_frame -> root link from the physics to /tf.
-  StatePublisher(Participant& participant, const std::string& ns, const description::RobotModel& robot,
+  StatePublisher(Participant& participant, Outbox& outbox, const std::string& ns, const description::RobotModel& robot,
                  const std::string& urdf, std::string odom_frame);
   // /tf_static (once; transient local keeps it for late subscribers).
   void publish_static(double time);
@@ -36,11 +38,12 @@ class StatePublisher {
 
  private:
   const description::RobotModel& robot_;
+  Outbox& outbox_;
   std::string odom_frame_;
   Node node_;
   std::unique_ptr<Publisher<std_msgs::msg::String>> description_pub_;
-  std::unique_ptr<Publisher<tf2_msgs::msg::TFMessage>> tf_pub_, static_pub_;
-  tf2_msgs::msg::TFMessage message_;  // reused
+  std::shared_ptr<Publisher<tf2_msgs::msg::TFMessage>> tf_pub_;
+  std::unique_ptr<Publisher<tf2_msgs::msg::TFMessage>> static_pub_;
 };
 
 }  // namespace mechsim::ros2
