@@ -1,6 +1,7 @@
 // The Fast DDS participant behind mechsim's ROS 2 nodes (dds_participant.hpp).
 #include "ros2/dds_participant.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -212,6 +213,16 @@ struct Participant::Impl : dds::DomainParticipantListener {
   int next_node = 1;
   dds::DataWriter* graph_writer = nullptr;
   std::atomic<std::uint64_t> graph_write_count{0};
+  // Peers' endpoints' USER_DATA, as discovered (services pair clients' endpoints by it).
+  mutable std::mutex remote_mutex;
+  std::map<Guid, std::string> remote_writers, remote_readers;
+
+  void note_remote(std::map<Guid, std::string>& table, const rtps::GUID_t& g, const std::vector<rtps::octet>& data,
+                   bool removed) {
+    std::lock_guard<std::mutex> lock(remote_mutex);
+    if (removed) table.erase(to_guid(g));
+    else table[to_guid(g)] = std::string(data.begin(), data.end());
+  }
 
   void log(const std::string& line) const {
     if (options.log) options.log(line);
@@ -316,10 +327,14 @@ struct Participant::Impl : dds::DomainParticipantListener {
     }
   }
   void on_subscriber_discovery(dds::DomainParticipant*, rtps::ReaderDiscoveryInfo&& info) override {
+    note_remote(remote_readers, info.info.guid(), info.info.m_qos.m_userData.data_vec(),
+                info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER);
     if (info.status == rtps::ReaderDiscoveryInfo::DISCOVERED_READER)
       check_peer_type(info.info.guid(), info.info.topicName().to_string(), info.info.typeName().to_string(), "subscription");
   }
   void on_publisher_discovery(dds::DomainParticipant*, rtps::WriterDiscoveryInfo&& info) override {
+    note_remote(remote_writers, info.info.guid(), info.info.m_qos.m_userData.data_vec(),
+                info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER);
     if (info.status == rtps::WriterDiscoveryInfo::DISCOVERED_WRITER)
       check_peer_type(info.info.guid(), info.info.topicName().to_string(), info.info.typeName().to_string(), "publisher");
   }
@@ -357,9 +372,9 @@ struct Participant::Impl : dds::DomainParticipantListener {
     history.depth = spec.qos.depth > 0 ? spec.qos.depth : 1;
     // Samples of every size (images of megabytes) in pools that grow as needed, as rmw_fastrtps.
     endpoint.history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
-    if (options.distro == Distro::Jazzy && !spec.type_hash.empty()) {
-      user_data.data_vec(user_data_of("typehash=" + spec.type_hash + ";"));
-    }
+    std::string text = spec.user_data;
+    if (options.distro == Distro::Jazzy && !spec.type_hash.empty()) text = "typehash=" + spec.type_hash + ";" + text;
+    if (!text.empty()) user_data.data_vec(user_data_of(text));
   }
 };
 
@@ -374,9 +389,17 @@ struct Writer::Impl : dds::DataWriterListener {
   std::atomic<int> matched{0};
   std::mutex throttle_mutex;
   Throttle refused;
+  mutable std::mutex readers_mutex;
+  std::vector<Guid> readers;  // matched now (Fast DDS 2.9 cannot list them: kept from the callbacks)
 
   void on_publication_matched(dds::DataWriter*, const dds::PublicationMatchedStatus& s) override {
     matched.store(s.current_count, std::memory_order_relaxed);
+    {
+      const Guid reader = to_guid(rtps::iHandle2GUID(s.last_subscription_handle));
+      std::lock_guard<std::mutex> lock(readers_mutex);
+      std::erase(readers, reader);
+      if (s.current_count_change > 0) readers.push_back(reader);
+    }
     if (s.current_count_change < 0) {
       owner->log(spec.ros_topic + ": a subscriber left (" + std::to_string(s.current_count) + " matched now)");
     }
@@ -424,6 +447,11 @@ bool Writer::write(const OutMessage& message, const SampleIdentity& related, Sam
 }
 
 int Writer::matched() const { return impl_->matched.load(std::memory_order_relaxed); }
+
+bool Writer::has_matched(const Guid& reader) const {
+  std::lock_guard<std::mutex> lock(impl_->readers_mutex);
+  return std::find(impl_->readers.begin(), impl_->readers.end(), reader) != impl_->readers.end();
+}
 const Guid& Writer::guid() const { return impl_->guid; }
 const EndpointSpec& Writer::spec() const { return impl_->spec; }
 
@@ -628,5 +656,20 @@ std::vector<std::string> Participant::node_names() const {
 }
 
 std::uint64_t Participant::graph_writes() const { return impl_->graph_write_count.load(std::memory_order_relaxed); }
+
+std::string Participant::remote_user_data(const Guid& endpoint) const {
+  std::lock_guard<std::mutex> lock(impl_->remote_mutex);
+  if (auto it = impl_->remote_writers.find(endpoint); it != impl_->remote_writers.end()) return it->second;
+  if (auto it = impl_->remote_readers.find(endpoint); it != impl_->remote_readers.end()) return it->second;
+  return "";
+}
+
+std::vector<Guid> Participant::remote_readers_with(const std::string& text) const {
+  std::lock_guard<std::mutex> lock(impl_->remote_mutex);
+  std::vector<Guid> out;
+  for (const auto& [guid, data] : impl_->remote_readers)
+    if (data.find(text) != std::string::npos) out.push_back(guid);
+  return out;
+}
 
 }  // namespace mechsim::ros2

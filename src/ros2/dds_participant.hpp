@@ -91,6 +91,8 @@ struct EndpointSpec {
   // Writers: Fast DDS's own thread sends the sample (write() only serializes it): for samples
   // of megabytes (images, clouds), written from the simulation's loop thread.
   bool asynchronous = false;
+  // More USER_DATA ("serviceid=...;": what rmw_cyclonedds pairs a service's reader and writer by).
+  std::string user_data;
 };
 
 class Participant;
@@ -106,6 +108,9 @@ class Writer {
   // `written` (may be null) receives the sample's own identity.
   bool write(const OutMessage& message, const SampleIdentity& related, SampleIdentity* written);
   int matched() const;  // readers matched now
+  // Whether the reader `reader` is matched now (a service's reply goes to a client's reader only
+  // once it is: a reliable writer does not keep a sample for a reader it has not matched yet).
+  bool has_matched(const Guid& reader) const;
   const Guid& guid() const;
   const EndpointSpec& spec() const;
 
@@ -160,6 +165,10 @@ class Participant {
   std::vector<std::string> node_names() const;
   // Times the graph message was written (tests).
   std::uint64_t graph_writes() const;
+  // The USER_DATA of a peer's reader or writer as discovered ("" when unknown or none).
+  std::string remote_user_data(const Guid& endpoint) const;
+  // The remote readers whose USER_DATA holds `text` (e.g. "clientid=X;").
+  std::vector<Guid> remote_readers_with(const std::string& text) const;
 
   struct Impl;
 

@@ -86,6 +86,7 @@ class Node {
 
   const std::string& ns() const { return ns_; }
   const std::string& name() const { return name_; }
+  int id() const { return id_; }  // in its participant (Participant::create_writer/create_reader)
   std::string fq_name() const { return (ns_ == "/" ? "" : ns_) + "/" + name_; }
   Participant& participant() { return participant_; }
   // The fully qualified name of `topic` for this node, remappings applied. Throws NameError.

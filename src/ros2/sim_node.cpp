@@ -20,6 +20,20 @@ SimNode::SimNode(bridge::BridgeOptions bridge, NodeOptions options) : options_(s
     clock.clock = to_time(time);
     clock_pub_->publish(clock);
   });
+  // gazebo_ros_init's world services (both resets put the robot back at its spawn pose and
+  // restart its controllers; time goes on: sim/simulation.hpp says why).
+  using Empty = std_srvs::srv::Empty;
+  auto serve = [this](const char* name, std::function<void()> action) {
+    world_services_.push_back(std::make_unique<ServiceServer<Empty>>(
+        *gazebo_node_, name, [action](const Empty::Request&, Empty::Response&) {
+          action();
+          return true;
+        }));
+  };
+  serve("/pause_physics", [this] { bridge_->pause(); });
+  serve("/unpause_physics", [this] { bridge_->unpause(); });
+  serve("/reset_simulation", [this] { bridge_->request_reset(); });
+  serve("/reset_world", [this] { bridge_->request_reset(); });
   // gazebo_ros2_control's controller manager (its services are issue 37's).
   manager_node_ = std::make_unique<Node>(*participant_, options_.robot_namespace, "controller_manager");
   if (options_.publish_tf) {
@@ -34,6 +48,8 @@ SimNode::SimNode(bridge::BridgeOptions bridge, NodeOptions options) : options_(s
   if (state_) {
     topic_lines_.push_back("/tf, /tf_static, /robot_description (robot_state_publisher)");
   }
+  topic_lines_.push_back("/pause_physics, /unpause_physics, /reset_simulation, /reset_world (std_srvs/srv/Empty services, "
+                         "rmw_fastrtps and rmw_cyclonedds clients)");
   for (const std::string& t : sensors_->topics()) topic_lines_.push_back(t);
 }
 
@@ -49,6 +65,7 @@ SimNode::~SimNode() {
     for (const std::string& n : names) unbind(n);
   }
   // What is queued goes out, then the endpoints go, before the participant.
+  world_services_.clear();
   outbox_.reset();
   sensors_.reset();
   state_.reset();

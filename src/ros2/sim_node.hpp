@@ -3,7 +3,8 @@
 // gazebo_ros2_control presents them (README.md, "Nodes and topics"). One SimNode owns:
 //   - the DDS participant (dds_participant.hpp) and the SimBridge (world, robot, controllers);
 //   - the loop thread that ticks the world and, after each tick, publishes what is due;
-//   - node `gazebo` (/clock), node `robot_state_publisher` (/tf, /tf_static,
+//   - node `gazebo` (/clock; the services /pause_physics, /unpause_physics, /reset_simulation,
+//     /reset_world of gazebo_ros_init, std_srvs/srv/Empty), node `robot_state_publisher` (/tf, /tf_static,
 //     /robot_description), node `<robot ns>/controller_manager`;
 //   - one node per loaded controller in the robot namespace with its topics
 //     (controller_topics.cpp);
@@ -23,12 +24,14 @@
 #include <vector>
 
 #include <mechsim_ros2_msgs/rosgraph_msgs.hpp>
+#include <mechsim_ros2_msgs/std_srvs.hpp>
 
 #include "bridge/sim_bridge.hpp"
 #include "ros2/dds_participant.hpp"
 #include "ros2/node.hpp"
 #include "ros2/outbox.hpp"
 #include "ros2/sensor_topics.hpp"
+#include "ros2/service.hpp"
 #include "ros2/state_publisher.hpp"
 
 namespace mechsim::ros2 {
@@ -100,6 +103,7 @@ class SimNode {
   std::unique_ptr<Node> manager_node_;
   std::unique_ptr<Publisher<rosgraph_msgs::msg::Clock>> clock_pub_;
   std::unique_ptr<Outbox> outbox_;  // writes what the loop thread fills (outbox.hpp)
+  std::vector<std::unique_ptr<ServiceServer<std_srvs::srv::Empty>>> world_services_;
   std::unique_ptr<StatePublisher> state_;
   std::unique_ptr<SensorTopics> sensors_;
 

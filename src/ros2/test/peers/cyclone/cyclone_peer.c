@@ -14,6 +14,10 @@
  *       [--rate HZ]                        publishing rate (default 20)
  *       [--save-image FILE.ppm]            the last image received, as a binary PPM
  *       [--endpoints]                      print the USER_DATA of every peer writer (type hashes)
+ *       [--call SERVICE=empty]...          call a std_srvs/srv/Empty service first, as an
+ *                                          rmw_cyclonedds_cpp client does (header in the payload,
+ *                                          "clientid=" USER_DATA); prints {"service":...,"reply":...}
+ *                                          and only then subscribes and publishes
  *
  * Topics are ROS names ("/clock", "ros_discovery_info" as is); the peer adds rmw's "rt" prefix.
  * Each subscription prints its first 3 samples ({"topic":..., "n":..., "sample":{...}}) and, at
@@ -25,9 +29,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "dds/dds.h"
 #include "ros2_graph.h"
+#include "ros2_services.h"
 #include "ros2_types.h"
 
 #define MAX_TOPICS 16
@@ -475,13 +481,69 @@ static void print_endpoints(dds_entity_t reader) {
   }
 }
 
+/* One call of a std_srvs/srv/Empty service in rmw_cyclonedds' form: waits (at most 5 s) until
+ * the service is there (a matched request reader and reply writer), writes the request with its
+ * header, waits (at most 3 s) for the reply carrying the same header. */
+static void call_empty(dds_entity_t pp, const char* service, int index) {
+  char rq[300], rr[300], user[64];
+  snprintf(rq, sizeof rq, "rq%sRequest", service);
+  snprintf(rr, sizeof rr, "rr%sReply", service);
+  snprintf(user, sizeof user, "clientid=peer.%d.%d;", (int)getpid(), index);
+  dds_qos_t* q = dds_create_qos();
+  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, 10);
+  dds_qset_userdata(q, user, strlen(user));
+  const dds_entity_t wt = dds_create_topic(pp, &std_srvs_srv_dds__Empty_Request__desc, rq, NULL, NULL);
+  const dds_entity_t rt = dds_create_topic(pp, &std_srvs_srv_dds__Empty_Response__desc, rr, NULL, NULL);
+  const dds_entity_t w = dds_create_writer(pp, wt, q, NULL);
+  const dds_entity_t r = dds_create_reader(pp, rt, q, NULL);
+  dds_delete_qos(q);
+  const double t0 = wall_now();
+  int available = 0;
+  while (!available && wall_now() - t0 < 5.0) {
+    dds_publication_matched_status_t pm;
+    dds_subscription_matched_status_t sm;
+    dds_get_publication_matched_status(w, &pm);
+    dds_get_subscription_matched_status(r, &sm);
+    available = pm.current_count > 0 && sm.current_count > 0;
+    struct timespec nap = {0, 5000000};
+    if (!available) nanosleep(&nap, NULL);
+  }
+  std_srvs_srv_dds__Empty_Request_ req;
+  memset(&req, 0, sizeof req);
+  dds_instance_handle_t ih = 0;
+  dds_get_instance_handle(w, &ih);
+  req.client_id = ih;
+  req.seq = 1000 + index;
+  const double t1 = wall_now();
+  int replied = 0;
+  if (available) dds_write(w, &req);
+  void* samples[BATCH] = {0};
+  dds_sample_info_t infos[BATCH];
+  while (available && !replied && wall_now() - t1 < 3.0) {
+    int n = dds_take(r, samples, infos, BATCH, BATCH);
+    for (int j = 0; j < n; ++j) {
+      const std_srvs_srv_dds__Empty_Response_* rep = samples[j];
+      if (infos[j].valid_data && rep->client_id == req.client_id && rep->seq == req.seq) replied = 1;
+    }
+    if (n > 0) dds_return_loan(r, samples, n);
+    struct timespec nap = {0, 1000000};
+    nanosleep(&nap, NULL);
+  }
+  printf("{\"service\":\"%s\",\"form\":\"rmw_cyclonedds\",\"available\":%s,\"reply\":%s,\"ms\":%.1f}\n", service,
+         available ? "true" : "false", replied ? "true" : "false", 1e3 * (wall_now() - t1));
+  dds_delete(r);
+  dds_delete(w);
+}
+
 int main(int argc, char** argv) {
   int domain = 0;
   double seconds = 5.0, rate = 20.0;
   int endpoints = 0;
   sub_t subs[MAX_TOPICS];
   pub_t pubs[MAX_TOPICS];
-  int nsubs = 0, npubs = 0;
+  int nsubs = 0, npubs = 0, ncalls = 0;
+  const char* calls[MAX_TOPICS];
   memset(subs, 0, sizeof subs);
   memset(pubs, 0, sizeof pubs);
   for (int i = 1; i < argc; ++i) {
@@ -492,6 +554,13 @@ int main(int argc, char** argv) {
     else if (strcmp(a, "--rate") == 0 && v) rate = atof(argv[++i]);
     else if (strcmp(a, "--save-image") == 0 && v) save_image_path = argv[++i];
     else if (strcmp(a, "--endpoints") == 0) endpoints = 1;
+    else if (strcmp(a, "--call") == 0 && v && ncalls < MAX_TOPICS) {
+      char* spec = argv[++i];
+      char* eq = strchr(spec, '=');
+      if (!eq || strcmp(eq + 1, "empty") != 0) { fprintf(stderr, "cyclone_peer: --call SERVICE=empty\n"); return 2; }
+      *eq = '\0';
+      calls[ncalls++] = spec;
+    }
     else if ((strcmp(a, "--sub") == 0 || strcmp(a, "--pub") == 0) && v && nsubs < MAX_TOPICS && npubs < MAX_TOPICS) {
       char spec[1400];
       snprintf(spec, sizeof spec, "%s", argv[++i]);
@@ -526,6 +595,7 @@ int main(int argc, char** argv) {
   const dds_entity_t pp = dds_create_participant((dds_domainid_t)domain, pq, NULL);
   dds_delete_qos(pq);
   if (pp < 0) { fprintf(stderr, "cyclone_peer: dds_create_participant: %s\n", dds_strretcode(-pp)); return 1; }
+  for (int i = 0; i < ncalls; ++i) call_empty(pp, calls[i], i);
   for (int i = 0; i < nsubs; ++i) {
     sub_t* s = &subs[i];
     const dds_topic_descriptor_t* desc = NULL;

@@ -9,6 +9,10 @@
 //                                           odometry imu string graph;  QOS: be rel tl
 //       [--pub TOPIC=KIND:VALUES]...  twist twist_stamped float64_array string trajectory
 //       [--rate HZ]
+//       [--call SERVICE=empty]...     call a std_srvs/srv/Empty service first, as an rmw_fastrtps_cpp
+//                                     client does (reply reader GUID as the request's
+//                                     related_sample_identity; the reply matched by its
+//                                     related_sample_identity); then subscribe and publish
 //
 // Like rmw_fastrtps_cpp, the peer uses Fast DDS's default transports (UDP and shared memory; with
 // mechsim, which offers UDP only, UDP is what they share) and announces no type information.
@@ -28,6 +32,7 @@
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/rtps/common/WriteParams.h>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 #include <fastdds/dds/subscriber/Subscriber.hpp>
@@ -97,6 +102,8 @@ std::map<std::string, Fields> definitions(const std::string& distro) {
         {"time_from_start", "builtin_interfaces/Duration"}}},
       {"trajectory_msgs/JointTrajectory",
        {{"header", "std_msgs/Header"}, {"joint_names", "string[]"}, {"points", "trajectory_msgs/JointTrajectoryPoint[]"}}},
+      {"std_srvs/srv/Empty_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"std_srvs/srv/Empty_Response", {{"structure_needs_at_least_one_member", "uint8"}}},
       {"rmw_dds_common/Gid", {{"data", distro == "humble" ? "uint8[24]" : "uint8[16]"}}},
       {"rmw_dds_common/NodeEntitiesInfo",
        {{"node_namespace", "string"}, {"node_name", "string"}, {"reader_gid_seq", "rmw_dds_common/Gid[]"},
@@ -132,8 +139,11 @@ class Types {
     if (auto it = built_.find(name); it != built_.end()) return it->second;
     auto* f = types::DynamicTypeBuilderFactory::get_instance();
     types::DynamicTypeBuilder_ptr b = f->create_struct_builder();
+    // "pkg/Name" is a message (pkg::msg::dds_::Name_), "pkg/srv/Name_Request" a service's part.
     const auto slash = name.find('/');
-    b->set_name(name.substr(0, slash) + "::msg::dds_::" + name.substr(slash + 1) + "_");
+    const bool srv = name.find("/srv/") != std::string::npos;
+    b->set_name(name.substr(0, slash) + (srv ? "::srv::dds_::" : "::msg::dds_::") +
+                name.substr(name.rfind('/') + 1) + "_");
     types::MemberId id = 0;
     for (const auto& [field, type] : defs_.at(name)) b->add_member(id++, field, element(parse_type(type)));
     return built_[name] = b->build();
@@ -407,6 +417,7 @@ int main(int argc, char** argv) {
   };
   std::vector<Sub> subs;
   std::vector<Pub> pubs;
+  std::vector<std::string> calls;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
@@ -414,6 +425,14 @@ int main(int argc, char** argv) {
     else if (a == "--seconds" && more) seconds = std::atof(argv[++i]);
     else if (a == "--rate" && more) rate = std::atof(argv[++i]);
     else if (a == "--distro" && more) distro = argv[++i];
+    else if (a == "--call" && more) {
+      const std::string spec = argv[++i];
+      if (spec.size() < 7 || spec.substr(spec.size() - 6) != "=empty") {
+        std::fprintf(stderr, "fastdds_peer: --call SERVICE=empty\n");
+        return 2;
+      }
+      calls.push_back(spec.substr(0, spec.size() - 6));
+    }
     else if ((a == "--sub" || a == "--pub") && more) {
       const std::string spec = argv[++i];
       const auto eq = spec.find('=');
@@ -456,6 +475,47 @@ int main(int argc, char** argv) {
     support.register_type(pp);
     return topics[name] = pp->create_topic(name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   };
+  for (const std::string& service : calls) {
+    fdds::DataWriterQos wq = fdds::DATAWRITER_QOS_DEFAULT;  // rmw_qos_profile_services_default
+    wq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    wq.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    wq.history().depth = 10;
+    fdds::DataReaderQos rq = fdds::DATAREADER_QOS_DEFAULT;
+    rq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    rq.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    rq.history().depth = 10;
+    fdds::DataWriter* w = publisher->create_datawriter(topic_for("rq" + service + "Request", "std_srvs/srv/Empty_Request"), wq);
+    fdds::DataReader* r = subscriber->create_datareader(topic_for("rr" + service + "Reply", "std_srvs/srv/Empty_Response"), rq);
+    auto t0 = std::chrono::steady_clock::now();
+    auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+    bool available = false;
+    while (!available && since(t0) < 5.0) {
+      fdds::PublicationMatchedStatus pm;
+      fdds::SubscriptionMatchedStatus sm;
+      w->get_publication_matched_status(pm);
+      r->get_subscription_matched_status(sm);
+      available = pm.current_count > 0 && sm.current_count > 0;
+      if (!available) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    types::DynamicData_ptr request(types::DynamicDataFactory::get_instance()->create_data(types_.get("std_srvs/srv/Empty_Request")));
+    types::DynamicData_ptr reply(types::DynamicDataFactory::get_instance()->create_data(types_.get("std_srvs/srv/Empty_Response")));
+    eprosima::fastrtps::rtps::WriteParams params;
+    params.related_sample_identity().writer_guid(r->guid());
+    const auto t1 = std::chrono::steady_clock::now();
+    bool replied = false;
+    if (available && w->write(request.get(), params)) {
+      const eprosima::fastrtps::rtps::SampleIdentity id = params.sample_identity();
+      while (!replied && since(t1) < 3.0) {
+        fdds::SampleInfo info;
+        while (r->take_next_sample(reply.get(), &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+          if (info.valid_data && info.related_sample_identity == id) replied = true;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    }
+    std::printf("%s\n", json{{"service", service}, {"form", "rmw_fastrtps"}, {"available", available}, {"reply", replied},
+                             {"ms", 1e3 * since(t1)}}.dump().c_str());
+  }
   for (Sub& s : subs) {
     const Kind& k = kKinds.at(s.kind);
     fdds::DataReaderQos q = fdds::DATAREADER_QOS_DEFAULT;
