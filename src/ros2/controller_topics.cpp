@@ -11,7 +11,9 @@
 //                     ~/cmd_vel_unstamped geometry_msgs/msg/Twist         (Humble, use_stamped_vel false)
 //   TrajectoryCommand ~/joint_trajectory  trajectory_msgs/msg/JointTrajectory (joint_trajectory_controller)
 //   JointStates       joint_states        sensor_msgs/msg/JointState      (joint_state_broadcaster: in
-//                                                                           the manager's namespace)
+//                                                                           the manager's namespace;
+//                                                                           ~/joint_states with
+//                                                                           use_local_topics)
 //   Odometry          ~/odom              nav_msgs/msg/Odometry, and odom -> base on /tf unless
 //                                         enable_odom_tf is false, at publish_rate (default 50 Hz)
 //   ImuState          ~/imu               sensor_msgs/msg/Imu             (imu_sensor_broadcaster; with
@@ -101,7 +103,7 @@ std::shared_ptr<void> subscribe_command_impl(Node& node, const std::string& topi
 
 void SimNode::bind(const std::string& controller) {
   const control::Params params = bridge_->controller_params();
-  auto node = std::make_unique<Node>(*participant_, options_.robot_namespace, controller);
+  auto node = std::make_unique<Node>(*participant_, options_.robot_namespace, controller, options_.controller_remaps);
   std::vector<std::shared_ptr<Binding>> made;
   std::vector<std::string> lines;
   const Qos state_qos{Reliability::Reliable, Durability::TransientLocal, 1};
@@ -192,7 +194,9 @@ void SimNode::bind(const std::string& controller) {
         break;
       }
       case bridge::PortType::JointStates: {
-        const std::string topic = topic_for("joint_states");
+        // joint_state_broadcaster: in the manager's namespace, or its own with use_local_topics.
+        const bool local = controller_param<bool>(params, controller, "use_local_topics", false, *participant_);
+        const std::string topic = topic_for(local ? "~/joint_states" : "joint_states");
         b->joint_states = node->create_publisher<sensor_msgs::msg::JointState>(topic, state_qos);
         note(topic, "sensor_msgs/msg/JointState");
         break;

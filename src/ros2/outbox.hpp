@@ -6,10 +6,10 @@
 //
 //   - post(job): the job runs on the outbox thread, in order. A full queue (kMaxJobs) drops the
 //     newest job and counts it: the loop never waits on DDS or on a slow peer.
-//   - set_clock(t): /clock is a latest-value channel: the thread publishes the newest time it has
-//     not published yet, at most one every 0.9 ms of wall time. At real time that is every tick
-//     (1 kHz); a world running faster gets the newest time about 1100 times a wall second
-//     (coalesced; never a time older than one already sent).
+//   - set_clock(t): /clock goes through a small ring: the thread writes every time that waits, up
+//     to 1100 a wall second on average (a token bucket, bursts of 50): at real time that is every
+//     tick (1 kHz); a world running 17 times faster gets about 1100 a wall second, the newest each
+//     time (never a time older than one already sent).
 //   - end_of_tick(): wakes the thread when it sleeps and there is work: for a new clock time at
 //     most every 0.9 ms of wall time (a futex wake costs the tick a few microseconds: at real time
 //     every tick still wakes it, a world running 17 times faster does not pay it each tick).
@@ -17,6 +17,7 @@
 // Threads: post, set_clock and end_of_tick from one producer (the loop thread) or under its lock;
 // flush() from any other thread.
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -62,15 +63,21 @@ class Outbox {
   bool busy_ = false;                       // under mutex_
   OutboxStats stats_;                       // under mutex_ (the atomics below aside)
   // The clock channel and the thread's sleep, lock-free for the loop thread: the producer stores
-  // the time, then sets pending, then reads sleeping; the thread sets sleeping, then reads pending
-  // (sequentially consistent, so one of them sees the other: no lost wake-up).
-  std::atomic<double> clock_{0.0};
-  std::atomic<bool> clock_pending_{false};
+  // the time in the ring, then counts it, then reads sleeping; the thread sets sleeping, then
+  // reads the count (sequentially consistent, so one of them sees the other: no lost wake-up).
+  static constexpr std::size_t kClockRing = 64;
+  static constexpr double kClockRate = 1100.0;  // clock writes a wall second, on average
+  static constexpr double kClockBurst = 50.0;   // and at once
+  double clock_tokens_ = kClockBurst;           // the thread's
+  std::chrono::steady_clock::time_point clock_refill_ = std::chrono::steady_clock::now();
+  std::array<std::atomic<double>, kClockRing> clock_ring_{};
+  std::atomic<std::uint64_t> clock_written_{0};  // times the producer stored
+  std::uint64_t clock_read_ = 0;                 // the thread's: times it took
+  bool clock_pending() const { return clock_written_.load() != clock_read_; }
   std::atomic<bool> sleeping_{false};
   std::atomic<bool> jobs_posted_{false};
   std::atomic<std::uint64_t> coalesced_{0};
   std::chrono::steady_clock::time_point last_wake_{};   // the producer's
-  std::chrono::steady_clock::time_point last_clock_{};  // the thread's: the last /clock written
   std::thread thread_;  // last: starts once the rest exists
 };
 

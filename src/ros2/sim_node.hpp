@@ -41,6 +41,8 @@ struct NodeOptions {
   // The controller manager's namespace (gazebo_ros2_control's <ros><namespace>, or gazebo_ros_control's
   // <robotNamespace>): its node, the controllers' nodes and their topics live there.
   std::string robot_namespace = "/";
+  // Remappings applied to the controllers' nodes (gazebo_ros2_control's <ros><remapping>).
+  std::vector<Remap> controller_remaps;
   // Hz of simulated time of /clock; 0: every tick.
   double clock_rate = 0.0;
   bool publish_tf = true;

@@ -7,7 +7,8 @@
  *   cyclone_peer_<distro> --domain D --seconds S
  *       [--sub TOPIC=KIND[:QOS]]...        KIND: clock tf tf_static joint_state laser image
  *                                          camera_info odometry imu string graph
- *                                          QOS: be, rel, tl (override the kind's ROS default)
+ *                                          QOS: be, rel, tl (override the kind's ROS default), deep
+ *                                          (reliable, keep last 1000: a rate measurement)
  *       [--pub TOPIC=KIND:VALUES]...       twist:vx,vy,vz,wx,wy,wz   twist_stamped:(same)
  *                                          float64_array:v1,v2,...   string:text
  *                                          trajectory:j1,j2,...:p1,p2,...:SECONDS
@@ -329,6 +330,7 @@ static dds_qos_t* qos_for(kind_t kind, const char* override) {
     if (strcmp(override, "be") == 0) rel = DDS_RELIABILITY_BEST_EFFORT;
     else if (strcmp(override, "rel") == 0) rel = DDS_RELIABILITY_RELIABLE;
     else if (strcmp(override, "tl") == 0) { rel = DDS_RELIABILITY_RELIABLE; dur = DDS_DURABILITY_TRANSIENT_LOCAL; }
+    else if (strcmp(override, "deep") == 0) { rel = DDS_RELIABILITY_RELIABLE; depth = 1000; }  /* counts every sample */
   }
   dds_qset_reliability(q, rel, DDS_MSECS(100));
   dds_qset_durability(q, dur);
