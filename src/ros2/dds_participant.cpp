@@ -206,9 +206,16 @@ struct Participant::Impl : dds::DomainParticipantListener {
     std::vector<Guid> readers, writers;
   };
 
-  mutable std::mutex mutex;  // types, topics, nodes, graph writes
+  // Types, topics, nodes, graph writes. Held over Fast DDS calls (entity creation), so no Fast DDS
+  // callback may take it: Fast DDS calls the discovery listener with its own discovery lock held,
+  // and creating a writer takes that lock (a lock-order deadlock, seen once in 6 runs).
+  mutable std::mutex mutex;
   std::map<std::string, dds::TypeSupport> types;
   std::map<std::string, TopicEntry> topics;  // by DDS topic name
+  // What the discovery callbacks read: each topic's type (a copy of `topics`' types), under a lock
+  // of its own that is never held over a Fast DDS call.
+  mutable std::mutex topic_types_mutex;
+  std::map<std::string, std::string> topic_types;
   std::map<int, NodeEntry> nodes;
   int next_node = 1;
   dds::DataWriter* graph_writer = nullptr;
@@ -249,6 +256,10 @@ struct Participant::Impl : dds::DomainParticipantListener {
     dds::Topic* topic = participant->create_topic(dds_topic, type_name, dds::TOPIC_QOS_DEFAULT);
     if (topic == nullptr) throw std::runtime_error("Fast DDS refused topic '" + dds_topic + "'");
     topics[dds_topic] = {topic, type_name, 1};
+    {
+      std::lock_guard<std::mutex> lock(topic_types_mutex);
+      topic_types[dds_topic] = type_name;
+    }
     return topic;
   }
 
@@ -256,6 +267,10 @@ struct Participant::Impl : dds::DomainParticipantListener {
     auto it = topics.find(dds_topic);
     if (it == topics.end()) return;
     if (--it->second.users > 0) return;
+    {
+      std::lock_guard<std::mutex> lock(topic_types_mutex);
+      topic_types.erase(dds_topic);
+    }
     participant->delete_topic(it->second.topic);
     topics.erase(it);
   }
@@ -307,10 +322,10 @@ struct Participant::Impl : dds::DomainParticipantListener {
     if (remote.guidPrefix == participant->guid().guidPrefix) return;
     std::string ours;
     {
-      std::lock_guard<std::mutex> lock(mutex);
-      auto it = topics.find(topic);
-      if (it == topics.end() || it->second.type_name == type) return;
-      ours = it->second.type_name;
+      std::lock_guard<std::mutex> lock(topic_types_mutex);
+      auto it = topic_types.find(topic);
+      if (it == topic_types.end() || it->second == type) return;
+      ours = it->second;
     }
     log(topic_of(topic) + ": a peer's " + what + " (" + guid_string(to_guid(remote)) + ") uses type " + type +
         ", mechsim's is " + ours + ": they do not match, nothing passes between them");
