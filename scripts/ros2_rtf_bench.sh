@@ -22,7 +22,9 @@ log=$(mktemp -d)
 subs=${MECHSIM_ROS2_BENCH_SUBS:-"--sub /clock=clock --sub /tf=tf --sub /tf_static=tf_static --sub /cc8/joint_states=joint_state
   --sub /cc8/rover_drive_controller/odom=odometry --sub /cc8/zed2/imu/data=imu"}
 # shellcheck disable=SC2086
-"$build/bin/cyclone_peer_jazzy" --seconds $((seconds * 4 + 120)) $subs > "$log/peer.log" 2>&1 &
+# The peer counts without decoding, in a session of its own (its CPU is not the layer's: the
+# kernel's autogroup would otherwise share one CPU slice between it and mechsim).
+setsid "$build/bin/cyclone_peer_jazzy" --count-only --seconds $((seconds * 4 + 120)) $subs > "$log/peer.log" 2>&1 &
 peer=$!
 "$build/bin/mechsim" ros2 robots/cc8/urdf/cc8.urdf.xacro --package mechsim_cc8=robots/cc8 \
   --controllers robots/cc8/config/controllers.yaml --world mars_yard_2024 --bench-rtf "$seconds" ${MECHSIM_ROS2_BENCH_ARGS:-} | grep -v "topic "

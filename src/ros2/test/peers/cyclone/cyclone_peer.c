@@ -15,6 +15,8 @@
  *       [--rate HZ]                        publishing rate (default 20)
  *       [--save-image FILE.ppm]            the last image received, as a binary PPM
  *       [--endpoints]                      print the USER_DATA of every peer writer (type hashes)
+ *       [--count-only]                     count samples without decoding them (a light
+ *                                          subscriber for benchmarks)
  *       [--call SERVICE=empty]...          call a std_srvs/srv/Empty service first, as an
  *                                          rmw_cyclonedds_cpp client does (header in the payload,
  *                                          "clientid=" USER_DATA); prints {"service":...,"reply":...}
@@ -148,6 +150,7 @@ static void put_doubles(buf_t* b, const double* v, size_t n) {
 }
 
 static const char* save_image_path = NULL;
+static int count_only = 0;
 
 /* The sample as JSON: what a test checks. */
 static char* describe(kind_t kind, const void* sample) {
@@ -556,6 +559,7 @@ int main(int argc, char** argv) {
     else if (strcmp(a, "--rate") == 0 && v) rate = atof(argv[++i]);
     else if (strcmp(a, "--save-image") == 0 && v) save_image_path = argv[++i];
     else if (strcmp(a, "--endpoints") == 0) endpoints = 1;
+    else if (strcmp(a, "--count-only") == 0) count_only = 1;
     else if (strcmp(a, "--call") == 0 && v && ncalls < MAX_TOPICS) {
       char* spec = argv[++i];
       char* eq = strchr(spec, '=');
@@ -650,6 +654,7 @@ int main(int argc, char** argv) {
           s->last_wall = t;
           ++s->count;
           /* Every sample decoded; the first 3 printed, the last kept for the summary. */
+          if (count_only && s->count > 1) continue;
           if (s->kind == K_TF || s->kind == K_TF_STATIC) note_children(s, samples[j]);
           char* text = describe(s->kind, samples[j]);
           if (s->count <= 3) printf("{\"topic\":\"%s\",\"n\":%ld,\"sample\":%s}\n", s->topic, s->count, text);
