@@ -82,26 +82,26 @@ void Outbox::run() {
     }
     busy_ = true;
     const std::uint64_t written = clock_written_.load();
-    if (written != clock_read_) {
+    if (written != clock_read_.load()) {
       // A token bucket of kClockRate a second (kClockBurst deep): every waiting time in order
       // while tokens last (at real time, every tick, bursts included); short of them the newest
       // alone, as soon as there is one.
       const auto now = std::chrono::steady_clock::now();
       clock_tokens_ = std::min(kClockBurst, clock_tokens_ + kClockRate * std::chrono::duration<double>(now - clock_refill_).count());
       clock_refill_ = now;
-      const std::uint64_t waiting = written - clock_read_;
+      const std::uint64_t waiting = written - clock_read_.load();
       if (clock_tokens_ < 1.0 && jobs_.empty() && !stop_) {
         wake_.wait_for(lock, std::chrono::duration<double>((1.0 - clock_tokens_) / kClockRate),
                        [this] { return stop_ || !jobs_.empty(); });
         continue;
       }
-      std::uint64_t from = clock_read_;
+      std::uint64_t from = clock_read_.load();
       if (waiting > kClockRing || static_cast<double>(waiting) > clock_tokens_) {
         coalesced_.fetch_add(waiting - 1, std::memory_order_relaxed);
         from = written - 1;
       }
       clock_tokens_ -= static_cast<double>(written - from);
-      clock_read_ = written;
+      clock_read_.store(written);
       stats_.clocks += written - from;
       lock.unlock();
       for (std::uint64_t k = from; k < written; ++k) publish_clock_(clock_ring_[k % kClockRing].load(std::memory_order_relaxed));

@@ -72,8 +72,8 @@ class Outbox {
   std::chrono::steady_clock::time_point clock_refill_ = std::chrono::steady_clock::now();
   std::array<std::atomic<double>, kClockRing> clock_ring_{};
   std::atomic<std::uint64_t> clock_written_{0};  // times the producer stored
-  std::uint64_t clock_read_ = 0;                 // the thread's: times it took
-  bool clock_pending() const { return clock_written_.load() != clock_read_; }
+  std::atomic<std::uint64_t> clock_read_{0};     // times the thread took
+  bool clock_pending() const { return clock_written_.load() != clock_read_.load(); }
   std::atomic<bool> sleeping_{false};
   std::atomic<bool> jobs_posted_{false};
   std::atomic<std::uint64_t> coalesced_{0};
