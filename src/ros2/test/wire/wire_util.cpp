@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <sched.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -79,6 +80,8 @@ Process::Process(const std::vector<std::string>& argv, const std::string& log, c
   pid_ = fork();
   if (pid_ == 0) {
     setpgid(0, 0);
+    // Gone with the test: a test killed by its timeout leaves no mechsim or peer running.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
       dup2(fd, 1);

@@ -39,7 +39,8 @@ class PrivateNetwork {
 };
 
 // A child process with stdout and stderr in `log` (a file). The destructor stops it (SIGTERM, then
-// SIGKILL after 3 s) and reaps it, so a failing test leaves nothing running.
+// SIGKILL) and reaps it, so a failing test leaves nothing running; a test killed outright (its
+// CTest timeout) takes its children with it (PR_SET_PDEATHSIG).
 class Process {
  public:
   Process(const std::vector<std::string>& argv, const std::string& log, const std::map<std::string, std::string>& env = {});
