@@ -1,5 +1,6 @@
 # Checks that every #include under src/ follows ../shared/DESIGN.md's layer map: a layer includes
-# itself and the layers below it only; only physics/ includes MuJoCo; only ros/ includes ROS.
+# itself and the layers below it only; only physics/ includes MuJoCo; only ros/ includes ROS; only
+# ros2/ includes DDS.
 # Run by CTest (test `layer_includes`) and by hand:
 #   cmake -DSRC=src -P cmake/CheckLayerIncludes.cmake
 # Tests and benchmarks of a layer count as that layer. A folder under src/ that is not in the
@@ -27,8 +28,10 @@ set(deps_web sim)
 # bridge/: the Gazebo world and controller-manager API both ROS bindings map their messages onto.
 set(deps_bridge sim sensors controllers live)
 set(deps_ros bridge sim sensors controllers live)
-set(deps_apps description mechanism control controllers physics sensors sim batch live web bridge ros)
-set(layers description mechanism control controllers physics sensors sim batch live web bridge ros apps)
+# ros2/: ROS 2 on the wire (DDS), a binding of bridge/ as ros/ is.
+set(deps_ros2 bridge sim sensors controllers live)
+set(deps_apps description mechanism control controllers physics sensors sim batch live web bridge ros ros2)
+set(layers description mechanism control controllers physics sensors sim batch live web bridge ros ros2 apps)
 
 # What each layer may include: itself and everything its dependencies reach.
 foreach(layer IN LISTS layers)
@@ -49,6 +52,9 @@ endforeach()
 set(ros_roots ros actionlib actionlib_msgs control_msgs controller_manager_msgs geometry_msgs
     nav_msgs pr2_controllers_msgs pr2_mechanism_msgs rosgraph_msgs sensor_msgs std_msgs std_srvs
     tf tf2 tf2_msgs tf2_ros topic_tools trajectory_msgs xmlrpcpp)
+# DDS: Fast DDS (fastdds, fastrtps, fastcdr), Cyclone DDS (dds, ddsc, idl: the test peers), and
+# the ROS 2 message code generated from src/ros2/msgs (mechsim_ros2_msgs).
+set(dds_roots fastdds fastrtps fastcdr foonathan dds ddsc idl mechsim_ros2_msgs)
 
 set(violations "")  # one line each
 set(count 0)
@@ -85,6 +91,9 @@ foreach(rel IN LISTS files)
         math(EXPR count "${count} + 1")
       elseif(root IN_LIST ros_roots AND NOT layer STREQUAL "ros")
         string(APPEND violations "\nsrc/${rel}: includes <${target}>; only ros/ includes ROS headers")
+        math(EXPR count "${count} + 1")
+      elseif(root IN_LIST dds_roots AND NOT layer STREQUAL "ros2")
+        string(APPEND violations "\nsrc/${rel}: includes <${target}>; only ros2/ includes DDS headers")
         math(EXPR count "${count} + 1")
       endif()
     endif()

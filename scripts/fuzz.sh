@@ -22,7 +22,7 @@ scripts/install-deps.sh --with-fuzz
 build=build/fuzz
 # -O1 keeps asserts and sanitizer reports readable and fuzzes at nearly full speed.
 cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O1 \
-  -DMECHSIM_FUZZ=ON -DMECHSIM_ROS=OFF -DMECHSIM_BENCHMARKS=OFF -DMECHSIM_WERROR=OFF >/dev/null
+  -DMECHSIM_FUZZ=ON -DMECHSIM_ROS=OFF -DMECHSIM_ROS2=OFF -DMECHSIM_BENCHMARKS=OFF -DMECHSIM_WERROR=OFF >/dev/null
 mapfile -t all < <(ninja -C "$build" -t targets all | sed -n 's/^\([a-z0-9]*_fuzz\): phony$/\1/p' | sort -u)
 if [[ "$which" == all ]]; then
   targets=("${all[@]}")

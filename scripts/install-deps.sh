@@ -67,7 +67,12 @@ if ((with_ros)); then
              ros-robot-state-publisher ros-image-proc ros-stereo-image-proc libdiagnostic-aggregator-tools
              libdiagnostic-aggregator-dev libstereo-image-proc-dev
              # stereo_image_proc.launch runs its nodelets through the nodelet tool.
-             libnodeletlib-tools)
+             libnodeletlib-tools
+             # src/ros2 (ROS 2 on the wire, no ROS 2 installed): eProsima Fast DDS, the library
+             # under rmw_fastrtps_cpp; its tests' peers on Eclipse Cyclone DDS (the library under
+             # rmw_cyclonedds_cpp, with its IDL compiler idlc) and `ip` for the private network
+             # namespace each test makes.
+             libfastrtps-dev libfastcdr-dev cyclonedds-dev cyclonedds-tools libcycloneddsidl0 iproute2)
 fi
 
 missing=()
@@ -90,6 +95,14 @@ web="$(cd "$(dirname "$0")/.." && pwd)/web"
 if [[ ! -f "$web/node_modules/.package-lock.json" || "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]]; then
   echo "install-deps: npm ci in $web" >&2
   (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+fi
+# The ROS 2 layer's @foxglove/ros2 test peer (src/ros2/test/peers/foxglove, its own package-lock).
+if ((with_ros)); then
+  peer="$(cd "$(dirname "$0")/.." && pwd)/src/ros2/test/peers/foxglove"
+  if [[ -f "$peer/package-lock.json" && ( ! -f "$peer/node_modules/.package-lock.json" || "$peer/package-lock.json" -nt "$peer/node_modules/.package-lock.json" ) ]]; then
+    echo "install-deps: npm ci in $peer" >&2
+    (cd "$peer" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
 fi
 }
 if ((${#missing[@]} == 0)); then

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh Debian 12 machine: installs what it needs (ROS 1 included,
 # for the optional ROS layer), builds the release flavour and runs every test (unit, conformance,
-# scenario, cli, ros, slurm: a single-node Slurm the test starts), then builds the unit-test
-# programs with AddressSanitizer + UBSan and runs the unit tests there, then fuzzes the readers of
+# scenario, cli, ros, ros2 (DDS peers in private network namespaces), slurm: a single-node Slurm the
+# test starts), then builds the unit-test programs with AddressSanitizer + UBSan and runs the unit
+# tests there, then fuzzes the readers of
 # robot descriptions and controller parameters for a short fixed budget.
 # Each stage's time and ccache's hit rate are printed at the end (scripts/stages.sh).
 set -euo pipefail
@@ -17,6 +18,12 @@ stage release-build scripts/build.sh release
 grep -qx 'MECHSIM_ROS_ENABLED:INTERNAL=ON' build/release/CMakeCache.txt || {
   echo "test.sh: build/release was configured without the ROS layer although ROS is installed" \
        "(MECHSIM_ROS=OFF set by hand? configure with -DMECHSIM_ROS=AUTO)" >&2
+  exit 1
+}
+# The ROS 2 layer likewise (Fast DDS comes with --with-ros).
+grep -qx 'MECHSIM_ROS2_ENABLED:INTERNAL=ON' build/release/CMakeCache.txt || {
+  echo "test.sh: build/release was configured without the ROS 2 layer although Fast DDS is installed" \
+       "(MECHSIM_ROS2=OFF set by hand? configure with -DMECHSIM_ROS2=AUTO)" >&2
   exit 1
 }
 stage tests ctest --test-dir build/release --output-on-failure -j 2

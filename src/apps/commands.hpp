@@ -30,5 +30,6 @@ void add_spawner_command(CLI::App& app, CommandResult& result);  // ROS builds: 
 void add_bench_command(CLI::App& app, CommandResult& result);
 void add_sweep_command(CLI::App& app, CommandResult& result);
 void add_view_command(CLI::App& app, CommandResult& result);
+void add_ros2_command(CLI::App& app, CommandResult& result);  // ROS 2 builds: src/ros2
 
 }  // namespace mechsim::apps

@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
   add_bench_command(app, result);
   add_sweep_command(app, result);
   add_view_command(app, result);
+  add_ros2_command(app, result);
   if (unknown_subcommand(app, argc, argv)) return 1;
   try {
     app.parse(argc, argv);

@@ -182,6 +182,12 @@ struct SensorPlugin {
   std::string topic;            // relative to robot_namespace unless it starts with '/'
   std::string frame;            // header.frame_id
   std::map<std::string, std::string> parameters;  // every simple child element: name -> text
+  // gazebo_ros (ROS 2) plugins' <ros> block: <namespace>, and each <remapping> (and <argument>
+  // of the form from:=to) as "from:=to". `ros2_block` tells whether the plugin has one; the ROS 2
+  // layer names the plugin's topics the ROS 2 way when it does (src/ros2/plugin_names.hpp).
+  bool ros2_block = false;
+  std::string ros2_namespace;
+  std::vector<std::string> ros2_remappings;
   // Set when mechsim simulates the sensor but has no ROS output for this plugin.
   std::string unsupported;
   int line = 0;

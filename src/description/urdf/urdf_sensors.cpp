@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string_view>
 
 namespace mechsim::description::detail {
@@ -41,6 +42,27 @@ std::string param(const std::map<std::string, std::string>& p, const std::string
   return it != p.end() ? it->second : fallback;
 }
 
+// gazebo_ros' <ros> block (gazebo_ros/node.cpp reads <namespace>, <remapping> and, in Dashing's
+// style, <argument>s such as "__ns:=/x" or "~/out:=scan").
+void read_ros2_block(const XmlNode& e, SensorPlugin& plugin) {
+  const XmlNode* ros = e.child("ros");
+  if (ros == nullptr) return;
+  plugin.ros2_block = true;
+  for (const XmlNode& c : ros->children) {
+    if (c.name == "namespace") {
+      plugin.ros2_namespace = c.text;
+    } else if (c.name == "remapping" || c.name == "argument") {
+      // An <argument> may hold "--ros-args -r a:=b": every token with ":=" is a rule.
+      std::string token;
+      std::istringstream words(c.text);
+      while (words >> token) {
+        if (token.rfind("__ns:=", 0) == 0) plugin.ros2_namespace = token.substr(6);
+        else if (token.find(":=") != std::string::npos) plugin.ros2_remappings.push_back(token);
+      }
+    }
+  }
+}
+
 SensorPlugin read_plugin_element(const XmlNode& e, const SensorFields& f) {
   SensorPlugin plugin;
   plugin.name = e.attribute("name").value_or("");
@@ -50,6 +72,7 @@ SensorPlugin read_plugin_element(const XmlNode& e, const SensorFields& f) {
   for (const XmlNode& c : e.children)
     if (c.children.empty()) plugin.parameters[c.name] = c.text;
   plugin.robot_namespace = param(plugin.parameters, "robotNamespace", "");
+  read_ros2_block(e, plugin);
   return plugin;
 }
 

@@ -1,0 +1,589 @@
+// A ROS 2 peer on eProsima Fast DDS (Debian's libfastrtps-dev: the library under
+// rmw_fastrtps_cpp) for mechsim's ROS 2 wire tests. Its messages are Fast DDS's own DynamicData,
+// built at run time from the official ROS 2 field lists below and serialized by Fast DDS: nothing
+// of mechsim's generated message code. Same command line and JSON-lines output as the Cyclone
+// peer (../cyclone/cyclone_peer.c):
+//
+//   fastdds_peer --domain D --seconds S [--distro humble|jazzy]
+//       [--sub TOPIC=KIND[:QOS]]...   KIND: clock tf tf_static joint_state laser image camera_info
+//                                           odometry imu string graph;  QOS: be rel tl
+//       [--pub TOPIC=KIND:VALUES]...  twist twist_stamped float64_array string trajectory
+//       [--rate HZ]
+//       [--call SERVICE=empty]...     call a std_srvs/srv/Empty service first, as an rmw_fastrtps_cpp
+//                                     client does (reply reader GUID as the request's
+//                                     related_sample_identity; the reply matched by its
+//                                     related_sample_identity); then subscribe and publish
+//
+// Like rmw_fastrtps_cpp, the peer uses Fast DDS's default transports (UDP and shared memory; with
+// mechsim, which offers UDP only, UDP is what they share) and announces no type information.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/rtps/common/WriteParams.h>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastrtps/types/DynamicDataFactory.h>
+#include <fastrtps/types/DynamicPubSubType.h>
+#include <fastrtps/types/DynamicTypeBuilderFactory.h>
+#include <fastrtps/types/DynamicTypeBuilderPtr.h>
+#include <nlohmann/json.hpp>
+
+namespace fdds = eprosima::fastdds::dds;
+namespace types = eprosima::fastrtps::types;
+using nlohmann::json;
+
+namespace {
+
+// ROS 2 message fields, from the official .msg files (Humble and Jazzy have the same ones, but
+// rmw_dds_common/Gid: 24 bytes in Humble, 16 from Iron on).
+using Fields = std::vector<std::pair<std::string, std::string>>;
+std::map<std::string, Fields> definitions(const std::string& distro) {
+  return {
+      {"builtin_interfaces/Time", {{"sec", "int32"}, {"nanosec", "uint32"}}},
+      {"builtin_interfaces/Duration", {{"sec", "int32"}, {"nanosec", "uint32"}}},
+      {"rosgraph_msgs/Clock", {{"clock", "builtin_interfaces/Time"}}},
+      {"std_msgs/Header", {{"stamp", "builtin_interfaces/Time"}, {"frame_id", "string"}}},
+      {"std_msgs/String", {{"data", "string"}}},
+      {"std_msgs/MultiArrayDimension", {{"label", "string"}, {"size", "uint32"}, {"stride", "uint32"}}},
+      {"std_msgs/MultiArrayLayout", {{"dim", "std_msgs/MultiArrayDimension[]"}, {"data_offset", "uint32"}}},
+      {"std_msgs/Float64MultiArray", {{"layout", "std_msgs/MultiArrayLayout"}, {"data", "float64[]"}}},
+      {"geometry_msgs/Vector3", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}}},
+      {"geometry_msgs/Point", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}}},
+      {"geometry_msgs/Quaternion", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}, {"w", "float64"}}},
+      {"geometry_msgs/Pose", {{"position", "geometry_msgs/Point"}, {"orientation", "geometry_msgs/Quaternion"}}},
+      {"geometry_msgs/PoseWithCovariance", {{"pose", "geometry_msgs/Pose"}, {"covariance", "float64[36]"}}},
+      {"geometry_msgs/Twist", {{"linear", "geometry_msgs/Vector3"}, {"angular", "geometry_msgs/Vector3"}}},
+      {"geometry_msgs/TwistStamped", {{"header", "std_msgs/Header"}, {"twist", "geometry_msgs/Twist"}}},
+      {"geometry_msgs/TwistWithCovariance", {{"twist", "geometry_msgs/Twist"}, {"covariance", "float64[36]"}}},
+      {"geometry_msgs/Transform", {{"translation", "geometry_msgs/Vector3"}, {"rotation", "geometry_msgs/Quaternion"}}},
+      {"geometry_msgs/TransformStamped",
+       {{"header", "std_msgs/Header"}, {"child_frame_id", "string"}, {"transform", "geometry_msgs/Transform"}}},
+      {"tf2_msgs/TFMessage", {{"transforms", "geometry_msgs/TransformStamped[]"}}},
+      {"sensor_msgs/JointState",
+       {{"header", "std_msgs/Header"}, {"name", "string[]"}, {"position", "float64[]"}, {"velocity", "float64[]"},
+        {"effort", "float64[]"}}},
+      {"sensor_msgs/LaserScan",
+       {{"header", "std_msgs/Header"}, {"angle_min", "float32"}, {"angle_max", "float32"}, {"angle_increment", "float32"},
+        {"time_increment", "float32"}, {"scan_time", "float32"}, {"range_min", "float32"}, {"range_max", "float32"},
+        {"ranges", "float32[]"}, {"intensities", "float32[]"}}},
+      {"sensor_msgs/Image",
+       {{"header", "std_msgs/Header"}, {"height", "uint32"}, {"width", "uint32"}, {"encoding", "string"},
+        {"is_bigendian", "uint8"}, {"step", "uint32"}, {"data", "uint8[]"}}},
+      {"sensor_msgs/RegionOfInterest",
+       {{"x_offset", "uint32"}, {"y_offset", "uint32"}, {"height", "uint32"}, {"width", "uint32"}, {"do_rectify", "bool"}}},
+      {"sensor_msgs/CameraInfo",
+       {{"header", "std_msgs/Header"}, {"height", "uint32"}, {"width", "uint32"}, {"distortion_model", "string"},
+        {"d", "float64[]"}, {"k", "float64[9]"}, {"r", "float64[9]"}, {"p", "float64[12]"}, {"binning_x", "uint32"},
+        {"binning_y", "uint32"}, {"roi", "sensor_msgs/RegionOfInterest"}}},
+      {"sensor_msgs/Imu",
+       {{"header", "std_msgs/Header"}, {"orientation", "geometry_msgs/Quaternion"}, {"orientation_covariance", "float64[9]"},
+        {"angular_velocity", "geometry_msgs/Vector3"}, {"angular_velocity_covariance", "float64[9]"},
+        {"linear_acceleration", "geometry_msgs/Vector3"}, {"linear_acceleration_covariance", "float64[9]"}}},
+      {"nav_msgs/Odometry",
+       {{"header", "std_msgs/Header"}, {"child_frame_id", "string"}, {"pose", "geometry_msgs/PoseWithCovariance"},
+        {"twist", "geometry_msgs/TwistWithCovariance"}}},
+      {"trajectory_msgs/JointTrajectoryPoint",
+       {{"positions", "float64[]"}, {"velocities", "float64[]"}, {"accelerations", "float64[]"}, {"effort", "float64[]"},
+        {"time_from_start", "builtin_interfaces/Duration"}}},
+      {"trajectory_msgs/JointTrajectory",
+       {{"header", "std_msgs/Header"}, {"joint_names", "string[]"}, {"points", "trajectory_msgs/JointTrajectoryPoint[]"}}},
+      {"std_srvs/srv/Empty_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"std_srvs/srv/Empty_Response", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"rmw_dds_common/Gid", {{"data", distro == "humble" ? "uint8[24]" : "uint8[16]"}}},
+      {"rmw_dds_common/NodeEntitiesInfo",
+       {{"node_namespace", "string"}, {"node_name", "string"}, {"reader_gid_seq", "rmw_dds_common/Gid[]"},
+        {"writer_gid_seq", "rmw_dds_common/Gid[]"}}},
+      {"rmw_dds_common/ParticipantEntitiesInfo",
+       {{"gid", "rmw_dds_common/Gid"}, {"node_entities_info_seq", "rmw_dds_common/NodeEntitiesInfo[]"}}},
+  };
+}
+
+struct FieldType {
+  std::string base;  // int32, float64, string, pkg/Name, ...
+  enum { Single, Array, Sequence } container = Single;
+  std::uint32_t size = 0;
+};
+
+FieldType parse_type(const std::string& t) {
+  FieldType f;
+  const auto bracket = t.find('[');
+  f.base = t.substr(0, bracket);
+  if (bracket != std::string::npos) {
+    const std::string inside = t.substr(bracket + 1, t.size() - bracket - 2);
+    f.container = inside.empty() ? FieldType::Sequence : FieldType::Array;
+    if (!inside.empty()) f.size = static_cast<std::uint32_t>(std::stoul(inside));
+  }
+  return f;
+}
+
+class Types {
+ public:
+  explicit Types(const std::string& distro) : defs_(definitions(distro)) {}
+  // The DynamicType of a message ("sensor_msgs/Image"), named as rmw names it on the wire.
+  types::DynamicType_ptr get(const std::string& name) {
+    if (auto it = built_.find(name); it != built_.end()) return it->second;
+    auto* f = types::DynamicTypeBuilderFactory::get_instance();
+    types::DynamicTypeBuilder_ptr b = f->create_struct_builder();
+    // "pkg/Name" is a message (pkg::msg::dds_::Name_), "pkg/srv/Name_Request" a service's part.
+    const auto slash = name.find('/');
+    const bool srv = name.find("/srv/") != std::string::npos;
+    b->set_name(name.substr(0, slash) + (srv ? "::srv::dds_::" : "::msg::dds_::") +
+                name.substr(name.rfind('/') + 1) + "_");
+    types::MemberId id = 0;
+    for (const auto& [field, type] : defs_.at(name)) b->add_member(id++, field, element(parse_type(type)));
+    return built_[name] = b->build();
+  }
+  const Fields& fields(const std::string& name) const { return defs_.at(name); }
+
+ private:
+  types::DynamicType_ptr primitive(const std::string& t) {
+    auto* f = types::DynamicTypeBuilderFactory::get_instance();
+    if (t == "int32") return f->create_int32_type();
+    if (t == "uint32") return f->create_uint32_type();
+    if (t == "float32") return f->create_float32_type();
+    if (t == "float64") return f->create_float64_type();
+    if (t == "uint8") return f->create_byte_type();  // octet: the same byte on the wire
+    if (t == "bool") return f->create_bool_type();
+    if (t == "string") return f->create_string_type();
+    return get(t);
+  }
+  types::DynamicType_ptr element(const FieldType& t) {
+    auto* f = types::DynamicTypeBuilderFactory::get_instance();
+    types::DynamicType_ptr e = primitive(t.base);
+    if (t.container == FieldType::Array) return f->create_array_builder(e, {t.size})->build();
+    if (t.container == FieldType::Sequence) return f->create_sequence_builder(e)->build();
+    return e;
+  }
+  std::map<std::string, Fields> defs_;
+  std::map<std::string, types::DynamicType_ptr> built_;
+};
+
+// ---- DynamicData <-> JSON, field by field along the definitions
+json read_value(Types& t, types::DynamicData* d, types::MemberId id, const std::string& base) {
+  if (base == "int32") return d->get_int32_value(id);
+  if (base == "uint32") return d->get_uint32_value(id);
+  if (base == "float32") return d->get_float32_value(id);
+  if (base == "float64") return d->get_float64_value(id);
+  if (base == "uint8") return d->get_byte_value(id);
+  if (base == "bool") return d->get_bool_value(id);
+  if (base == "string") return d->get_string_value(id);
+  types::DynamicData* nested = d->loan_value(id);
+  json out = json::object();
+  types::MemberId k = 0;
+  for (const auto& [field, type] : t.fields(base)) {
+    const FieldType ft = parse_type(type);
+    if (ft.container == FieldType::Single) {
+      out[field] = read_value(t, nested, k, ft.base);
+    } else {
+      types::DynamicData* seq = nested->loan_value(k);
+      json items = json::array();
+      for (std::uint32_t i = 0; i < seq->get_item_count(); ++i) items.push_back(read_value(t, seq, i, ft.base));
+      nested->return_loaned_value(seq);
+      out[field] = items;
+    }
+    ++k;
+  }
+  d->return_loaned_value(nested);
+  return out;
+}
+
+json read_message(Types& t, types::DynamicData* d, const std::string& name) {
+  json out = json::object();
+  types::MemberId k = 0;
+  for (const auto& [field, type] : t.fields(name)) {
+    const FieldType ft = parse_type(type);
+    if (ft.container == FieldType::Single) {
+      out[field] = read_value(t, d, k, ft.base);
+    } else {
+      types::DynamicData* seq = d->loan_value(k);
+      json items = json::array();
+      for (std::uint32_t i = 0; i < seq->get_item_count(); ++i) items.push_back(read_value(t, seq, i, ft.base));
+      d->return_loaned_value(seq);
+      out[field] = items;
+    }
+    ++k;
+  }
+  return out;
+}
+
+void write_message(Types& t, types::DynamicData* d, const std::string& name, const json& v);
+
+void write_value(Types& t, types::DynamicData* d, types::MemberId id, const std::string& base, const json& v) {
+  if (base == "int32") d->set_int32_value(v.get<std::int32_t>(), id);
+  else if (base == "uint32") d->set_uint32_value(v.get<std::uint32_t>(), id);
+  else if (base == "float32") d->set_float32_value(v.get<float>(), id);
+  else if (base == "float64") d->set_float64_value(v.get<double>(), id);
+  else if (base == "string") d->set_string_value(v.get<std::string>(), id);
+  else if (base == "bool") d->set_bool_value(v.get<bool>(), id);
+  else if (base == "uint8") d->set_byte_value(v.get<std::uint8_t>(), id);
+  else {
+    types::DynamicData* nested = d->loan_value(id);
+    write_message(t, nested, base, v);
+    d->return_loaned_value(nested);
+  }
+}
+
+void write_message(Types& t, types::DynamicData* d, const std::string& name, const json& v) {
+  types::MemberId k = 0;
+  for (const auto& [field, type] : t.fields(name)) {
+    const FieldType ft = parse_type(type);
+    if (v.contains(field)) {
+      if (ft.container == FieldType::Single) {
+        write_value(t, d, k, ft.base, v[field]);
+      } else if (ft.container == FieldType::Sequence) {
+        types::DynamicData* seq = d->loan_value(k);
+        for (const json& item : v[field]) {
+          types::MemberId index = 0;
+          if (ft.base == "float64") seq->insert_float64_value(item.get<double>(), index);
+          else if (ft.base == "string") seq->insert_string_value(item.get<std::string>(), index);
+          else {
+            types::DynamicData* element = types::DynamicDataFactory::get_instance()->create_data(t.get(ft.base));
+            write_message(t, element, ft.base, item);
+            seq->insert_complex_value(element, index);
+          }
+        }
+        d->return_loaned_value(seq);
+      }
+    }
+    ++k;
+  }
+}
+
+// ---- what a test checks, in the Cyclone peer's form
+json time_of(const json& t) { return {{"sec", t["sec"]}, {"nanosec", t["nanosec"]}}; }
+json header_of(const json& h) { return {{"stamp", time_of(h["stamp"])}, {"frame_id", h["frame_id"]}}; }
+json xyz(const json& v) { return json::array({v["x"], v["y"], v["z"]}); }
+json xyzw(const json& v) { return json::array({v["x"], v["y"], v["z"], v["w"]}); }
+
+json describe(const std::string& kind, const json& m) {
+  auto with_header = [&](json out) {
+    const json h = header_of(m["header"]);
+    out["stamp"] = h["stamp"];
+    out["frame_id"] = h["frame_id"];
+    return out;
+  };
+  if (kind == "clock") return {{"clock", time_of(m["clock"])}};
+  if (kind == "tf" || kind == "tf_static") {
+    json transforms = json::array();
+    for (const json& t : m["transforms"]) {
+      json one = header_of(t["header"]);
+      one["child"] = t["child_frame_id"];
+      one["t"] = xyz(t["transform"]["translation"]);
+      one["q"] = xyzw(t["transform"]["rotation"]);
+      transforms.push_back(one);
+    }
+    return {{"count", m["transforms"].size()}, {"transforms", transforms}};
+  }
+  if (kind == "joint_state") return with_header({{"name", m["name"]}, {"position", m["position"]}, {"velocity", m["velocity"]}});
+  if (kind == "laser") {
+    double lo = 1e30, hi = -1e30;
+    int finite = 0;
+    for (const json& r : m["ranges"]) {
+      const double v = r.get<double>();
+      if (std::isfinite(v)) {
+        ++finite;
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    }
+    return with_header({{"angle_min", m["angle_min"]}, {"angle_max", m["angle_max"]}, {"angle_increment", m["angle_increment"]},
+                        {"range_min", m["range_min"]}, {"range_max", m["range_max"]}, {"ranges", m["ranges"].size()},
+                        {"finite", finite}, {"nearest", finite ? lo : -1.0}, {"farthest", finite ? hi : -1.0}});
+  }
+  if (kind == "image") {
+    double sum = 0;
+    for (const json& b : m["data"]) sum += b.get<double>();
+    const std::size_t n = m["data"].size();
+    return with_header({{"height", m["height"]}, {"width", m["width"]}, {"encoding", m["encoding"]}, {"step", m["step"]},
+                        {"bytes", n}, {"mean", n ? sum / static_cast<double>(n) : 0.0}});
+  }
+  if (kind == "camera_info") {
+    return with_header({{"height", m["height"]}, {"width", m["width"]}, {"distortion_model", m["distortion_model"]},
+                        {"d", m["d"]}, {"k", m["k"]}, {"p", m["p"]}});
+  }
+  if (kind == "odometry") {
+    return with_header({{"child_frame_id", m["child_frame_id"]}, {"position", xyz(m["pose"]["pose"]["position"])},
+                        {"orientation", xyzw(m["pose"]["pose"]["orientation"])}, {"linear", xyz(m["twist"]["twist"]["linear"])},
+                        {"angular", xyz(m["twist"]["twist"]["angular"])}});
+  }
+  if (kind == "imu") return with_header({{"orientation", xyzw(m["orientation"])}, {"linear_acceleration", xyz(m["linear_acceleration"])}});
+  if (kind == "string") {
+    const std::string s = m["data"];
+    return {{"length", s.size()}, {"head", s.substr(0, 80)}};
+  }
+  if (kind == "graph") {
+    std::string gid;
+    char hex[3];
+    for (const json& b : m["gid"]["data"]) {
+      std::snprintf(hex, sizeof hex, "%02x", b.get<unsigned>());
+      gid += hex;
+    }
+    json nodes = json::array();
+    for (const json& n : m["node_entities_info_seq"]) {
+      nodes.push_back({{"namespace", n["node_namespace"]}, {"name", n["node_name"]}, {"readers", n["reader_gid_seq"].size()},
+                       {"writers", n["writer_gid_seq"].size()}});
+    }
+    return {{"gid_size", m["gid"]["data"].size()}, {"gid", gid}, {"nodes", nodes}};
+  }
+  return json::object();
+}
+
+struct Kind {
+  std::string type;  // "sensor_msgs/Image"
+  char reliability;  // 'r' reliable, 'b' best effort
+  bool transient_local;
+  int depth;
+};
+const std::map<std::string, Kind> kKinds = {
+    {"clock", {"rosgraph_msgs/Clock", 'b', false, 1}},        {"tf", {"tf2_msgs/TFMessage", 'r', false, 100}},
+    {"tf_static", {"tf2_msgs/TFMessage", 'r', true, 100}},    {"joint_state", {"sensor_msgs/JointState", 'r', false, 10}},
+    {"laser", {"sensor_msgs/LaserScan", 'b', false, 5}},      {"image", {"sensor_msgs/Image", 'b', false, 5}},
+    {"camera_info", {"sensor_msgs/CameraInfo", 'b', false, 5}}, {"odometry", {"nav_msgs/Odometry", 'r', false, 10}},
+    {"imu", {"sensor_msgs/Imu", 'b', false, 5}},              {"string", {"std_msgs/String", 'r', true, 1}},
+    {"graph", {"rmw_dds_common/ParticipantEntitiesInfo", 'r', true, 1}},
+    {"twist", {"geometry_msgs/Twist", 'r', false, 10}},       {"twist_stamped", {"geometry_msgs/TwistStamped", 'r', false, 10}},
+    {"float64_array", {"std_msgs/Float64MultiArray", 'r', false, 10}},
+    {"trajectory", {"trajectory_msgs/JointTrajectory", 'r', false, 10}},
+};
+
+std::vector<double> doubles(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream s(text);
+  std::string item;
+  while (std::getline(s, item, ',')) out.push_back(std::stod(item));
+  return out;
+}
+
+// The command a --pub VALUES string stands for.
+json command(const std::string& kind, const std::string& values) {
+  if (kind == "twist" || kind == "twist_stamped") {
+    std::vector<double> v = doubles(values);
+    v.resize(6, 0.0);
+    const json twist = {{"linear", {{"x", v[0]}, {"y", v[1]}, {"z", v[2]}}}, {"angular", {{"x", v[3]}, {"y", v[4]}, {"z", v[5]}}}};
+    if (kind == "twist") return twist;
+    return {{"header", {{"stamp", {{"sec", 0}, {"nanosec", 0}}}, {"frame_id", "base_link"}}}, {"twist", twist}};
+  }
+  if (kind == "float64_array") return {{"data", doubles(values)}};
+  if (kind == "string") return {{"data", values}};
+  if (kind == "trajectory") {  // joints:positions:seconds
+    const auto a = values.find(':'), b = values.rfind(':');
+    std::vector<std::string> names;
+    std::stringstream s(values.substr(0, a));
+    std::string n;
+    while (std::getline(s, n, ',')) names.push_back(n);
+    const double t = std::stod(values.substr(b + 1));
+    const json point = {{"positions", doubles(values.substr(a + 1, b - a - 1))},
+                        {"time_from_start", {{"sec", static_cast<int>(t)}, {"nanosec", static_cast<unsigned>((t - std::floor(t)) * 1e9)}}}};
+    return {{"header", {{"stamp", {{"sec", 0}, {"nanosec", 0}}}, {"frame_id", ""}}}, {"joint_names", names}, {"points", {point}}};
+  }
+  return json::object();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int domain = 0;
+  double seconds = 5, rate = 20;
+  std::string distro = "jazzy";
+  struct Sub {
+    std::string topic, kind, qos;
+    fdds::DataReader* reader = nullptr;
+    types::DynamicData_ptr data;
+    long count = 0;
+    double first = 0, last = 0;
+    json last_sample;
+    std::vector<std::string> children;  // tf: every child frame seen
+  };
+  struct Pub {
+    std::string topic, kind, values;
+    fdds::DataWriter* writer = nullptr;
+    types::DynamicData_ptr data;
+    long sent = 0;
+  };
+  std::vector<Sub> subs;
+  std::vector<Pub> pubs;
+  std::vector<std::string> calls;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool more = i + 1 < argc;
+    if (a == "--domain" && more) domain = std::atoi(argv[++i]);
+    else if (a == "--seconds" && more) seconds = std::atof(argv[++i]);
+    else if (a == "--rate" && more) rate = std::atof(argv[++i]);
+    else if (a == "--distro" && more) distro = argv[++i];
+    else if (a == "--call" && more) {
+      const std::string spec = argv[++i];
+      if (spec.size() < 7 || spec.substr(spec.size() - 6) != "=empty") {
+        std::fprintf(stderr, "fastdds_peer: --call SERVICE=empty\n");
+        return 2;
+      }
+      calls.push_back(spec.substr(0, spec.size() - 6));
+    }
+    else if ((a == "--sub" || a == "--pub") && more) {
+      const std::string spec = argv[++i];
+      const auto eq = spec.find('=');
+      const auto colon = spec.find(':', eq);
+      const std::string topic = spec.substr(0, eq);
+      const std::string kind = spec.substr(eq + 1, colon == std::string::npos ? std::string::npos : colon - eq - 1);
+      const std::string rest = colon == std::string::npos ? "" : spec.substr(colon + 1);
+      if (eq == std::string::npos || kKinds.count(kind) == 0) {
+        std::fprintf(stderr, "fastdds_peer: bad %s '%s'\n", a.c_str(), spec.c_str());
+        return 2;
+      }
+      if (a == "--sub") subs.push_back({topic, kind, rest});
+      else pubs.push_back({topic, kind, rest});
+    } else {
+      std::fprintf(stderr, "fastdds_peer: unknown argument '%s'\n", a.c_str());
+      return 2;
+    }
+  }
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  Types types_(distro);
+  fdds::DomainParticipantQos pq = fdds::PARTICIPANT_QOS_DEFAULT;
+  pq.name("fastdds_peer");
+  const std::string enclave = "enclave=/;";
+  pq.user_data().data_vec(std::vector<eprosima::fastrtps::rtps::octet>(enclave.begin(), enclave.end()));
+  fdds::DomainParticipant* pp = fdds::DomainParticipantFactory::get_instance()->create_participant(domain, pq);
+  if (pp == nullptr) {
+    std::fprintf(stderr, "fastdds_peer: no participant\n");
+    return 1;
+  }
+  fdds::Subscriber* subscriber = pp->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
+  fdds::Publisher* publisher = pp->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  std::map<std::string, fdds::Topic*> topics;
+  auto topic_for = [&](const std::string& ros_topic, const std::string& type) {
+    const std::string name = ros_topic[0] == '/' ? "rt" + ros_topic : ros_topic;
+    if (auto it = topics.find(name); it != topics.end()) return it->second;
+    types::DynamicType_ptr dt = types_.get(type);
+    fdds::TypeSupport support(new types::DynamicPubSubType(dt));
+    support->auto_fill_type_object(false);
+    support->auto_fill_type_information(false);
+    support.register_type(pp);
+    return topics[name] = pp->create_topic(name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
+  };
+  for (const std::string& service : calls) {
+    fdds::DataWriterQos wq = fdds::DATAWRITER_QOS_DEFAULT;  // rmw_qos_profile_services_default
+    wq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    wq.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    wq.history().depth = 10;
+    fdds::DataReaderQos rq = fdds::DATAREADER_QOS_DEFAULT;
+    rq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    rq.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    rq.history().depth = 10;
+    fdds::DataWriter* w = publisher->create_datawriter(topic_for("rq" + service + "Request", "std_srvs/srv/Empty_Request"), wq);
+    fdds::DataReader* r = subscriber->create_datareader(topic_for("rr" + service + "Reply", "std_srvs/srv/Empty_Response"), rq);
+    auto t0 = std::chrono::steady_clock::now();
+    auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+    bool available = false;
+    while (!available && since(t0) < 5.0) {
+      fdds::PublicationMatchedStatus pm;
+      fdds::SubscriptionMatchedStatus sm;
+      w->get_publication_matched_status(pm);
+      r->get_subscription_matched_status(sm);
+      available = pm.current_count > 0 && sm.current_count > 0;
+      if (!available) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    types::DynamicData_ptr request(types::DynamicDataFactory::get_instance()->create_data(types_.get("std_srvs/srv/Empty_Request")));
+    types::DynamicData_ptr reply(types::DynamicDataFactory::get_instance()->create_data(types_.get("std_srvs/srv/Empty_Response")));
+    eprosima::fastrtps::rtps::WriteParams params;
+    params.related_sample_identity().writer_guid(r->guid());
+    const auto t1 = std::chrono::steady_clock::now();
+    bool replied = false;
+    if (available && w->write(request.get(), params)) {
+      const eprosima::fastrtps::rtps::SampleIdentity id = params.sample_identity();
+      while (!replied && since(t1) < 3.0) {
+        fdds::SampleInfo info;
+        while (r->take_next_sample(reply.get(), &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+          if (info.valid_data && info.related_sample_identity == id) replied = true;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    }
+    std::printf("%s\n", json{{"service", service}, {"form", "rmw_fastrtps"}, {"available", available}, {"reply", replied},
+                             {"ms", 1e3 * since(t1)}}.dump().c_str());
+  }
+  for (Sub& s : subs) {
+    const Kind& k = kKinds.at(s.kind);
+    fdds::DataReaderQos q = fdds::DATAREADER_QOS_DEFAULT;
+    char rel = k.reliability;
+    bool tl = k.transient_local;
+    if (s.qos == "be") rel = 'b';
+    if (s.qos == "rel") rel = 'r';
+    if (s.qos == "tl") rel = 'r', tl = true;
+    q.reliability().kind = rel == 'r' ? fdds::RELIABLE_RELIABILITY_QOS : fdds::BEST_EFFORT_RELIABILITY_QOS;
+    q.durability().kind = tl ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS : fdds::VOLATILE_DURABILITY_QOS;
+    q.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+    q.history().depth = k.depth;
+    q.endpoint().history_memory_policy = eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+    s.reader = subscriber->create_datareader(topic_for(s.topic, k.type), q);
+    s.data = types::DynamicDataFactory::get_instance()->create_data(types_.get(k.type));
+  }
+  for (Pub& p : pubs) {
+    const Kind& k = kKinds.at(p.kind);
+    fdds::DataWriterQos q = fdds::DATAWRITER_QOS_DEFAULT;  // rclcpp's default: reliable, volatile, keep last 10
+    q.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    q.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    q.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+    q.history().depth = 10;
+    q.endpoint().history_memory_policy = eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+    p.writer = publisher->create_datawriter(topic_for(p.topic, k.type), q);
+    p.data = types::DynamicDataFactory::get_instance()->create_data(types_.get(k.type));
+    write_message(types_, p.data.get(), k.type, command(p.kind, p.values));
+  }
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  auto next_pub = start;
+  auto wall = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
+  while (wall() < seconds) {
+    if (clock::now() >= next_pub) {
+      for (Pub& p : pubs) {
+        fdds::PublicationMatchedStatus st;
+        p.writer->get_publication_matched_status(st);
+        if (st.current_count > 0 && p.writer->write(p.data.get())) ++p.sent;
+      }
+      next_pub = clock::now() + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(1.0 / rate));
+    }
+    for (Sub& s : subs) {
+      fdds::SampleInfo info;
+      while (s.reader->take_next_sample(s.data.get(), &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+        if (!info.valid_data) continue;
+        const double t = wall();
+        if (s.count == 0) s.first = t;
+        s.last = t;
+        ++s.count;
+        const json message = read_message(types_, s.data.get(), kKinds.at(s.kind).type);
+        if (s.kind == "tf" || s.kind == "tf_static") {
+          for (const json& t : message["transforms"]) {
+            const std::string child = t["child_frame_id"];
+            if (std::find(s.children.begin(), s.children.end(), child) == s.children.end()) s.children.push_back(child);
+          }
+        }
+        s.last_sample = describe(s.kind, message);
+        if (s.count <= 3) std::printf("%s\n", json{{"topic", s.topic}, {"n", s.count}, {"sample", s.last_sample}}.dump().c_str());
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  for (const Sub& s : subs) {
+    std::printf("%s\n", json{{"topic", s.topic}, {"summary", true}, {"count", s.count}, {"span", s.count > 1 ? s.last - s.first : 0.0}, {"children", s.children},
+                             {"last", s.count ? s.last_sample : json(nullptr)}}.dump().c_str());
+  }
+  for (const Pub& p : pubs) std::printf("%s\n", json{{"topic", p.topic}, {"published", p.sent}}.dump().c_str());
+  pp->delete_contained_entities();
+  fdds::DomainParticipantFactory::get_instance()->delete_participant(pp);
+  return 0;
+}
