@@ -7,7 +7,10 @@
 
 #include <time.h>
 
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <optional>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -22,7 +25,7 @@
 #ifdef MECHSIM_HAS_ROS2
 #include "bridge/sim_bridge.hpp"
 #include "description/robot_loader.hpp"
-#include "ros2/sim_node.hpp"
+#include "ros2/world_node.hpp"
 #include "sim/controller_set.hpp"
 #endif
 
@@ -97,151 +100,181 @@ double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
 // --bench-rtf: the real-time factor (as fast as it goes) with the ROS 2 layer publishing and
 // without, in one run: blocks of 0.5 s of simulated time alternate (ABBA), publishing on and off, so that
 // both see the same states and the same load of the machine; wall time (what a user gets) and
-// the loop thread's CPU time (what the layer costs the tick) each give a ratio.
-void bench_rtf(ros2::SimNode& node, double seconds) {
-  bridge::SimBridge& bridge = node.bridge();
+// the loop thread's CPU time (what the layer costs the tick) each give a ratio. The blocks switch
+// in the world's loop thread, after a tick (WorldNode's tick hook).
+void bench_rtf(ros2::WorldNode& node, double seconds) {
+  bridge::World& world = node.world();
+  bridge::PhysicsProperties physics = world.physics_properties();
   // Discovery and matching settle first: 2 s at real time, publishing.
-  bridge.set_real_time_factor(1.0);
-  bridge.run_for(2.0, nullptr);
-  bridge.set_real_time_factor(0.0);
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  physics.max_update_rate = 0.0;
+  world.set_physics_properties(physics);
   constexpr double kBlock = 0.5;
-  double wall[2] = {0.0, 0.0}, cpu[2] = {0.0, 0.0}, all[2] = {0.0, 0.0}, sim[2] = {0.0, 0.0};
-  std::string error;
-  for (int k = 0; sim[1] < seconds || sim[0] < seconds; ++k) {
+  struct Bench {
+    double wall[2] = {0.0, 0.0}, cpu[2] = {0.0, 0.0}, all[2] = {0.0, 0.0}, sim[2] = {0.0, 0.0};
+    int k = -1, on = 1;
+    double s0 = 0.0, c0 = 0.0, a0 = 0.0;
+    std::chrono::steady_clock::time_point w0;
+    std::atomic<bool> done{false};
+  };
+  auto b = std::make_shared<Bench>();
+  node.set_tick_hook([b, seconds, &node](double t) {
+    if (b->done.load()) return;
+    if (b->k >= 0 && t - b->s0 < kBlock) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double c = thread_cpu_seconds(), a = process_cpu_seconds();
+    if (b->k >= 0) {
+      b->wall[b->on] += std::chrono::duration<double>(now - b->w0).count();
+      b->cpu[b->on] += c - b->c0;
+      b->all[b->on] += a - b->a0;
+      b->sim[b->on] += t - b->s0;
+      if (b->sim[0] >= seconds && b->sim[1] >= seconds) {
+        node.set_publishing(true);
+        b->done.store(true);
+        return;
+      }
+    }
+    ++b->k;
     // ABBA: on, off, off, on, ...: a load that drifts over the run weighs on both alike.
-    const int on = (k % 4 == 0 || k % 4 == 3) ? 1 : 0;
-    node.set_publishing(on == 1);
-    const auto w0 = std::chrono::steady_clock::now();
-    const double c0 = thread_cpu_seconds(), a0 = process_cpu_seconds(), s0 = bridge.time();
-    if (!bridge.run_for(kBlock, &error)) throw UserError("the simulation failed: " + error);
-    wall[on] += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
-    cpu[on] += thread_cpu_seconds() - c0;
-    all[on] += process_cpu_seconds() - a0;
-    sim[on] += bridge.time() - s0;
-  }
-  node.set_publishing(true);
-  const double rtf_on = sim[1] / wall[1], rtf_off = sim[0] / wall[0];
+    b->on = (b->k % 4 == 0 || b->k % 4 == 3) ? 1 : 0;
+    node.set_publishing(b->on == 1);
+    b->w0 = std::chrono::steady_clock::now();
+    b->s0 = t;
+    b->c0 = thread_cpu_seconds();
+    b->a0 = process_cpu_seconds();
+  });
+  while (!b->done.load() && g_stop_signal.load() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  node.set_tick_hook({});
+  const double* sim = b->sim;
+  const double rtf_on = sim[1] / b->wall[1], rtf_off = sim[0] / b->wall[0];
   std::printf("mechsim ros2 --bench-rtf: %.1f s simulated with the ROS 2 layer publishing, %.1f s without, in "
               "alternating blocks of %.1f s (on, off, off, on, ...)\n",
               sim[1], sim[0], kBlock);
   std::printf("  real-time factor (wall):       %.3f publishing, %.3f without: ratio %.3f\n", rtf_on, rtf_off,
               rtf_on / rtf_off);
-  std::printf("  loop thread CPU per sim second: %.4f s publishing, %.4f s without: ratio %.3f\n", cpu[1] / sim[1],
-              cpu[0] / sim[0], (cpu[0] / sim[0]) / (cpu[1] / sim[1]));
+  std::printf("  loop thread CPU per sim second: %.4f s publishing, %.4f s without: ratio %.3f\n", b->cpu[1] / sim[1],
+              b->cpu[0] / sim[0], (b->cpu[0] / sim[0]) / (b->cpu[1] / sim[1]));
   std::printf("  mechsim's CPU per sim second (every thread: loop, outbox, Fast DDS): %.4f s publishing, %.4f s without\n",
-              all[1] / sim[1], all[0] / sim[0]);
-  const ros2::NodeStats st = node.stats();
-  std::printf("  published: %llu /clock, %llu /tf messages\n", static_cast<unsigned long long>(st.clock_messages),
-              static_cast<unsigned long long>(st.tf_messages));
+              b->all[1] / sim[1], b->all[0] / sim[0]);
+  std::printf("  published: %llu /clock messages\n", static_cast<unsigned long long>(node.clock_messages()));
   std::fflush(stdout);
 }
 
 void run(const Ros2Args& args, CommandResult& result) {
   const auto distro = ros2::parse_distro(args.distro);
   if (!distro) throw UserError("--ros-distro '" + args.distro + "': humble or jazzy");
-  ros2::NodeOptions options;
+  ros2::WorldNodeOptions options;
   options.participant = ros2::options_from_environment(*distro);
   options.clock_rate = args.clock_rate;
-  options.tf_rate = args.tf_rate;
-  options.publish_tf = !args.no_tf;
-  options.use_stamped_vel = args.use_stamped_vel == "true";
+  options.world.world = args.world;
+  options.world.paused = args.paused;
+  options.world.real_time_factor = args.real_time_factor;
+  options.node.tf_rate = args.tf_rate;
+  options.node.publish_tf = !args.no_tf;
+  options.node.use_stamped_vel = args.use_stamped_vel == "true";
 
-  description::LoadedRobot loaded = description::load_robot(args.robot.file, load_options(args.robot));
-  for (const std::string& w : loaded.warnings) std::cerr << "warning: " << args.robot.file << ": " << w << "\n";
-  options.robot_description = loaded.urdf;
-  // The controller manager's namespace: --robot-namespace, else the description's plugin's, else
-  // the YAML's, else the root.
-  options.robot_namespace = args.robot_namespace;
-  if (options.robot_namespace.empty()) options.robot_namespace = plugin_namespace(loaded.model);
-  if (options.robot_namespace.empty() && !args.controllers.empty()) {
-    options.robot_namespace = yaml_namespace(args.controllers, args.yaml_ns);
-  }
-  if (options.robot_namespace.empty()) options.robot_namespace = "/";
-
-  bridge::BridgeOptions bridge;
-  bridge.robot = std::move(loaded.model);
-  bridge.world = args.world;
-  if (args.spawn.size() >= 2) {
-    bridge.x = args.spawn[0];
-    bridge.y = args.spawn[1];
-  }
-  if (args.spawn.size() >= 3) bridge.z = args.spawn[2];
-  bridge.yaw = args.yaw;
-  bridge.paused = args.paused;
-  bridge.real_time_factor = args.real_time_factor;
+  // The command line's robot, as a launch file's robot_state_publisher and spawn_entity.py would
+  // bring it (none: an empty gzserver that /spawn_entity fills).
+  std::optional<ros2::CommandLineRobot> robot;
   std::vector<std::string> in_yaml;
-  if (!args.controllers.empty()) {
-    control::Params root = control::Params::from_yaml_file(args.controllers);
-    bridge.controller_params = controller_namespace(args.controllers, args.yaml_ns);
-    bridge.parameter_root = root;
-    for (const std::string& k : bridge.controller_params.keys()) {
-      if (bridge.controller_params.child(k).is_map() && bridge.controller_params.child(k).has("type")) in_yaml.push_back(k);
+  if (!args.robot.file.empty()) {
+    description::LoadedRobot loaded = description::load_robot(args.robot.file, load_options(args.robot));
+    for (const std::string& w : loaded.warnings) std::cerr << "warning: " << args.robot.file << ": " << w << "\n";
+    ros2::CommandLineRobot r;
+    r.urdf = loaded.urdf;
+    // The controller manager's namespace: --robot-namespace, else the description's plugin's, else
+    // the YAML's, else the root.
+    r.robot_namespace = args.robot_namespace;
+    if (r.robot_namespace.empty()) r.robot_namespace = plugin_namespace(loaded.model);
+    if (r.robot_namespace.empty() && !args.controllers.empty()) r.robot_namespace = yaml_namespace(args.controllers, args.yaml_ns);
+    if (r.robot_namespace.empty()) r.robot_namespace = "/";
+    r.robot = std::move(loaded.model);
+    if (args.spawn.size() >= 2) {
+      r.pose.position.x = args.spawn[0];
+      r.pose.position.y = args.spawn[1];
     }
+    if (args.spawn.size() >= 3) r.pose.position.z = args.spawn[2];
+    r.pose.orientation = {std::cos(args.yaw / 2.0), 0.0, 0.0, std::sin(args.yaw / 2.0)};
+    if (!args.controllers.empty()) {
+      control::Params root = control::Params::from_yaml_file(args.controllers);
+      r.controller_params = controller_namespace(args.controllers, args.yaml_ns);
+      r.parameter_root = root;
+      for (const std::string& k : r.controller_params.keys()) {
+        if (r.controller_params.child(k).is_map() && r.controller_params.child(k).has("type")) in_yaml.push_back(k);
+      }
+    }
+    robot = std::move(r);
   }
 
-  ros2::SimNode node(std::move(bridge), options);
+  ros2::WorldNode node(options);
   ros2::Participant& p = node.participant();
-  for (const std::string& w : node.bridge().physics_warnings()) p.log("physics: " + w);
-  // Controllers: --start, or the usual set of the YAML's controllers (all loaded, then the widest
-  // conflict-free set started); none with --no-controllers.
-  std::vector<std::string> start = args.start;
-  if (!args.no_controllers && start.empty() && !in_yaml.empty()) {
-    for (const std::string& name : in_yaml) {
-      const bridge::BridgeResult r = node.load_controller(name);
-      if (!r.ok) p.log("controller '" + name + "' not loaded: " + r.error);
+  node.start();
+  std::string robot_name, robot_ns = "/";
+  ros2::SimNode* model = nullptr;
+  if (robot) {
+    robot_name = robot->robot.name;
+    robot_ns = robot->robot_namespace;
+    const bridge::BridgeResult r = node.spawn_robot(std::move(*robot));
+    if (!r.ok) throw UserError("the robot could not be spawned: " + r.error);
+    model = node.model_node(robot_name);
+    if (model == nullptr) throw UserError("the robot '" + robot_name + "' is not in the world after its spawn");
+    for (const std::string& w : model->bridge().physics_warnings()) p.log("physics: " + w);
+    // Controllers: --start, or the usual set of the YAML's controllers (all loaded, then the widest
+    // conflict-free set started); none with --no-controllers. A switch applies at a tick (as a
+    // spawner's does): the world runs.
+    std::vector<std::string> start = args.start;
+    if (!args.no_controllers && start.empty() && !in_yaml.empty()) {
+      for (const std::string& name : in_yaml) {
+        const bridge::BridgeResult lr = model->load_controller(name);
+        if (!lr.ok) p.log("controller '" + name + "' not loaded: " + lr.error);
+      }
+      start = usual_set(model->bridge().list_controllers());
     }
-    start = usual_set(node.bridge().list_controllers());
-  }
-  auto print_banner = [&] {
-    std::printf("mechsim ros2: controllers running:");
-    for (const bridge::ControllerSummary& c : node.bridge().list_controllers()) {
-      if (c.state == "running") std::printf(" %s", c.name.c_str());
-    }
-    std::printf("\n");
-    std::printf("mechsim ros2: %s in world '%s' on ROS 2 domain %d (%s layout, %s); controller manager %s\n",
-                node.bridge().robot().name.c_str(), args.world.c_str(), p.domain_id(), ros2::distro_name(p.distro()),
-                "rmw_fastrtps_cpp and rmw_cyclonedds_cpp peers", options.robot_namespace.c_str());
-    std::printf("mechsim ros2: nodes:");
-    for (const std::string& n : p.node_names()) std::printf(" %s", n.c_str());
-    std::printf("\n");
-    for (const std::string& t : node.topic_lines()) std::printf("mechsim ros2: topic %s\n", t.c_str());
-    std::fflush(stdout);
-  };
-  // The loop runs before the switch: a switch applies at a tick (as a spawner's does).
-  if (args.bench_rtf > 0.0) {
-    node.start();
     if (!args.no_controllers && !start.empty()) {
-      const bridge::BridgeResult r = node.start_controllers(start);
-      if (!r.ok) p.log("controllers: " + r.error);
+      const bridge::BridgeResult sr = model->start_controllers(start);
+      if (!sr.ok) p.log("controllers: " + sr.error);
     }
-    node.stop();
-    print_banner();
+  }
+  std::printf("mechsim ros2: controllers running:");
+  if (model != nullptr)
+    for (const bridge::ControllerSummary& c : model->bridge().list_controllers())
+      if (c.state == "running") std::printf(" %s", c.name.c_str());
+  std::printf("\n");
+  std::printf("mechsim ros2: %s in world '%s' on ROS 2 domain %d (%s layout, %s); controller manager %s\n",
+              robot_name.empty() ? "no robot" : robot_name.c_str(), args.world.c_str(), p.domain_id(),
+              ros2::distro_name(p.distro()), "rmw_fastrtps_cpp and rmw_cyclonedds_cpp peers", robot_ns.c_str());
+  std::printf("mechsim ros2: topic /clock (rosgraph_msgs/msg/Clock, %s of sim time)\n",
+              args.clock_rate > 0.0 ? (std::to_string(args.clock_rate) + " Hz").c_str() : "every tick");
+  std::printf("mechsim ros2: topic /pause_physics, /unpause_physics, /reset_simulation, /reset_world, /spawn_entity, "
+              "/delete_entity, /get_model_list, /get_entity_state, /set_entity_state (gazebo_ros services, "
+              "rmw_fastrtps and rmw_cyclonedds clients)\n");
+  for (const std::string& t : node.node_lines()) std::printf("mechsim ros2: topic %s\n", t.c_str());
+  std::printf("mechsim ros2: nodes:");
+  for (const std::string& n : p.node_names()) std::printf(" %s", n.c_str());
+  std::printf("\n");
+  std::fflush(stdout);
+  if (args.bench_rtf > 0.0) {
     bench_rtf(node, args.bench_rtf);
     return;
   }
   const StopOnSignals stop_on_signals;
   const auto wall_start = std::chrono::steady_clock::now();
-  const double sim_start = node.bridge().time();
-  node.start();
-  if (!args.no_controllers && !start.empty()) {
-    const bridge::BridgeResult r = node.start_controllers(start);
-    if (!r.ok) p.log("controllers: " + r.error);
-  }
-  print_banner();
-
+  const double sim_start = node.world().time();
   while (g_stop_signal.load() == 0) {
-    if (args.duration > 0.0 && node.bridge().time() - sim_start >= args.duration) break;
+    if (args.duration > 0.0 && node.world().time() - sim_start >= args.duration) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  node.stop();
+  const double simulated = node.world().time() - sim_start;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const double simulated = node.bridge().time() - sim_start;
-  const ros2::NodeStats s = node.stats();
+  ros2::NodeStats s;
+  if (ros2::SimNode* m = robot_name.empty() ? nullptr : node.model_node(robot_name)) s = m->stats();
   std::printf("mechsim ros2: %.3f s simulated in %.3f s of wall time (real-time factor %.3f); %llu /clock, %llu /tf "
               "messages, %llu commands taken, %llu rejected\n",
-              simulated, wall, wall > 0.0 ? simulated / wall : 0.0, static_cast<unsigned long long>(s.clock_messages),
+              simulated, wall, wall > 0.0 ? simulated / wall : 0.0, static_cast<unsigned long long>(node.clock_messages()),
               static_cast<unsigned long long>(s.tf_messages), static_cast<unsigned long long>(s.commands),
               static_cast<unsigned long long>(s.commands_rejected));
+  std::fflush(stdout);
+  node.stop();
   result.exit_code = 0;
 }
 
@@ -261,8 +294,10 @@ void run(const Ros2Args&, CommandResult&) {
 void add_ros2_command(CLI::App& app, CommandResult& result) {
   auto args = std::make_shared<Ros2Args>();
   CLI::App* cmd = app.add_subcommand(
-      "ros2", "Serve a world and its robot on a ROS 2 domain (Humble or Jazzy nodes; ROS_DOMAIN_ID from the environment)");
+      "ros2", "Serve a world (and a robot, if given) on a ROS 2 domain (Humble or Jazzy nodes; ROS_DOMAIN_ID from the environment)");
   add_robot_options(cmd, args->robot);
+  // No robot: an empty gzserver, filled through /spawn_entity.
+  cmd->get_option("file")->required(false);
   cmd->add_option("--controllers", args->controllers, "Controller YAML (ros_control or mechsim form)");
   cmd->add_option("--namespace", args->yaml_ns, "Namespace of the controllers in the YAML");
   cmd->add_option("--start", args->start,

@@ -221,13 +221,18 @@ BridgeResult World::step(std::uint64_t steps) {
 
 BridgeResult World::spawn(const SpawnRequest& request, std::string* status) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const std::string& name = request.name;
+  std::string name = request.name;
   auto refuse = [&](const std::string& why) {
     if (binding_ != nullptr) binding_->warn("spawn of '" + name + "' refused: " + why);
     return refused(why);
   };
   if (!world_ || stop_.load()) return refuse("the world is not running");
-  if (name.empty()) return refuse("model_name is empty");
+  if (name.empty() && request.model) name = request.model->name;
+  if (name.empty() && request.name_from_description) {
+    // The description's own name: parsed below, checked once known.
+  } else if (name.empty()) {
+    return refuse("model_name is empty");
+  }
   if (name.find("::") != std::string::npos) return refuse("model_name '" + name + "' holds '::' (Gazebo's scope separator)");
   if (find(name) != nullptr || std::find(world_models_.begin(), world_models_.end(), name) != world_models_.end())
     return refuse("a model named '" + name + "' is in the world already");
@@ -247,7 +252,9 @@ BridgeResult World::spawn(const SpawnRequest& request, std::string* status) {
 
   BridgeOptions bridge;
   const std::string source = "model '" + name + "'";
-  try {
+  if (request.model) {
+    bridge.robot = *request.model;
+  } else try {
     // gazebo_ros gives every plugin that names no namespace the spawn's.
     const std::string xml = description::with_robot_namespace(request.xml, request.robot_namespace);
     if (xml.find("<sdf") != std::string::npos) {
@@ -268,6 +275,13 @@ BridgeResult World::spawn(const SpawnRequest& request, std::string* status) {
     }
   } catch (const std::exception& e) {
     return refuse(e.what());
+  }
+  if (name.empty()) {
+    name = bridge.robot.name;
+    if (name.empty()) return refuse("the description names no model and the request gives no name");
+    if (name.find("::") != std::string::npos) return refuse("model name '" + name + "' holds '::' (Gazebo's scope separator)");
+    if (find(name) != nullptr || std::find(world_models_.begin(), world_models_.end(), name) != world_models_.end())
+      return refuse("a model named '" + name + "' is in the world already");
   }
   bridge.robot.name = name;
   // A spawn without a namespace leaves gazebo_plugins' GazeboRos plugins under the model's name.

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -58,6 +59,12 @@ struct SpawnRequest {
   std::string robot_namespace;  // "" or "/": the root
   description::Pose pose;       // X_RM: the model frame in reference_frame
   std::string reference_frame;  // "" or "world": the world; else any entity of the world
+  // gazebo_ros (ROS 2)'s factory: an empty name takes the description's own (<robot name>,
+  // <model name>); ROS 1's spawn_model refuses it.
+  bool name_from_description = false;
+  // A description parsed already (a command line's robot, its packages resolved as it was
+  // loaded): used instead of `xml`.
+  std::optional<description::RobotModel> model;
 };
 
 // gazebo_msgs/GetModelProperties' content.

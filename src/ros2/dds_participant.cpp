@@ -204,6 +204,7 @@ struct Participant::Impl : dds::DomainParticipantListener {
   struct NodeEntry {
     std::string ns, name;
     std::vector<Guid> readers, writers;
+    int users = 1;  // Node objects of this name (a controller's topics and its parameters share it)
   };
 
   // Types, topics, nodes, graph writes. Held over Fast DDS calls (entity creation), so no Fast DDS
@@ -592,8 +593,15 @@ Participant::~Participant() {
 int Participant::add_node(const std::string& ns, const std::string& name) {
   Impl& p = *impl_;
   std::lock_guard<std::mutex> lock(p.mutex);
+  // One ROS 2 node of one name: a second Node object of it shares its graph entry.
+  for (auto& [id, node] : p.nodes) {
+    if (node.ns == ns && node.name == name) {
+      ++node.users;
+      return id;
+    }
+  }
   const int id = p.next_node++;
-  p.nodes[id] = {ns, name, {}, {}};
+  p.nodes[id] = {ns, name, {}, {}, 1};
   p.publish_graph();
   return id;
 }
@@ -601,7 +609,9 @@ int Participant::add_node(const std::string& ns, const std::string& name) {
 void Participant::remove_node(int node) {
   Impl& p = *impl_;
   std::lock_guard<std::mutex> lock(p.mutex);
-  p.nodes.erase(node);
+  const auto it = p.nodes.find(node);
+  if (it == p.nodes.end() || --it->second.users > 0) return;
+  p.nodes.erase(it);
   p.publish_graph();
 }
 

@@ -149,7 +149,8 @@ class Participant {
   Participant& operator=(const Participant&) = delete;
 
   // A ROS 2 node of this process (namespace absolute, name a valid token); returns its id. The
-  // graph message lists it from now on.
+  // graph message lists it from now on. A node of the same namespace and name that exists is
+  // shared (its id returned; remove_node removes it once every adder removed it).
   int add_node(const std::string& ns, const std::string& name);
   void remove_node(int node);
   // Endpoints of node `node`. Throws std::runtime_error when the topic is already used by this

@@ -21,7 +21,11 @@
 //
 // A request that does not deserialize is dropped with a log line naming the service and the
 // client; the handler's exception is logged, no reply. Handlers run on Fast DDS's receive thread
-// of the request reader: they must be quick (a slow one delays that service's next request).
+// of the request reader: they must be quick (a slow one delays every sample that thread
+// delivers). A slow one (a spawn, a controller switch, an action's result) takes the deferred
+// form: the handler gets a ReplyTo and the request, and replies later from any thread with
+// reply(); a reply whose client is gone (its reply reader no longer matched: the client process
+// ended mid-call) is dropped and counted, so nothing is left behind for it.
 
 #include <atomic>
 #include <chrono>
@@ -44,6 +48,18 @@ ClientForm client_form(const SampleInfo& info, const std::string& user_data);
 // "clientid=<id>;" of a USER_DATA string ("" when none).
 std::string user_data_value(const std::string& user_data, const std::string& key);
 
+// Where a request's reply goes: its client's form and identity (service.hpp's header).
+struct ReplyTo {
+  ClientForm form = ClientForm::FastRtps;
+  SampleIdentity request;      // the request sample's identity (rmw_fastrtps' reply carries it)
+  Guid reply_reader{};         // rmw_fastrtps: the client's reply reader (zero: unknown)
+  std::string client;          // rmw_cyclonedds: the client's "clientid" value
+  std::uint64_t client_id = 0;  // rmw_cyclonedds' header, echoed
+  std::int64_t seq = 0;
+  // The client as log lines name it.
+  std::string who() const { return guid_string(request.writer); }
+};
+
 template <class Srv>
 class ServiceServer {
  public:
@@ -51,10 +67,16 @@ class ServiceServer {
   using Response = typename Srv::Response;
   // Fills the response; false: no reply (logged by the caller).
   using Handler = std::function<bool(const Request&, Response&)>;
+  // The deferred form: reply(to, response) later, from any thread (or never: no reply).
+  using DeferredHandler = std::function<void(const Request&, const ReplyTo&)>;
 
   // Throws NameError for a bad name, std::runtime_error when the endpoints cannot be made.
   ServiceServer(Node& node, const std::string& name, Handler handler)
-      : participant_(node.participant()), handler_(std::move(handler)), name_(node.resolve(name)) {
+      : ServiceServer(node, name, DeferredHandler{}) {
+    handler_ = std::move(handler);
+  }
+  ServiceServer(Node& node, const std::string& name, DeferredHandler deferred)
+      : participant_(node.participant()), deferred_(std::move(deferred)), name_(node.resolve(name)) {
     const std::string id = "serviceid=" + guid_string(participant_.guid()) + "/" + name_ + ";";
     EndpointSpec reply;
     reply.ros_topic = name_ + " (reply)";
@@ -83,6 +105,54 @@ class ServiceServer {
 
   const std::string& name() const { return name_; }
   std::uint64_t served(ClientForm form) const { return served_[static_cast<int>(form)].load(); }
+  // Replies whose client was gone (see the header).
+  std::uint64_t dropped() const { return dropped_.load(); }
+
+  // Sends `response` to the client of `to` (any thread). Waits at most 100 ms for the client's
+  // reply reader to be matched (a reply to a reader not matched yet is lost); a client that is
+  // gone gets nothing: false, counted in dropped().
+  bool reply(const ReplyTo& to, const Response& response) {
+    bool matched = false;
+    for (int i = 0; i < 10 && !matched; ++i) {
+      if (to.form == ClientForm::FastRtps) {
+        matched = to.reply_reader == Guid{} || writer_->has_matched(to.reply_reader);
+      } else {
+        if (to.client.empty()) {
+          matched = true;  // no clientid to wait for: as rmw_cyclonedds, reply at once
+          break;
+        }
+        for (const Guid& r : participant_.remote_readers_with("clientid=" + to.client + ";"))
+          matched = matched || writer_->has_matched(r);
+      }
+      if (!matched) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    if (!matched) {
+      dropped_.fetch_add(1);
+      return false;
+    }
+    if (to.form == ClientForm::FastRtps) {
+      writer_->write(Publisher<Response>::out(response), to.request, nullptr);
+    } else {
+      struct Framed {
+        std::uint64_t client_id;
+        std::int64_t seq;
+        const Response* response;
+      } framed{to.client_id, to.seq, &response};
+      OutMessage out{&framed, [](const void* m) { return serialized_size(*static_cast<const Framed*>(m)->response) + 16; },
+                     [](const void* m, char* buffer, std::size_t capacity) -> std::size_t {
+                       const auto* f = static_cast<const Framed*>(m);
+                       if (capacity < 20) return 0;
+                       const std::size_t n = serialize_into(*f->response, buffer + 16, capacity - 16);
+                       std::memmove(buffer, buffer + 16, 4);  // the encapsulation header first
+                       std::memcpy(buffer + 4, &f->client_id, 8);
+                       std::memcpy(buffer + 12, &f->seq, 8);
+                       return n + 16;
+                     }};
+      writer_->write(out);
+    }
+    served_[static_cast<int>(to.form)].fetch_add(1);
+    return true;
+  }
 
  private:
   static int node_id(Node& node) { return node.id(); }
@@ -116,54 +186,34 @@ class ServiceServer {
       participant_.log(name_ + ": malformed request from " + guid_string(info.identity.writer) + " dropped (" + error + ")");
       return;
     }
-    Response response;
+    ReplyTo to;
+    to.form = form;
+    to.request = info.identity;
+    to.reply_reader = info.related.writer;
+    to.client_id = client_id;
+    to.seq = seq;
+    if (form == ClientForm::CycloneDds) to.client = user_data_value(user_data, "clientid");
     try {
+      if (deferred_) {
+        deferred_(request, to);
+        return;
+      }
+      Response response;
       if (!handler_(request, response)) return;
+      reply(to, response);
     } catch (const std::exception& e) {
       participant_.log(name_ + ": the request's handler failed: " + e.what());
-      return;
     }
-    // The client's reply reader: named by the request (rmw_fastrtps) or by its clientid.
-    bool matched = false;
-    for (int i = 0; i < 10 && !matched; ++i) {
-      if (form == ClientForm::FastRtps) {
-        matched = info.related.writer == Guid{} || writer_->has_matched(info.related.writer);
-      } else {
-        const std::string client = user_data_value(user_data, "clientid");
-        if (client.empty()) break;
-        for (const Guid& r : participant_.remote_readers_with("clientid=" + client + ";")) matched = matched || writer_->has_matched(r);
-      }
-      if (!matched) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    if (form == ClientForm::FastRtps) {
-      writer_->write(Publisher<Response>::out(response), info.identity, nullptr);
-    } else {
-      struct Framed {
-        std::uint64_t client_id;
-        std::int64_t seq;
-        const Response* response;
-      } framed{client_id, seq, &response};
-      OutMessage out{&framed, [](const void* m) { return serialized_size(*static_cast<const Framed*>(m)->response) + 16; },
-                     [](const void* m, char* buffer, std::size_t capacity) -> std::size_t {
-                       const auto* f = static_cast<const Framed*>(m);
-                       if (capacity < 20) return 0;
-                       const std::size_t n = serialize_into(*f->response, buffer + 16, capacity - 16);
-                       std::memmove(buffer, buffer + 16, 4);  // the encapsulation header first
-                       std::memcpy(buffer + 4, &f->client_id, 8);
-                       std::memcpy(buffer + 12, &f->seq, 8);
-                       return n + 16;
-                     }};
-      writer_->write(out);
-    }
-    served_[static_cast<int>(form)].fetch_add(1);
   }
 
   Participant& participant_;
   Handler handler_;
+  DeferredHandler deferred_;
   std::string name_;
   std::unique_ptr<Writer> writer_;
   std::unique_ptr<Reader> reader_;
   std::atomic<std::uint64_t> served_[2] = {0, 0};
+  std::atomic<std::uint64_t> dropped_{0};
 };
 
 }  // namespace mechsim::ros2

@@ -1,18 +1,18 @@
 #pragma once
-// A simulated world and its robot on a ROS 2 domain, as gzserver with gazebo_ros and
-// gazebo_ros2_control presents them (README.md, "Nodes and topics"). One SimNode owns:
-//   - the DDS participant (dds_participant.hpp) and the SimBridge (world, robot, controllers);
-//   - the loop thread that ticks the world and, after each tick, publishes what is due;
-//   - node `gazebo` (/clock; the services /pause_physics, /unpause_physics, /reset_simulation,
-//     /reset_world of gazebo_ros_init, std_srvs/srv/Empty), node `robot_state_publisher` (/tf, /tf_static,
-//     /robot_description), node `<robot ns>/controller_manager`;
-//   - one node per loaded controller in the robot namespace with its topics
-//     (controller_topics.cpp);
+// One model of the world (a robot: the one `mechsim ros2 ROBOT` spawns, or one spawned through
+// /spawn_entity) on a ROS 2 domain, as gazebo_ros2_control and gazebo_ros' model plugins present
+// it (README.md, "Nodes and topics"). The world, /clock and gazebo_ros' services are WorldNode's
+// (world_node.hpp); a SimNode owns, for its model's bridge:
+//   - node `<robot ns>/controller_manager` with ros2_control's services, and one node per loaded
+//     controller with its topics (controller_topics.cpp), parameters and actions
+//     (controller_manager.cpp, parameters.hpp, actions.hpp);
+//   - for the robot given on the command line, robot_state_publisher (/tf, /tf_static,
+//     /robot_description);
 //   - the sensors' topics, one node per sensor plugin (sensor_topics.hpp).
 //
-// Threads: the loop thread ticks and fills what is due; the outbox thread writes it (outbox.hpp).
-// Command samples arrive on Fast DDS's threads and are written to the controllers' ports
-// (thread-safe, bridge/README.md) under `bindings_mutex_`.
+// Threads: the world's loop thread ticks the model and runs on_tick (fills what is due; the
+// outbox thread writes it). Command samples arrive on Fast DDS's threads and are written to the
+// controllers' ports (thread-safe, bridge/README.md) under `bindings_mutex_`.
 
 #include <atomic>
 #include <chrono>
@@ -37,14 +37,13 @@
 namespace mechsim::ros2 {
 
 struct NodeOptions {
-  ParticipantOptions participant;
   // The controller manager's namespace (gazebo_ros2_control's <ros><namespace>, or gazebo_ros_control's
   // <robotNamespace>): its node, the controllers' nodes and their topics live there.
   std::string robot_namespace = "/";
   // Remappings applied to the controllers' nodes (gazebo_ros2_control's <ros><remapping>).
   std::vector<Remap> controller_remaps;
-  // Hz of simulated time of /clock; 0: every tick.
-  double clock_rate = 0.0;
+  // robot_state_publisher for this model (the command line's robot; a spawned model's users run
+  // their own).
   bool publish_tf = true;
   double tf_rate = 20.0;  // Hz of sim time (robot_state_publisher's publish_frequency default)
   std::string robot_description;  // the URDF published on robot_description
@@ -55,33 +54,41 @@ struct NodeOptions {
 
 // What the node publishes and counts, for logs and tests.
 struct NodeStats {
-  std::uint64_t clock_messages = 0;     // written
-  std::uint64_t clock_coalesced = 0;    // times replaced by a newer one before they went out
-  std::uint64_t dropped = 0;            // samples the outbox had no room for
   std::uint64_t tf_messages = 0;
   std::uint64_t commands = 0;           // command samples written to ports
   std::uint64_t commands_rejected = 0;  // refused by a port (wrong size, not finite)
 };
 
+class ControllerManagerNode;
+
 class SimNode {
  public:
-  // Throws std::runtime_error when the robot, world or DDS participant cannot be made.
-  SimNode(bridge::BridgeOptions bridge, NodeOptions options);
+  // Throws std::runtime_error when its nodes cannot be made. `bridge` outlives the SimNode.
+  SimNode(Participant& participant, Outbox& outbox, bridge::SimBridge& bridge, NodeOptions options);
   ~SimNode();
   SimNode(const SimNode&) = delete;
   SimNode& operator=(const SimNode&) = delete;
 
-  void start();  // the loop thread
-  void stop();   // joins it
+  // Its outputs on (the bridge's tick observer publishes) and off (the model is leaving).
+  void start();
+  void stop();
   bridge::SimBridge& bridge() { return *bridge_; }
   Participant& participant() { return *participant_; }
+  const NodeOptions& options() const { return options_; }
+  // Loop thread, while the world is paused: /tf once after a change (a reset, a set state).
+  void on_idle(double time);
 
   // Loads a controller and makes its node and topics; refusals name why.
   bridge::BridgeResult load_controller(const std::string& name);
   // Loads (when not loaded) and starts these controllers, best effort; the result names what failed.
   bridge::BridgeResult start_controllers(const std::vector<std::string>& names);
-  // Stops every controller, drops their topics and unloads them (the loop stopped first).
-  void unload_all_controllers();
+  // Drops a controller's topics and unloads it (it must not be running).
+  bridge::BridgeResult unload_controller(const std::string& name);
+  // Stops every controller, drops their topics and unloads them (outputs stopped first); how
+  // many were loaded.
+  std::size_t unload_all_controllers();
+  // ros2_control's controller manager services on `<ns>/controller_manager` (controller_manager.cpp).
+  ControllerManagerNode* controller_manager() { return manager_.get(); }
   // Publishing on (the default) or off: off, a tick publishes nothing and samples no sensor, as
   // without the ROS 2 layer (`mechsim ros2 --bench-rtf` measures what publishing costs). Any thread.
   void set_publishing(bool on) { publishing_.store(on, std::memory_order_relaxed); }
@@ -91,21 +98,15 @@ class SimNode {
 
  private:
   struct Binding;
-  void loop();
   void on_tick(double time);
-  void publish_clock(double time);
   void publish_controller_states(double time);  // controller_topics.cpp
   void bind(const std::string& controller);       // controller_topics.cpp
   void unbind(const std::string& controller);     // controller_topics.cpp
 
   NodeOptions options_;
-  std::unique_ptr<Participant> participant_;
-  std::unique_ptr<bridge::SimBridge> bridge_;
-  std::unique_ptr<Node> gazebo_node_;
-  std::unique_ptr<Node> manager_node_;
-  std::unique_ptr<Publisher<rosgraph_msgs::msg::Clock>> clock_pub_;
-  std::unique_ptr<Outbox> outbox_;  // writes what the loop thread fills (outbox.hpp)
-  std::vector<std::unique_ptr<ServiceServer<std_srvs::srv::Empty>>> world_services_;
+  Participant* participant_;
+  bridge::SimBridge* bridge_;
+  Outbox* outbox_;  // writes what the loop thread fills (outbox.hpp)
   std::unique_ptr<StatePublisher> state_;
   std::unique_ptr<SensorTopics> sensors_;
 
@@ -114,14 +115,14 @@ class SimNode {
   std::vector<std::unique_ptr<Node>> controller_nodes_;  // under bindings_mutex_
   std::mutex manager_mutex_;                             // one load/switch at a time
 
-  std::thread loop_thread_;
-  std::atomic<bool> stop_{false};
+  std::unique_ptr<ControllerManagerNode> manager_;  // after the bindings' members: goes first
+  // The tick observer's: false once stop() ran (the bridge keeps its observer while it lives).
+  std::shared_ptr<std::atomic<bool>> running_ = std::make_shared<std::atomic<bool>>(false);
+  bool observing_ = false;
   std::atomic<bool> publishing_{true};
-  double next_clock_ = 0.0, next_tf_ = 0.0, last_tf_ = -1.0;
-  std::chrono::steady_clock::time_point last_clock_{};
+  double next_tf_ = 0.0, last_tf_ = -1.0;
   std::vector<double> joint_positions_;
-  std::string divergence_;
-  std::atomic<std::uint64_t> clock_messages_{0}, tf_messages_{0}, commands_{0}, commands_rejected_{0};
+  std::atomic<std::uint64_t> tf_messages_{0}, commands_{0}, commands_rejected_{0};
   std::vector<std::string> topic_lines_;  // under bindings_mutex_
 };
 

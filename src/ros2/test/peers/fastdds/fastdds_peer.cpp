@@ -9,6 +9,11 @@
 //                                           odometry imu string graph;  QOS: be rel tl
 //       [--pub TOPIC=KIND:VALUES]...  twist twist_stamped float64_array string trajectory
 //       [--rate HZ]
+//       [--request SERVICE=PKG/srv/TYPE=JSON[@N]]...  call any service of the definitions below
+//                                     with that request (N times at once: every reply matched by
+//                                     its related_sample_identity), in order, before --call;
+//                                     prints {"service","form","available","replies","sent",
+//                                     "response" (the first reply, decoded),"ms"}
 //       [--call SERVICE=empty]...     call a std_srvs/srv/Empty service first, as an rmw_fastrtps_cpp
 //                                     client does (reply reader GUID as the request's
 //                                     related_sample_identity; the reply matched by its
@@ -105,6 +110,93 @@ std::map<std::string, Fields> definitions(const std::string& distro) {
       {"std_srvs/srv/Empty_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
       {"std_srvs/srv/Empty_Response", {{"structure_needs_at_least_one_member", "uint8"}}},
       {"rmw_dds_common/Gid", {{"data", distro == "humble" ? "uint8[24]" : "uint8[16]"}}},
+      // Services of issue 37, from the official definitions (gazebo_ros_pkgs ros2, ros2_control
+      // humble and jazzy, rcl_interfaces, action_msgs, control_msgs).
+      {"geometry_msgs/Pose", {{"position", "geometry_msgs/Point"}, {"orientation", "geometry_msgs/Quaternion"}}},
+      {"gazebo_msgs/EntityState",
+       {{"name", "string"}, {"pose", "geometry_msgs/Pose"}, {"twist", "geometry_msgs/Twist"}, {"reference_frame", "string"}}},
+      {"gazebo_msgs/srv/SpawnEntity_Request",
+       {{"name", "string"}, {"xml", "string"}, {"robot_namespace", "string"}, {"initial_pose", "geometry_msgs/Pose"},
+        {"reference_frame", "string"}}},
+      {"gazebo_msgs/srv/SpawnEntity_Response", {{"success", "bool"}, {"status_message", "string"}}},
+      {"gazebo_msgs/srv/DeleteEntity_Request", {{"name", "string"}}},
+      {"gazebo_msgs/srv/DeleteEntity_Response", {{"success", "bool"}, {"status_message", "string"}}},
+      {"gazebo_msgs/srv/GetEntityState_Request", {{"name", "string"}, {"reference_frame", "string"}}},
+      {"gazebo_msgs/srv/GetEntityState_Response",
+       {{"header", "std_msgs/Header"}, {"state", "gazebo_msgs/EntityState"}, {"success", "bool"}}},
+      {"gazebo_msgs/srv/SetEntityState_Request", {{"state", "gazebo_msgs/EntityState"}}},
+      {"gazebo_msgs/srv/SetEntityState_Response", {{"success", "bool"}}},
+      {"gazebo_msgs/srv/GetModelList_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"gazebo_msgs/srv/GetModelList_Response", {{"header", "std_msgs/Header"}, {"model_names", "string[]"}, {"success", "bool"}}},
+      {"controller_manager_msgs/ChainConnection", {{"name", "string"}, {"reference_interfaces", "string[]"}}},
+      {"controller_manager_msgs/ControllerState",
+       distro == "humble"
+           ? Fields{{"name", "string"}, {"state", "string"}, {"type", "string"}, {"claimed_interfaces", "string[]"},
+                    {"required_command_interfaces", "string[]"}, {"required_state_interfaces", "string[]"},
+                    {"is_chainable", "bool"}, {"is_chained", "bool"},
+                    {"chain_connections", "controller_manager_msgs/ChainConnection[]"}}
+           : Fields{{"name", "string"}, {"state", "string"}, {"type", "string"}, {"claimed_interfaces", "string[]"},
+                    {"required_command_interfaces", "string[]"}, {"required_state_interfaces", "string[]"},
+                    {"is_chainable", "bool"}, {"is_chained", "bool"}, {"exported_state_interfaces", "string[]"},
+                    {"reference_interfaces", "string[]"}, {"chain_connections", "controller_manager_msgs/ChainConnection[]"}}},
+      {"controller_manager_msgs/HardwareInterface", {{"name", "string"}, {"is_available", "bool"}, {"is_claimed", "bool"}}},
+      {"lifecycle_msgs/State", {{"id", "uint8"}, {"label", "string"}}},
+      {"controller_manager_msgs/HardwareComponentState",
+       {{"name", "string"}, {"type", "string"}, {distro == "humble" ? "class_type" : "plugin_name", "string"},
+        {"state", "lifecycle_msgs/State"}, {"command_interfaces", "controller_manager_msgs/HardwareInterface[]"},
+        {"state_interfaces", "controller_manager_msgs/HardwareInterface[]"}}},
+      {"controller_manager_msgs/srv/ListControllers_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"controller_manager_msgs/srv/ListControllers_Response", {{"controller", "controller_manager_msgs/ControllerState[]"}}},
+      {"controller_manager_msgs/srv/ListControllerTypes_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"controller_manager_msgs/srv/ListControllerTypes_Response", {{"types", "string[]"}, {"base_classes", "string[]"}}},
+      {"controller_manager_msgs/srv/ListHardwareInterfaces_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"controller_manager_msgs/srv/ListHardwareInterfaces_Response",
+       {{"command_interfaces", "controller_manager_msgs/HardwareInterface[]"},
+        {"state_interfaces", "controller_manager_msgs/HardwareInterface[]"}}},
+      {"controller_manager_msgs/srv/ListHardwareComponents_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
+      {"controller_manager_msgs/srv/ListHardwareComponents_Response",
+       {{"component", "controller_manager_msgs/HardwareComponentState[]"}}},
+      {"controller_manager_msgs/srv/LoadController_Request", {{"name", "string"}}},
+      {"controller_manager_msgs/srv/LoadController_Response", {{"ok", "bool"}}},
+      {"controller_manager_msgs/srv/ConfigureController_Request", {{"name", "string"}}},
+      {"controller_manager_msgs/srv/ConfigureController_Response", {{"ok", "bool"}}},
+      {"controller_manager_msgs/srv/UnloadController_Request", {{"name", "string"}}},
+      {"controller_manager_msgs/srv/UnloadController_Response", {{"ok", "bool"}}},
+      {"controller_manager_msgs/srv/ReloadControllerLibraries_Request", {{"force_kill", "bool"}}},
+      {"controller_manager_msgs/srv/ReloadControllerLibraries_Response", {{"ok", "bool"}}},
+      {"controller_manager_msgs/srv/SetHardwareComponentState_Request", {{"name", "string"}, {"target_state", "lifecycle_msgs/State"}}},
+      {"controller_manager_msgs/srv/SetHardwareComponentState_Response", {{"ok", "bool"}, {"state", "lifecycle_msgs/State"}}},
+      {"controller_manager_msgs/srv/SwitchController_Request",
+       distro == "humble"
+           ? Fields{{"activate_controllers", "string[]"}, {"deactivate_controllers", "string[]"},
+                    {"start_controllers", "string[]"}, {"stop_controllers", "string[]"}, {"strictness", "int32"},
+                    {"activate_asap", "bool"}, {"start_asap", "bool"}, {"timeout", "builtin_interfaces/Duration"}}
+           : Fields{{"activate_controllers", "string[]"}, {"deactivate_controllers", "string[]"}, {"strictness", "int32"},
+                    {"activate_asap", "bool"}, {"timeout", "builtin_interfaces/Duration"}}},
+      {"controller_manager_msgs/srv/SwitchController_Response", {{"ok", "bool"}}},
+      {"rcl_interfaces/ParameterValue",
+       {{"type", "uint8"}, {"bool_value", "bool"}, {"integer_value", "int64"}, {"double_value", "float64"},
+        {"string_value", "string"}, {"byte_array_value", "uint8[]"}, {"bool_array_value", "bool[]"},
+        {"integer_array_value", "int64[]"}, {"double_array_value", "float64[]"}, {"string_array_value", "string[]"}}},
+      {"rcl_interfaces/Parameter", {{"name", "string"}, {"value", "rcl_interfaces/ParameterValue"}}},
+      {"rcl_interfaces/SetParametersResult", {{"successful", "bool"}, {"reason", "string"}}},
+      {"rcl_interfaces/ListParametersResult", {{"names", "string[]"}, {"prefixes", "string[]"}}},
+      {"rcl_interfaces/FloatingPointRange", {{"from_value", "float64"}, {"to_value", "float64"}, {"step", "float64"}}},
+      {"rcl_interfaces/IntegerRange", {{"from_value", "int64"}, {"to_value", "int64"}, {"step", "uint64"}}},
+      {"rcl_interfaces/ParameterDescriptor",
+       {{"name", "string"}, {"type", "uint8"}, {"description", "string"}, {"additional_constraints", "string"},
+        {"read_only", "bool"}, {"dynamic_typing", "bool"}, {"floating_point_range", "rcl_interfaces/FloatingPointRange[]"},
+        {"integer_range", "rcl_interfaces/IntegerRange[]"}}},
+      {"rcl_interfaces/srv/ListParameters_Request", {{"prefixes", "string[]"}, {"depth", "uint64"}}},
+      {"rcl_interfaces/srv/ListParameters_Response", {{"result", "rcl_interfaces/ListParametersResult"}}},
+      {"rcl_interfaces/srv/GetParameters_Request", {{"names", "string[]"}}},
+      {"rcl_interfaces/srv/GetParameters_Response", {{"values", "rcl_interfaces/ParameterValue[]"}}},
+      {"rcl_interfaces/srv/SetParameters_Request", {{"parameters", "rcl_interfaces/Parameter[]"}}},
+      {"rcl_interfaces/srv/SetParameters_Response", {{"results", "rcl_interfaces/SetParametersResult[]"}}},
+      {"rcl_interfaces/srv/DescribeParameters_Request", {{"names", "string[]"}}},
+      {"rcl_interfaces/srv/DescribeParameters_Response", {{"descriptors", "rcl_interfaces/ParameterDescriptor[]"}}},
+      {"rcl_interfaces/srv/GetParameterTypes_Request", {{"names", "string[]"}}},
+      {"rcl_interfaces/srv/GetParameterTypes_Response", {{"types", "uint8[]"}}},
       {"rmw_dds_common/NodeEntitiesInfo",
        {{"node_namespace", "string"}, {"node_name", "string"}, {"reader_gid_seq", "rmw_dds_common/Gid[]"},
         {"writer_gid_seq", "rmw_dds_common/Gid[]"}}},
@@ -142,7 +234,8 @@ class Types {
     // "pkg/Name" is a message (pkg::msg::dds_::Name_), "pkg/srv/Name_Request" a service's part.
     const auto slash = name.find('/');
     const bool srv = name.find("/srv/") != std::string::npos;
-    b->set_name(name.substr(0, slash) + (srv ? "::srv::dds_::" : "::msg::dds_::") +
+    const bool action = name.find("/action/") != std::string::npos;
+    b->set_name(name.substr(0, slash) + (srv ? "::srv::dds_::" : action ? "::action::dds_::" : "::msg::dds_::") +
                 name.substr(name.rfind('/') + 1) + "_");
     types::MemberId id = 0;
     for (const auto& [field, type] : defs_.at(name)) b->add_member(id++, field, element(parse_type(type)));
@@ -154,6 +247,10 @@ class Types {
   types::DynamicType_ptr primitive(const std::string& t) {
     auto* f = types::DynamicTypeBuilderFactory::get_instance();
     if (t == "int32") return f->create_int32_type();
+    if (t == "int64") return f->create_int64_type();
+    if (t == "uint64") return f->create_uint64_type();
+    if (t == "uint16") return f->create_uint16_type();
+    if (t == "int8") return f->create_char8_type();  // one byte on the wire
     if (t == "uint32") return f->create_uint32_type();
     if (t == "float32") return f->create_float32_type();
     if (t == "float64") return f->create_float64_type();
@@ -176,6 +273,10 @@ class Types {
 // ---- DynamicData <-> JSON, field by field along the definitions
 json read_value(Types& t, types::DynamicData* d, types::MemberId id, const std::string& base) {
   if (base == "int32") return d->get_int32_value(id);
+  if (base == "int64") return d->get_int64_value(id);
+  if (base == "uint64") return d->get_uint64_value(id);
+  if (base == "uint16") return d->get_uint16_value(id);
+  if (base == "int8") return static_cast<int>(static_cast<signed char>(d->get_char8_value(id)));
   if (base == "uint32") return d->get_uint32_value(id);
   if (base == "float32") return d->get_float32_value(id);
   if (base == "float64") return d->get_float64_value(id);
@@ -225,6 +326,10 @@ void write_message(Types& t, types::DynamicData* d, const std::string& name, con
 
 void write_value(Types& t, types::DynamicData* d, types::MemberId id, const std::string& base, const json& v) {
   if (base == "int32") d->set_int32_value(v.get<std::int32_t>(), id);
+  else if (base == "int64") d->set_int64_value(v.get<std::int64_t>(), id);
+  else if (base == "uint64") d->set_uint64_value(v.get<std::uint64_t>(), id);
+  else if (base == "uint16") d->set_uint16_value(v.get<std::uint16_t>(), id);
+  else if (base == "int8") d->set_char8_value(static_cast<char>(v.get<int>()), id);
   else if (base == "uint32") d->set_uint32_value(v.get<std::uint32_t>(), id);
   else if (base == "float32") d->set_float32_value(v.get<float>(), id);
   else if (base == "float64") d->set_float64_value(v.get<double>(), id);
@@ -251,6 +356,9 @@ void write_message(Types& t, types::DynamicData* d, const std::string& name, con
           types::MemberId index = 0;
           if (ft.base == "float64") seq->insert_float64_value(item.get<double>(), index);
           else if (ft.base == "string") seq->insert_string_value(item.get<std::string>(), index);
+          else if (ft.base == "int64") seq->insert_int64_value(item.get<std::int64_t>(), index);
+          else if (ft.base == "bool") seq->insert_bool_value(item.get<bool>(), index);
+          else if (ft.base == "uint8") seq->insert_byte_value(item.get<std::uint8_t>(), index);
           else {
             types::DynamicData* element = types::DynamicDataFactory::get_instance()->create_data(t.get(ft.base));
             write_message(t, element, ft.base, item);
@@ -418,6 +526,12 @@ int main(int argc, char** argv) {
   std::vector<Sub> subs;
   std::vector<Pub> pubs;
   std::vector<std::string> calls;
+  struct Request {
+    std::string service, type;
+    json body;
+    int count = 1;
+  };
+  std::vector<Request> requests;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
@@ -425,6 +539,25 @@ int main(int argc, char** argv) {
     else if (a == "--seconds" && more) seconds = std::atof(argv[++i]);
     else if (a == "--rate" && more) rate = std::atof(argv[++i]);
     else if (a == "--distro" && more) distro = argv[++i];
+    else if (a == "--request" && more) {
+      const std::string spec = argv[++i];
+      const auto eq1 = spec.find('=');
+      const auto eq2 = spec.find('=', eq1 + 1);
+      if (eq1 == std::string::npos || eq2 == std::string::npos) {
+        std::fprintf(stderr, "fastdds_peer: --request SERVICE=PKG/srv/TYPE=JSON[@N]\n");
+        return 2;
+      }
+      Request r;
+      r.service = spec.substr(0, eq1);
+      r.type = spec.substr(eq1 + 1, eq2 - eq1 - 1);
+      std::string body = spec.substr(eq2 + 1);
+      if (const auto at = body.rfind('@'); at != std::string::npos && body.find('}', at) == std::string::npos) {
+        r.count = std::atoi(body.c_str() + at + 1);
+        body = body.substr(0, at);
+      }
+      r.body = json::parse(body);
+      requests.push_back(r);
+    }
     else if (a == "--call" && more) {
       const std::string spec = argv[++i];
       if (spec.size() < 7 || spec.substr(spec.size() - 6) != "=empty") {
@@ -475,6 +608,66 @@ int main(int argc, char** argv) {
     support.register_type(pp);
     return topics[name] = pp->create_topic(name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   };
+  auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+  for (const Request& rq_spec : requests) {
+    // As rmw_fastrtps_cpp's client: request writer and reply reader (services' default QoS); the
+    // reply reader's GUID in each request's related_sample_identity; replies matched by theirs.
+    fdds::DataWriterQos wq = fdds::DATAWRITER_QOS_DEFAULT;
+    wq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    wq.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    wq.history().depth = std::max(10, rq_spec.count);
+    wq.endpoint().history_memory_policy = eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+    fdds::DataReaderQos rq = fdds::DATAREADER_QOS_DEFAULT;
+    rq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
+    rq.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+    rq.history().depth = std::max(10, rq_spec.count);
+    rq.endpoint().history_memory_policy = eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+    const std::string req_type = rq_spec.type + "_Request", rep_type = rq_spec.type + "_Response";
+    fdds::DataWriter* w = publisher->create_datawriter(topic_for("rq" + rq_spec.service + "Request", req_type), wq);
+    fdds::DataReader* r = subscriber->create_datareader(topic_for("rr" + rq_spec.service + "Reply", rep_type), rq);
+    const auto t0 = std::chrono::steady_clock::now();
+    bool available = false;
+    while (!available && since(t0) < 8.0) {
+      fdds::PublicationMatchedStatus pm;
+      fdds::SubscriptionMatchedStatus sm;
+      w->get_publication_matched_status(pm);
+      r->get_subscription_matched_status(sm);
+      available = pm.current_count > 0 && sm.current_count > 0;
+      if (!available) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    types::DynamicData_ptr request(types::DynamicDataFactory::get_instance()->create_data(types_.get(req_type)));
+    types::DynamicData_ptr reply(types::DynamicDataFactory::get_instance()->create_data(types_.get(rep_type)));
+    write_message(types_, request.get(), req_type, rq_spec.body);
+    const auto t1 = std::chrono::steady_clock::now();
+    std::vector<eprosima::fastrtps::rtps::SampleIdentity> sent;
+    for (int k = 0; available && k < rq_spec.count; ++k) {
+      eprosima::fastrtps::rtps::WriteParams params;
+      params.related_sample_identity().writer_guid(r->guid());
+      if (w->write(request.get(), params)) sent.push_back(params.sample_identity());
+    }
+    int replies = 0, foreign = 0;
+    json first;
+    std::vector<bool> got(sent.size(), false);
+    while (replies < static_cast<int>(sent.size()) && since(t1) < 30.0) {
+      fdds::SampleInfo info;
+      while (r->take_next_sample(reply.get(), &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+        if (!info.valid_data) continue;
+        const auto it = std::find(sent.begin(), sent.end(), info.related_sample_identity);
+        if (it == sent.end() || got[it - sent.begin()]) {
+          ++foreign;
+          continue;
+        }
+        got[it - sent.begin()] = true;
+        if (replies++ == 0) first = read_message(types_, reply.get(), rep_type);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    std::printf("%s\n", json{{"service", rq_spec.service}, {"form", "rmw_fastrtps"}, {"available", available},
+                             {"sent", sent.size()}, {"replies", replies}, {"foreign", foreign}, {"response", first},
+                             {"ms", 1e3 * since(t1)}}.dump().c_str());
+    publisher->delete_datawriter(w);
+    subscriber->delete_datareader(r);
+  }
   for (const std::string& service : calls) {
     fdds::DataWriterQos wq = fdds::DATAWRITER_QOS_DEFAULT;  // rmw_qos_profile_services_default
     wq.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
@@ -487,7 +680,6 @@ int main(int argc, char** argv) {
     fdds::DataWriter* w = publisher->create_datawriter(topic_for("rq" + service + "Request", "std_srvs/srv/Empty_Request"), wq);
     fdds::DataReader* r = subscriber->create_datareader(topic_for("rr" + service + "Reply", "std_srvs/srv/Empty_Response"), rq);
     auto t0 = std::chrono::steady_clock::now();
-    auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
     bool available = false;
     while (!available && since(t0) < 5.0) {
       fdds::PublicationMatchedStatus pm;
