@@ -12,11 +12,6 @@
 
 namespace mechsim::ros2 {
 
-struct WorldNode::Services {
-  std::unique_ptr<Node> state_node;  // gazebo_ros_state's
-  std::vector<std::shared_ptr<void>> servers;
-};
-
 namespace {
 
 using gazebo_msgs::srv::DeleteEntity;

@@ -86,7 +86,10 @@ class WorldNode : public bridge::WorldBinding {
   void info(const std::string& message) override;
 
  private:
-  struct Services;  // gazebo_ros' services (gazebo_services.cpp)
+  struct Services {  // gazebo_ros' services (gazebo_services.cpp)
+    std::unique_ptr<Node> state_node;  // gazebo_ros_state's
+    std::vector<std::shared_ptr<void>> servers;
+  };
   void advertise_services();
   void publish_clock(double time);
 
