@@ -210,6 +210,33 @@ TEST_P(WorldServicesWire, TwoHundredConcurrentCallsFromFourClients) {
   EXPECT_GT(r1, 0.9 * r0) << r0 << " before, " << r1 << " during";
 }
 
+// gazebo_msgs/srv/GetModelList from a Cyclone DDS client (rmw_cyclonedds' in-payload header,
+// types compiled by idlc) and a Fast DDS client (rmw_fastrtps' related sample identity) at once.
+TEST_P(WorldServicesWire, ModelListFromBothMiddlewaresAtOnce) {
+  const std::string distro = GetParam();
+  auto args = ros2bot_args();
+  args.insert(args.end(), {"--ros-distro", distro, "--real-time-factor", "1"});
+  start_mechsim(args);
+  Process& cyclone = start_cyclone(distro, {"--call", "/get_model_list=model_list", "--seconds", "0.1"});
+  std::vector<std::string> a{"--seconds", "0.1"};
+  request(a, "/get_model_list", "gazebo_msgs/srv/GetModelList", {}, 5);
+  const auto fast = replies(run_fastdds(distro, a, "client"));
+  const auto status = cyclone.wait(std::chrono::seconds(30));
+  ASSERT_TRUE(status && *status == 0) << cyclone.output();
+  const std::string log = stop_mechsim();
+  nlohmann::json c;
+  for (const auto& l : json_lines(cyclone.output()))
+    if (l.contains("service")) c = l;
+  ASSERT_FALSE(c.is_null()) << cyclone.output();
+  EXPECT_EQ(c["form"], "rmw_cyclonedds");
+  EXPECT_TRUE(c["reply"].get<bool>()) << c << "\n" << log;
+  EXPECT_TRUE(c["success"].get<bool>()) << c;
+  EXPECT_EQ(c["model_names"], nlohmann::json::array({"ground_plane", "ros2bot"})) << c;
+  ASSERT_EQ(fast.size(), 1u);
+  EXPECT_EQ(fast[0]["replies"], 5) << fast[0];
+  EXPECT_EQ(fast[0]["response"]["model_names"], nlohmann::json::array({"ground_plane", "ros2bot"}));
+}
+
 INSTANTIATE_TEST_SUITE_P(Distros, WorldServicesWire, ::testing::Values("humble", "jazzy"),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
 

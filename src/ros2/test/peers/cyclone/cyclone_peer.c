@@ -17,7 +17,7 @@
  *       [--endpoints]                      print the USER_DATA of every peer writer (type hashes)
  *       [--count-only]                     count samples without decoding them (a light
  *                                          subscriber for benchmarks)
- *       [--call SERVICE=empty]...          call a std_srvs/srv/Empty service first, as an
+ *       [--call SERVICE=empty|model_list]... call a std_srvs/srv/Empty (or gazebo_msgs/srv/GetModelList) service first, as an
  *                                          rmw_cyclonedds_cpp client does (header in the payload,
  *                                          "clientid=" USER_DATA); prints {"service":...,"reply":...}
  *                                          and only then subscribes and publishes
@@ -489,7 +489,7 @@ static void print_endpoints(dds_entity_t reader) {
 /* One call of a std_srvs/srv/Empty service in rmw_cyclonedds' form: waits (at most 5 s) until
  * the service is there (a matched request reader and reply writer), writes the request with its
  * header, waits (at most 3 s) for the reply carrying the same header. */
-static void call_empty(dds_entity_t pp, const char* service, int index) {
+static void call_service(dds_entity_t pp, const char* service, int index, int model_list) {
   char rq[300], rr[300], user[64];
   snprintf(rq, sizeof rq, "rq%sRequest", service);
   snprintf(rr, sizeof rr, "rr%sReply", service);
@@ -498,8 +498,10 @@ static void call_empty(dds_entity_t pp, const char* service, int index) {
   dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
   dds_qset_history(q, DDS_HISTORY_KEEP_LAST, 10);
   dds_qset_userdata(q, user, strlen(user));
-  const dds_entity_t wt = dds_create_topic(pp, &std_srvs_srv_dds__Empty_Request__desc, rq, NULL, NULL);
-  const dds_entity_t rt = dds_create_topic(pp, &std_srvs_srv_dds__Empty_Response__desc, rr, NULL, NULL);
+  const dds_entity_t wt = dds_create_topic(
+      pp, model_list ? &gazebo_msgs_srv_dds__GetModelList_Request__desc : &std_srvs_srv_dds__Empty_Request__desc, rq, NULL, NULL);
+  const dds_entity_t rt = dds_create_topic(
+      pp, model_list ? &gazebo_msgs_srv_dds__GetModelList_Response__desc : &std_srvs_srv_dds__Empty_Response__desc, rr, NULL, NULL);
   const dds_entity_t w = dds_create_writer(pp, wt, q, NULL);
   const dds_entity_t r = dds_create_reader(pp, rt, q, NULL);
   dds_delete_qos(q);
@@ -514,6 +516,7 @@ static void call_empty(dds_entity_t pp, const char* service, int index) {
     struct timespec nap = {0, 5000000};
     if (!available) nanosleep(&nap, NULL);
   }
+  /* Both requests are {client_id, seq, uint8}: one layout. */
   std_srvs_srv_dds__Empty_Request_ req;
   memset(&req, 0, sizeof req);
   dds_instance_handle_t ih = 0;
@@ -522,6 +525,8 @@ static void call_empty(dds_entity_t pp, const char* service, int index) {
   req.seq = 1000 + index;
   const double t1 = wall_now();
   int replied = 0;
+  char models[1024] = "";
+  int success = 0;
   if (available) dds_write(w, &req);
   void* samples[BATCH] = {0};
   dds_sample_info_t infos[BATCH];
@@ -529,14 +534,31 @@ static void call_empty(dds_entity_t pp, const char* service, int index) {
     int n = dds_take(r, samples, infos, BATCH, BATCH);
     for (int j = 0; j < n; ++j) {
       const std_srvs_srv_dds__Empty_Response_* rep = samples[j];
-      if (infos[j].valid_data && rep->client_id == req.client_id && rep->seq == req.seq) replied = 1;
+      if (infos[j].valid_data && rep->client_id == req.client_id && rep->seq == req.seq) {
+        replied = 1;
+        if (model_list) {
+          const gazebo_msgs_srv_dds__GetModelList_Response_* m = samples[j];
+          success = m->success;
+          for (uint32_t k = 0; k < m->model_names._length; ++k) {
+            const size_t used = strlen(models);
+            snprintf(models + used, sizeof models - used, "%s\"%s\"", k ? "," : "", m->model_names._buffer[k]);
+          }
+        }
+      }
     }
     if (n > 0) dds_return_loan(r, samples, n);
     struct timespec nap = {0, 1000000};
     nanosleep(&nap, NULL);
   }
-  printf("{\"service\":\"%s\",\"form\":\"rmw_cyclonedds\",\"available\":%s,\"reply\":%s,\"ms\":%.1f}\n", service,
-         available ? "true" : "false", replied ? "true" : "false", 1e3 * (wall_now() - t1));
+  if (model_list) {
+    printf("{\"service\":\"%s\",\"form\":\"rmw_cyclonedds\",\"available\":%s,\"reply\":%s,\"success\":%s,"
+           "\"model_names\":[%s],\"ms\":%.1f}\n",
+           service, available ? "true" : "false", replied ? "true" : "false", success ? "true" : "false", models,
+           1e3 * (wall_now() - t1));
+  } else {
+    printf("{\"service\":\"%s\",\"form\":\"rmw_cyclonedds\",\"available\":%s,\"reply\":%s,\"ms\":%.1f}\n", service,
+           available ? "true" : "false", replied ? "true" : "false", 1e3 * (wall_now() - t1));
+  }
   dds_delete(r);
   dds_delete(w);
 }
@@ -549,6 +571,7 @@ int main(int argc, char** argv) {
   pub_t pubs[MAX_TOPICS];
   int nsubs = 0, npubs = 0, ncalls = 0;
   const char* calls[MAX_TOPICS];
+  int call_kind[MAX_TOPICS] = {0};
   memset(subs, 0, sizeof subs);
   memset(pubs, 0, sizeof pubs);
   for (int i = 1; i < argc; ++i) {
@@ -563,7 +586,11 @@ int main(int argc, char** argv) {
     else if (strcmp(a, "--call") == 0 && v && ncalls < MAX_TOPICS) {
       char* spec = argv[++i];
       char* eq = strchr(spec, '=');
-      if (!eq || strcmp(eq + 1, "empty") != 0) { fprintf(stderr, "cyclone_peer: --call SERVICE=empty\n"); return 2; }
+      if (!eq || (strcmp(eq + 1, "empty") != 0 && strcmp(eq + 1, "model_list") != 0)) {
+        fprintf(stderr, "cyclone_peer: --call SERVICE=empty|model_list\n");
+        return 2;
+      }
+      call_kind[ncalls] = strcmp(eq + 1, "model_list") == 0;
       *eq = '\0';
       calls[ncalls++] = spec;
     }
@@ -601,7 +628,7 @@ int main(int argc, char** argv) {
   const dds_entity_t pp = dds_create_participant((dds_domainid_t)domain, pq, NULL);
   dds_delete_qos(pq);
   if (pp < 0) { fprintf(stderr, "cyclone_peer: dds_create_participant: %s\n", dds_strretcode(-pp)); return 1; }
-  for (int i = 0; i < ncalls; ++i) call_empty(pp, calls[i], i);
+  for (int i = 0; i < ncalls; ++i) call_service(pp, calls[i], i, call_kind[i]);
   for (int i = 0; i < nsubs; ++i) {
     sub_t* s = &subs[i];
     const dds_topic_descriptor_t* desc = NULL;
