@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "description/ros2_control.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/urdf/urdf_reading.hpp"
 #include "description/urdf/validation.hpp"
@@ -278,6 +279,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   detail::precheck_urdf(*robot, problems, skeleton);
   detail::read_transmissions(*robot, problems, skeleton);
   detail::read_gazebo(*robot, problems, skeleton);
+  detail::read_ros2_control(*robot, problems, skeleton);
   ValidationReport& report = problems.report();
   validate_structure(skeleton, report);
   if (!report.ok()) throw_problems(source_name, report.errors);
@@ -329,6 +331,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   model.gazebo_joints = std::move(skeleton.gazebo_joints);
   model.plugins = std::move(skeleton.plugins);
   model.sensors = std::move(skeleton.sensors);
+  model.ros2_control = std::move(skeleton.ros2_control);
 
   for (const std::string& m : urdfdom_messages) report.warnings.push_back(location(source_name, 0) + "urdfdom: " + m);
   if (!unresolved.empty()) {
@@ -338,6 +341,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   }
   validate_physics(model, ValidationOptions{options.lenient}, report);
   validate_references(model, report);
+  if (report.ok()) detail::check_ros2_control(model, problems);
   if (!report.ok()) throw_problems(source_name, report.errors);
   for (Joint& j : model.joints) normalize_axis(j.axis);
   if (warnings != nullptr) warnings->insert(warnings->end(), report.warnings.begin(), report.warnings.end());
