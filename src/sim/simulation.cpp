@@ -8,6 +8,8 @@
 #include <thread>
 
 #include "controllers/builtin_controllers.hpp"
+#include "controllers/ros2_control/ros2_controllers.hpp"
+#include "description/ros2_control.hpp"
 #include "controllers/plugins/model_plugins.hpp"
 #include "controllers/drive/diff_drive_params.hpp"
 #include "controllers/drive/pr2_base_params.hpp"
@@ -71,7 +73,8 @@ void fill_description_params(const control::Params& controllers, const descripti
 
 control::ControlResult Simulation::load_controller(const std::string& name) {
   try {
-    if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map()) {
+    // ros2_controllers take no geometry from the description.
+    if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map() && !options_.ros2_control) {
       const std::string type = p->get<std::string>("type", "");
       if (type == control::kRoverDriveControllerType) control::fill_rover_drive_geometry(*p, robot_);
       if (type == control::kDiffDriveControllerType) control::fill_diff_drive_geometry(*p, robot_);
@@ -96,6 +99,11 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     throw std::invalid_argument("simulation start time must be finite and >= 0 s");
   }
   ticks_ = static_cast<std::uint64_t>(std::llround(options_.start_time / options_.period));
+  // ros2_control's initial_value: where Gazebo's systems put the joints at load (a scenario's or
+  // spawn_model's -J wins).
+  for (const auto& [joint, position] : description::ros2_control_initial_positions(robot_)) {
+    options_.initial_joints.emplace(joint, position);
+  }
   if (!(options_.real_time_factor >= 0.0)) {
     throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
   }
@@ -175,7 +183,7 @@ void Simulation::build_robot(control::Params controller_params) {
   }
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   mechanism_state_->base.floating = floating_;
-  fill_description_params(controller_params, robot_);
+  if (!options_.ros2_control) fill_description_params(controller_params, robot_);
   // gazebo_ros_control's plugin element: its pid_gains (read now, as DefaultRobotHWSim reads them
   // at load) and a RobotHWSim mechsim cannot load.
   const std::optional<description::RosControlPlugin> ros_control = description::find_ros_control_plugin(robot_);
@@ -202,8 +210,26 @@ void Simulation::build_robot(control::Params controller_params) {
       plugin_notes_.emplace_back(note);
     }
   }
-  manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
-                                                         control::controller_registry_with_plugins());
+  if (options_.controller_update_rate > 0.0) {
+    // ros2_control's update_rate (gazebo_ros2_control: the control period against the step).
+    const double rate = options_.controller_update_rate;
+    const long long n = std::llround(1.0 / (rate * options_.period));
+    control_every_ = static_cast<std::uint64_t>(std::max(1LL, n));
+    char note[1024];
+    if (1.0 / rate < options_.period * (1.0 - 1e-9)) {
+      std::snprintf(note, sizeof note, "controller manager update_rate %g Hz is faster than the simulation (period %g s): "
+                    "the controllers update every tick", rate, options_.period);
+      plugin_notes_.emplace_back(note);
+    } else if (std::abs(control_period() - 1.0 / rate) > 1e-9 / rate) {
+      std::snprintf(note, sizeof note, "controller manager update_rate %g Hz is not a whole number of periods (%g s): "
+                    "the controllers update every %g s", rate, options_.period, control_period());
+      plugin_notes_.emplace_back(note);
+    }
+  }
+  manager_ = std::make_unique<control::ControllerManager>(
+      *mechanism_, *mechanism_state_, std::move(controller_params),
+      options_.ros2_control ? control::ros2_controller_registry() : control::controller_registry_with_plugins());
+  if (options_.ros2_control) manager_->set_update_rate(options_.controller_update_rate > 0.0 ? 1.0 / control_period() : 1.0 / options_.period);
 
   const std::size_t n = mechanism_->joints.size();
   physics_joint_.assign(n, -1);

@@ -9,6 +9,8 @@
 #include <string>
 
 #include "description/ros2_control.hpp"
+#include "description/ros2_control_plugin.hpp"
+#include "description/urdf/urdf_parser.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/urdf/urdf_reading.hpp"
 
@@ -163,6 +165,16 @@ void read_ros2_control(const XMLElement& robot, Problems& p, RobotModel& model) 
 }
 
 void check_ros2_control(RobotModel& model, Problems& p) {
+  // The plugin's elements (a bad <hold_joints>, <remapping>, ...) are errors at load, not later.
+  try {
+    const std::optional<Ros2ControlPlugin> plugin = find_ros2_control_plugin(model);
+    if (plugin && model.ros2_control.empty()) {
+      p.report().warnings.push_back(plugin->origin + ": " + plugin->filename +
+                                    " but no <ros2_control> tag: the controller manager has no hardware");
+    }
+  } catch (const DescriptionError& e) {
+    p.report().errors.push_back(e.what());
+  }
   std::map<std::string, const Ros2ControlHardware*> joint_owner;
   for (const Ros2ControlHardware& h : model.ros2_control) {
     const std::string what = "<ros2_control name=\"" + h.name + "\">";
