@@ -62,6 +62,7 @@ void ros2_controllers_step(const CheckOptions& options, CheckContext& context, s
   const sim::Ros2ControlConfig config = sim::load_ros2_control_config(robot, files);
   context.warnings.insert(context.warnings.end(), config.notes.begin(), config.notes.end());
   const mechanism::MechanismModel mechanism = mechanism::build_mechanism(robot);
+  sim::fill_description_params(config.setup.controllers, robot, true);
   const control::ControllerPluginSet plugins = control::find_controller_plugins();
   const control::ControllerRegistry registry = control::ros2_controller_registry(plugins);
   for (const std::string& note : registry.notes()) context.warnings.push_back(note);

@@ -65,19 +65,20 @@ bool has_cameras(const description::RobotModel& robot) {
 
 }  // namespace
 
-void fill_description_params(const control::Params& controllers, const description::RobotModel& robot) {
+void fill_description_params(const control::Params& controllers, const description::RobotModel& robot, bool ros2_control) {
   control::fill_rover_drive_geometry_all(controllers, robot);
   control::fill_pr2_base_geometry_all(controllers, robot);
-  control::fill_diff_drive_geometry_all(controllers, robot);
+  // ros2_controllers' diff drive reads no robot description.
+  if (!ros2_control) control::fill_diff_drive_geometry_all(controllers, robot);
 }
 
 control::ControlResult Simulation::load_controller(const std::string& name) {
   try {
-    // ros2_controllers take no geometry from the description.
-    if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map() && !options_.ros2_control) {
+    if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map()) {
       const std::string type = p->get<std::string>("type", "");
       if (type == control::kRoverDriveControllerType) control::fill_rover_drive_geometry(*p, robot_);
-      if (type == control::kDiffDriveControllerType) control::fill_diff_drive_geometry(*p, robot_);
+      // ros2_controllers' diff drive reads no robot description.
+      if (type == control::kDiffDriveControllerType && !options_.ros2_control) control::fill_diff_drive_geometry(*p, robot_);
       if (type == control::kPr2BaseController2Type || type == control::kPr2BaseControllerType ||
           type == control::kPr2OdometryType) {
         control::fill_pr2_base_geometry(*p, robot_);
@@ -183,7 +184,7 @@ void Simulation::build_robot(control::Params controller_params) {
   }
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   mechanism_state_->base.floating = floating_;
-  if (!options_.ros2_control) fill_description_params(controller_params, robot_);
+  fill_description_params(controller_params, robot_, options_.ros2_control);
   // gazebo_ros_control's plugin element: its pid_gains (read now, as DefaultRobotHWSim reads them
   // at load) and a RobotHWSim mechsim cannot load.
   const std::optional<description::RosControlPlugin> ros_control = description::find_ros_control_plugin(robot_);

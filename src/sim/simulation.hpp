@@ -149,8 +149,10 @@ struct TickResult {
 };
 
 // Fills, for every controller under `controllers`, the parameters its type takes from the robot
-// description where they are absent (rover drive and PR2 base/odometry geometry).
-void fill_description_params(const control::Params& controllers, const description::RobotModel& robot);
+// description where they are absent (rover drive and PR2 base/odometry geometry; ros_controllers'
+// diff drive geometry unless `ros2_control`: ros2_controllers' reads no description).
+void fill_description_params(const control::Params& controllers, const description::RobotModel& robot,
+                             bool ros2_control = false);
 
 class Simulation {
  public:
