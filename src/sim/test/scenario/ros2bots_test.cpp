@@ -36,5 +36,26 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, Ros2Bots,
                                          "tricycle_drive"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
 
+// The CC8 and the PR2 on ROS 2 (their ros2_control:=true descriptions and ros2_controllers.yaml):
+// the rover drive and the arm's trajectory meet the checks their ROS 1 scenarios meet.
+class Ros2Robots : public testing::TestWithParam<const char*> {};
+
+TEST_P(Ros2Robots, MeetsItsChecks) {
+  const fs::path file = fs::path(MECHSIM_SOURCE_DIR) / "robots" / (std::string(GetParam()) + ".yaml");
+  const ScenarioResult r = run_scenario(load_scenario(file.string()), RunOptions{});
+  std::cout << "[ figures  ] " << GetParam() << ": final (" << r.final_x << ", " << r.final_y << "), odometry error "
+            << r.odometry_error << " m\n";
+  for (const CheckOutcome& c : r.checks) std::cout << "[ figures  ]   " << (c.passed ? "PASS " : "FAIL ") << c.detail << "\n";
+  ASSERT_TRUE(r.completed) << r.error;
+  EXPECT_TRUE(r.passed);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenarios, Ros2Robots, testing::Values("cc8/scenarios/ros2_straight_5m", "pr2/scenarios/ros2_arm_trajectory"),
+                         [](const testing::TestParamInfo<const char*>& param) {
+                           std::string name = param.param;
+                           for (char& c : name) c = (c == '/') ? '_' : c;
+                           return name;
+                         });
+
 }  // namespace
 }  // namespace mechsim::sim
