@@ -5,6 +5,7 @@
 // following.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <filesystem>
 #include <thread>
 
@@ -34,11 +35,13 @@ BridgeResult start(SimBridge& bridge, const std::vector<std::string>& names) {
     const BridgeResult r = bridge.load_controller(n);
     if (!r.ok) return r;
   }
+  std::atomic<bool> done{false};
   std::thread ticker([&] {
     std::string e;
-    bridge.run_for(0.05, &e);
+    while (!done.load()) bridge.run_for(0.001, &e);
   });
   const BridgeResult r = bridge.switch_controllers(names, {}, true, 5.0);
+  done.store(true);
   ticker.join();
   return r;
 }
@@ -82,9 +85,12 @@ TEST(Ros2ControlBridge, TellsTheWireLayerTheManagerPluginControllersAndPorts) {
     if (p.name == "cmd_vel") cmd = p;
     if (p.name == "odom") odom = p;
   }
+  // As a teleop node would: the command again every 0.1 s (cmd_vel_timeout is 0.5 s).
   std::string error;
-  ASSERT_TRUE(write_twist(cmd, 0.4, 0, 0, 0, 0, 0, &error)) << error;
-  ASSERT_TRUE(bridge->run_for(1.0, &error)) << error;
+  for (int i = 0; i < 10; ++i) {
+    ASSERT_TRUE(write_twist(cmd, 0.4, 0, 0, 0, 0, 0, &error)) << error;
+    ASSERT_TRUE(bridge->run_for(0.1, &error)) << error;
+  }
   OdometryData o;
   std::uint64_t seq = 0;
   ASSERT_TRUE(read_odometry(odom, o, &seq));
