@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "control/params_edit.hpp"
+#include "control/params_yaml.hpp"
 
 namespace mechsim::control {
 
@@ -60,31 +61,54 @@ void expand_dotted(const Params& block, Params into) {
   }
 }
 
-void collect(const Params& node, const std::string& prefix, const std::string& source_file,
+// Walks the node-name levels of a file (yaml-cpp: the names hold '/', which Params keys may not)
+// down to each ros__parameters.
+void collect(const YAML::Node& node, const std::string& prefix, const std::string& source,
              std::vector<Ros2NodeEntry>& out, bool& found) {
-  for (const std::string& key : node.keys()) {
-    const Params value = node.child(key);
-    if (key == kRosParameters) {
-      if (prefix.empty()) refuse(value, "ros__parameters at the top level: it must sit under a node name");
-      if (!value.is_map()) {
+  for (const auto& entry : node) {
+    const YAML::Node& key = entry.first;
+    const YAML::Node& value = entry.second;
+    if (!key.IsScalar()) throw ParamsError(yaml_where(source, key.Mark()) + ": a node name must be a plain name", prefix);
+    const std::string name = key.Scalar();
+    const std::string at = yaml_where(source, key.Mark());
+    if (name == kRosParameters) {
+      if (prefix.empty()) throw ParamsError(at + ": ros__parameters at the top level: it must sit under a node name", "/");
+      Ros2NodeEntry e;
+      e.pattern = prefix.front() == '/' ? prefix : "/" + prefix;
+      e.source = source + ":" + std::to_string(key.Mark().line + 1);
+      if (value.IsMap()) {
+        expand_dotted(params_from_yaml_map(value, source), e.parameters);
+      } else if (!value.IsNull()) {
         // `ros__parameters:` with nothing under it reads as empty (rcl accepts it).
-        if (value.kind() != Params::Kind::Null) refuse(value, "ros__parameters of node '" + prefix + "' is not a map");
+        throw ParamsError(at + ": ros__parameters of node '" + prefix + "' is not a map", e.pattern);
       }
-      Ros2NodeEntry entry;
-      entry.pattern = prefix.front() == '/' ? prefix : "/" + prefix;
-      entry.source = value.location().empty() ? source_file : value.location();
-      if (value.is_map()) expand_dotted(value, entry.parameters);
-      out.push_back(std::move(entry));
+      out.push_back(std::move(e));
       found = true;
       continue;
     }
-    if (!value.is_map()) {
-      refuse(value, "'" + key + "' under node name '" + (prefix.empty() ? std::string("/") : prefix) +
-                        "' is not a map: a value is only allowed under ros__parameters (ROS 2 parameter files are "
-                        "NODE_NAME: {ros__parameters: {...}})");
+    if (name.empty()) throw ParamsError(at + ": an empty node name", prefix);
+    if (!value.IsMap()) {
+      throw ParamsError(yaml_where(source, value.Mark()) + ": '" + name + "' under node name '" +
+                            (prefix.empty() ? std::string("/") : prefix) +
+                            "' is not a map: a value is only allowed under ros__parameters (ROS 2 parameter files are "
+                            "NODE_NAME: {ros__parameters: {...}})",
+                        prefix);
     }
-    collect(value, join_name(prefix, key), source_file, out, found);
+    collect(value, join_name(prefix, name), source, out, found);
   }
+}
+
+void add_document(const YAML::Node& doc, const std::string& source, std::vector<Ros2NodeEntry>& entries) {
+  if (!doc.IsMap()) throw ParamsError(source + ": a ROS 2 parameter file is a map of node names", "/");
+  bool found = false;
+  std::vector<Ros2NodeEntry> read;
+  collect(doc, "", source, read, found);
+  if (!found) {
+    throw ParamsError(source + ": no ros__parameters in the file: not a ROS 2 parameter file (NODE_NAME: "
+                               "{ros__parameters: {...}}; ROS 1 controller files are loaded without ros__parameters)",
+                      "/");
+  }
+  entries.insert(entries.end(), std::make_move_iterator(read.begin()), std::make_move_iterator(read.end()));
 }
 
 std::regex pattern_regex(const std::string& pattern) {
@@ -121,24 +145,12 @@ Ros2ParameterSet Ros2ParameterSet::from_files(const std::vector<std::string>& fi
 }
 
 void Ros2ParameterSet::add_file(const std::string& path) {
-  const Params root = Params::from_yaml_file(path);
-  if (!root.is_map()) throw ParamsError(path + ": a ROS 2 parameter file is a map of node names", "/");
-  bool found = false;
-  collect(root, "", path, entries_, found);
-  if (!found) {
-    throw ParamsError(path + ": no ros__parameters in the file: not a ROS 2 parameter file (NODE_NAME: "
-                             "{ros__parameters: {...}}; ROS 1 controller files are loaded without ros__parameters)",
-                      "/");
-  }
+  add_document(load_yaml_file(path), path, entries_);
   sources_.push_back(path);
 }
 
 void Ros2ParameterSet::add_yaml(const std::string& yaml, const std::string& source_name) {
-  const Params root = Params::from_yaml_string(yaml, source_name);
-  if (!root.is_map()) throw ParamsError(source_name + ": a ROS 2 parameter file is a map of node names", "/");
-  bool found = false;
-  collect(root, "", source_name, entries_, found);
-  if (!found) throw ParamsError(source_name + ": no ros__parameters: not a ROS 2 parameter file", "/");
+  add_document(load_yaml_string(yaml, source_name), source_name, entries_);
   sources_.push_back(source_name);
 }
 
