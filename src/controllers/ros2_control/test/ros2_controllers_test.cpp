@@ -226,13 +226,14 @@ TEST_F(Ros2Controllers, ForwardCommandControllerWritesItsInterface) {
   EXPECT_EQ(info.claims[0].joints, (std::vector<std::string>{"arm1", "steer"}));
   auto* command = m->controller("forward")->port_as<ArrayCommandPort>("command");
   ASSERT_NE(command, nullptr);
-  ASSERT_TRUE(command->write(std::vector<double>{0.4, -0.2}));
+  run(*m, 1);  // started: it holds where the joints are
+  ASSERT_TRUE(command->write(std::vector<double>{0.04, -0.02}));
   std::string error;
   EXPECT_FALSE(command->write(std::vector<double>{0.4}, &error));  // ~/commands of the wrong size
   run(*m, 1);
   EXPECT_EQ(joint("arm1").command_mode, HardwareInterface::Position);
-  EXPECT_DOUBLE_EQ(joint("arm1").commanded_position, 0.4);
-  EXPECT_DOUBLE_EQ(joint("steer").commanded_position, -0.2);
+  EXPECT_DOUBLE_EQ(joint("arm1").commanded_position, 0.04);
+  EXPECT_DOUBLE_EQ(joint("steer").commanded_position, -0.02);
 }
 
 TEST_F(Ros2Controllers, ForwardCommandControllerParameterErrorsNameThePath) {
@@ -306,6 +307,7 @@ TEST_F(Ros2Controllers, DiffDriveControllerWithRos2ParametersAndItsErrors) {
   EXPECT_EQ(dd->config().left_wheels, (std::vector<std::string>{"left_wheel"}));
   EXPECT_TRUE(dd->config().linear.has_velocity_limits);
   EXPECT_EQ(dd->config().linear.min_velocity, -0.5);  // unset min: -max
+  run(*m, 1);  // started: the command zeroed
   ASSERT_TRUE(dd->command_port().write(Twist{{1.0, 0.0, 0.0}, {0.0, 0.0, 0.5}}));
   run(*m, 1);
   // 0.5 m/s (the limit), 0.5 rad/s: left (0.5 - 0.5 * 0.2) / 0.1 = 4 rad/s, right 6 rad/s.
@@ -330,17 +332,20 @@ TEST_F(Ros2Controllers, TricycleControllerTurnsATwistIntoSteeringAndTraction) {
   auto m = manager();
   start(*m, {"tricycle"});
   auto* t = dynamic_cast<TricycleController*>(m->controller("tricycle"));
+  run(*m, 1);  // started: the command zeroed
   // 0.5 m/s at 0.5 rad/s: alpha = atan(0.5 * 0.5 / 0.5) = 0.4636 rad, Ws = 0.5 / (0.1 cos alpha).
+  // (The steering joint's position commands move at most 0.1 rad a tick: its URDF velocity
+  // limit, mechanism/safety_limits.hpp; 20 ticks get there.)
   ASSERT_TRUE(t->command_port().write(Twist{{0.5, 0.0, 0.0}, {0.0, 0.0, 0.5}}));
   measure("steer", std::atan(0.5), 0.0);
-  run(*m, 1);
+  run(*m, 20);
   EXPECT_NEAR(joint("steer").commanded_position, std::atan(0.5), 1e-9);
   EXPECT_NEAR(joint("traction").commanded_velocity, 0.5 / (0.1 * std::cos(std::atan(0.5))), 1e-9);
   // Turning in place: the wheel across (-pi/2 for a right turn), |w| wheelbase / r (the steering
   // already there: no scaling of the speed).
   ASSERT_TRUE(t->command_port().write(Twist{{0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}}));
   measure("steer", -M_PI_2, 0.0);
-  run(*m, 1);
+  run(*m, 30);
   EXPECT_NEAR(joint("steer").commanded_position, -M_PI_2, 1e-9);
   EXPECT_NEAR(joint("traction").commanded_velocity, 1.0 * 0.5 / 0.1, 1e-9);
   // Odometry from the traction wheel and the steering angle: 2 rad/s at 0 rad for 0.1 s.
