@@ -41,6 +41,8 @@ ControllerManager::ControllerManager(const mechanism::MechanismModel& model, mec
     if (model_.joints[j].hold_when_unclaimed) hold_joints_.push_back(static_cast<int>(j));
   }
   claimed_.assign(model_.joints.size(), 0);
+  held_.assign(model_.joints.size(), 0);
+  hold_position_.assign(model_.joints.size(), 0.0);
 }
 
 ControllerManager::~ControllerManager() = default;

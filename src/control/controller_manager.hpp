@@ -175,7 +175,7 @@ class ControllerManager {
   std::string claim_conflict(const Entry& entry) const;
   void publish_list(std::vector<Entry*> list);
   void run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept;
-  // The hold_joints_ no running controller claims get velocity 0 this tick.
+  // The hold_joints_ no running controller claims are held where they were when it let go.
   void hold_unclaimed_joints(const std::vector<Entry*>& list) noexcept;
   // Applies the pending switch unless cancel_pending_switch() takes it back first.
   void try_apply_switch(double time) noexcept;
@@ -192,10 +192,12 @@ class ControllerManager {
   ControllerRegistry registry_;
   const SensorHardware* sensors_ = nullptr;
   double update_rate_ = 0.0;  // Hz; 0: no per-controller rates
-  // gazebo_ros2_control's hold_joints: the joints that hold (velocity 0) while no running
-  // controller claims them (JointInfo::hold_when_unclaimed), and the tick's scratch of claims.
+  // gazebo_ros2_control's hold_joints: the joints that hold still while no running controller
+  // claims them (JointInfo::hold_when_unclaimed), the tick's scratch of claims, and per joint
+  // whether it is held and where (its position when it became unclaimed).
   std::vector<int> hold_joints_;
-  std::vector<std::uint8_t> claimed_;
+  std::vector<std::uint8_t> claimed_, held_;
+  std::vector<double> hold_position_;
 
   mutable std::mutex config_mutex_;  // non-real-time callers only
   std::vector<std::unique_ptr<Entry>> entries_;

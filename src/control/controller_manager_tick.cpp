@@ -89,10 +89,18 @@ void ControllerManager::hold_unclaimed_joints(const std::vector<Entry*>& list) n
     for (const int j : e->joint_indices) claimed_[static_cast<std::size_t>(j)] = 1;
   }
   for (const int j : hold_joints_) {
-    if (claimed_[static_cast<std::size_t>(j)] != 0) continue;
-    mechanism::JointState& joint = state_.joints[static_cast<std::size_t>(j)];
-    joint.command_mode = HardwareInterface::Velocity;
-    joint.commanded_velocity = 0.0;
+    const auto i = static_cast<std::size_t>(j);
+    if (claimed_[i] != 0) {
+      held_[i] = 0;
+      continue;
+    }
+    mechanism::JointState& joint = state_.joints[i];
+    if (held_[i] == 0) {
+      held_[i] = 1;
+      hold_position_[i] = joint.position;
+    }
+    joint.command_mode = HardwareInterface::Position;
+    joint.commanded_position = hold_position_[i];
   }
 }
 

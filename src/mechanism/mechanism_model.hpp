@@ -51,8 +51,9 @@ struct JointInfo {
   std::array<double, 3> command_max{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                                     std::numeric_limits<double>::infinity()};
   // gazebo_ros2_control's <hold_joints> (default true) on a joint with command interfaces: while
-  // no running controller claims it, the controller manager commands velocity 0 (the plugin's
-  // SetVelocity(0) fallback), so that it holds instead of falling.
+  // no running controller claims it, the controller manager holds it where it was when it
+  // became unclaimed (a position command: the plugin's SetVelocity(0) every step holds it as
+  // hard), instead of letting it fall.
   bool hold_when_unclaimed = false;
 
   bool has_interface(HardwareInterface hw) const;

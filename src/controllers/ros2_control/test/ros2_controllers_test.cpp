@@ -250,15 +250,27 @@ TEST_F(Ros2Controllers, ForwardCommandControllerParameterErrorsNameThePath) {
   EXPECT_THAT(load_error(with("joints: [arm1, steer]", "joints: [arm1, elbow]"), "forward"), HasSubstr("elbow"));
 }
 
-TEST_F(Ros2Controllers, HoldJointsKeepsUnclaimedActuatedJointsAtVelocityZero) {
+TEST_F(Ros2Controllers, HoldJointsKeepsUnclaimedActuatedJointsWhereTheyWere) {
   auto m = manager();
   start(*m, {"group_effort"});
   joint("arm1").command_mode = HardwareInterface::Effort;
+  measure("arm1", 0.7, 0.0);
   run(*m, 1);
-  EXPECT_EQ(joint("arm1").command_mode, HardwareInterface::Velocity);  // unclaimed: held
-  EXPECT_EQ(joint("arm1").commanded_velocity, 0.0);
+  EXPECT_EQ(joint("arm1").command_mode, HardwareInterface::Position);  // unclaimed: held
+  EXPECT_EQ(joint("arm1").commanded_position, 0.7);
+  measure("arm1", 0.65, 0.0);  // pushed: held where it was let go, not where it is
+  run(*m, 1);
+  EXPECT_EQ(joint("arm1").commanded_position, 0.7);
   EXPECT_EQ(joint("arm2").command_mode, HardwareInterface::Effort);  // claimed by group_effort
   EXPECT_EQ(joint("passive").command_mode, HardwareInterface::Effort);  // no command interface: free
+  // Claimed, then let go again: held where it was then.
+  ASSERT_TRUE(m->load_controller("forward"));
+  ASSERT_TRUE(m->switch_controllers({"forward"}, {}, SwitchStrictness::Strict));
+  run(*m, 1);
+  measure("arm1", 0.6, 0.0);
+  ASSERT_TRUE(m->switch_controllers({}, {"forward"}, SwitchStrictness::Strict));
+  run(*m, 1);
+  EXPECT_EQ(joint("arm1").commanded_position, 0.6);
 }
 
 TEST_F(Ros2Controllers, JointTrajectoryControllerReadsRos2Parameters) {
