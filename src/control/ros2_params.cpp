@@ -234,8 +234,14 @@ Ros2ControlSetup ros2_control_setup(const Ros2ParameterSet& set, const std::stri
     const std::string ns = at == 0 ? "/" : e.pattern.substr(0, at);
     const std::string name = e.pattern.substr(at + 1);
     if (ns != out.node_namespace || e.pattern == controller_manager_fqn) continue;
-    if (!e.parameters.has("type") && std::find(out.controller_names.begin(), out.controller_names.end(), name) ==
-                                         out.controller_names.end()) {
+    const bool declared = std::find(out.controller_names.begin(), out.controller_names.end(), name) != out.controller_names.end();
+    if (!declared && e.parameters.has("type")) {
+      // Jazzy: a controller's type may be in its own parameters (the spawner's --param-file).
+      merge(out.controllers, name, set.parameters_for(e.pattern));
+      out.controller_names.push_back(name);
+      continue;
+    }
+    if (!declared) {
       // Only nodes that look like controllers (ros2_control's own keys) are reported.
       const bool looks_like_controller = e.parameters.has("joints") || e.parameters.has("interface_name") ||
                                          e.parameters.has("left_wheel_names") || e.parameters.has("sensor_name") ||

@@ -80,7 +80,9 @@ struct Ros2ControlSetup {
   double update_rate = 100.0;
   bool update_rate_given = false;
   // One child per controller the manager declares (`<name>: {type: ...}` in its parameters): the
-  // type, then that controller node's own parameters (node_namespace/<name>) merged over it.
+  // type, then that controller node's own parameters (node_namespace/<name>) merged over it; and
+  // one per node in its namespace whose own parameters give a `type` (Jazzy's spawner reads the
+  // type there).
   // ControllerManager loads from it (its path "/", "/<name>/type", ...).
   Params controllers;
   std::vector<std::string> controller_names;  // in the order declared

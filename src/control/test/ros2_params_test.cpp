@@ -105,13 +105,19 @@ TEST_F(Ros2Params, TheControllerManagerSetupDeclaresTypedControllersWithTheirOwn
 /r1/typo_controller:
   ros__parameters:
     joints: [j1]
+/r1/own_type_controller:
+  ros__parameters:
+    type: position_controllers/JointGroupPositionController
+    joints: [j2]
 )");
   const Ros2ParameterSet set = Ros2ParameterSet::from_files({f});
   const Ros2ControlSetup setup = ros2_control_setup(set, "/r1/controller_manager");
   EXPECT_EQ(setup.node_namespace, "/r1");
   EXPECT_EQ(setup.update_rate, 50.0);
   EXPECT_TRUE(setup.update_rate_given);
-  EXPECT_EQ(setup.controller_names, (std::vector<std::string>{"joint_state_broadcaster", "arm_controller"}));
+  EXPECT_EQ(setup.controller_names,
+            (std::vector<std::string>{"joint_state_broadcaster", "arm_controller", "own_type_controller"}));
+  EXPECT_EQ(setup.controllers.get<std::string>("own_type_controller/type"), "position_controllers/JointGroupPositionController");
   EXPECT_EQ(setup.controllers.get<std::string>("arm_controller/type"), "forward_command_controller/ForwardCommandController");
   EXPECT_EQ(setup.controllers.get<std::string>("arm_controller/interface_name"), "position");
   EXPECT_EQ(setup.controllers.child("arm_controller/type").location(), f + ":7");
