@@ -91,8 +91,13 @@ std::string describe_interface(const Ros2ControlInterface& i) {
   std::ostringstream out;
   out << i.name;
   if (i.min || i.max) {
-    out << " [" << (i.min ? std::to_string(*i.min) : std::string("-inf")) << ", "
-        << (i.max ? std::to_string(*i.max) : std::string("inf")) << "]";
+    out << " [";
+    if (i.min) out << *i.min;
+    else out << "-inf";
+    out << ", ";
+    if (i.max) out << *i.max;
+    else out << "inf";
+    out << "]";
   }
   if (i.initial_value) out << " (initial " << *i.initial_value << ")";
   return out.str();
@@ -118,8 +123,9 @@ std::string summarize_ros2_control(const RobotModel& model) {
       out << "      joint " << j.name << ": command " << describe_interfaces(j.command_interfaces) << "; state "
           << describe_interfaces(j.state_interfaces);
       if (const std::optional<Ros2ControlMimic> m = ros2_control_mimic(model, j)) {
-        out << "; mimics " << m->leader << " (x " << m->multiplier << (m->offset != 0.0 ? ", + " + std::to_string(m->offset) : "")
-            << (m->from_param ? ", <param name=\"mimic\">" : ", URDF <mimic>") << ")";
+        out << "; mimics " << m->leader << " (x " << m->multiplier;
+        if (m->offset != 0.0) out << ", + " << m->offset;
+        out << (m->from_param ? ", <param name=\"mimic\">" : ", URDF <mimic>") << ")";
       }
       out << "\n";
     }

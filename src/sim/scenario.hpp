@@ -135,7 +135,9 @@
 //       controllers: {file: ..., namespace: cc8, start: [rover_drive_controller]}
 //   # e.g. timeline: - {at: 0, robot: cc8_2, controller: rover_drive_controller, twist: {vx: 0.2}}
 //   #      checks:   - {odometry: {robot: cc8_2, max_error_fraction: 0.03}}
-//   # Other robots' sensors are not simulated, nor their trajectory and gripper goals.
+//   # Other robots' sensors are not simulated, nor their trajectory and gripper goals. An other
+//   # ros2_control robot's controller manager is in the namespace /<name> unless its
+//   # controllers give `namespace` (as spawn_entity's -robot_namespace puts it there).
 //   # Sensors added to the robot, as Gazebo <gazebo reference="LINK"> blocks (the robot's own
 //   # <sensor> tags are simulated too; mechsim check lists them). Each entry is XML text.
 //   sensors:

@@ -29,7 +29,7 @@ TEST(CheckRos2ControlCli, ListsTheHardwareThePluginAndTheControllers) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(has(r.out, "ros2_control:    1 hardware component")) << r.out;
   EXPECT_TRUE(has(r.out, "RRBotSystem (system, gazebo_ros2_control/GazeboSystem)")) << r.out;
-  EXPECT_TRUE(has(r.out, "joint joint1: command position [-1.000000, 1.000000]; state position, velocity, effort")) << r.out;
+  EXPECT_TRUE(has(r.out, "joint joint1: command position [-1, 1]; state position, velocity, effort")) << r.out;
   EXPECT_TRUE(has(r.out, "joint joint2: command position; state position (initial 0.3), velocity")) << r.out;
   EXPECT_TRUE(has(r.out, "mimics left_finger_joint (x 1, <param name=\"mimic\">)")) << r.out;
   EXPECT_TRUE(has(r.out, "plugin libgazebo_ros2_control.so: controller manager /controller_manager, hold_joints true")) << r.out;
