@@ -166,6 +166,16 @@ arm:
   EXPECT_THAT(build_error("controllers: {file: " + malformed + "}\n"), HasSubstr("'joints' under node name 'arm' is not a map"));
   EXPECT_THAT(build_error("controllers: {file: " + bad + ", start: [nobody]}\n"), HasSubstr("nobody"));
   EXPECT_EQ(build_error("controllers: {start: [joint_state_broadcaster]}\n"), "built");
+  // A controllers.params overlay names parameters the ROS 2 file has.
+  const std::string files = "controllers:\n  file: " + (kBots / "config/rrbot_controllers.yaml").string() + "\n";
+  EXPECT_EQ(build_error(files + "  params: {forward_position_controller: {interface_name: velocity}}\n"), "built");
+  try {
+    load_scenario(write("o.yaml", "name: s\nrobot:\n  description: " + (kBots / "urdf/rrbot.urdf.xacro").string() + "\n" + files +
+                                      "  params: {forward_position_controller: {interface: velocity}}\nduration: 0.1\n"));
+    ADD_FAILURE() << "no error";
+  } catch (const ScenarioError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("interface"));
+  }
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // mechsim's ros2_control test robots (robots/ros2bots) through their shipped scenarios: an arm on
 // position interfaces moved by forward_command_controller (its command clamped at the interface's
 // max) and by joint_trajectory_controller, its gripper's mimic finger following, a differential
-// drive through diff_drive_controller with ROS 2 parameters, and a tricycle through
-// tricycle_controller. Every check of every scenario passes; the figures are printed.
+// drive through diff_drive_controller with ROS 2 parameters (and two of them in one world, each
+// with its own controller manager and namespace), and a tricycle through tricycle_controller. Every check of every scenario passes; the figures are printed.
 
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ TEST_P(Ros2Bots, MeetsItsChecks) {
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, Ros2Bots,
                          testing::Values("rrbot_forward_position", "rrbot_trajectory", "rrbot_gripper", "diffbot_drive",
-                                         "tricycle_drive"),
+                                         "tricycle_drive", "two_diffbots"),
                          [](const testing::TestParamInfo<const char*>& param) { return std::string(param.param); });
 
 // The CC8 and the PR2 on ROS 2 (their ros2_control:=true descriptions and ros2_controllers.yaml):
