@@ -142,6 +142,11 @@ bool JointTrajectoryController::init(RobotHardware& hardware, const Params& para
     if (!listed(state_interfaces, "position")) {
       throw ControllerConfigError("parameter " + path + " must list 'position' (ros2_controllers requires it)");
     }
+    // ros2_controllers: the PID laws need the velocity too.
+    if (iface_ != HardwareInterface::Position && !listed(state_interfaces, "velocity")) {
+      throw ControllerConfigError("parameter " + path + " must list 'velocity' with command interface " +
+                                  std::string(interface_short_name(iface_)) + " (ros2_controllers requires it)");
+    }
   }
   const bool pid_law = iface_ != HardwareInterface::Position;
   for (std::size_t i = 0; i < names.size(); ++i) {

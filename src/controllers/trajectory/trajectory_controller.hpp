@@ -62,8 +62,8 @@ class JointTrajectoryController : public Controller {
   //   command_interfaces (required): [position], [position, velocity], [position, velocity,
   //     acceleration] command positions (Gazebo's systems give position precedence; the joints
   //     must offer each interface listed); [velocity] and [effort] the PID law above
-  //   state_interfaces (required): position, and velocity (acceleration is not simulated); the
-  //     joints must offer them
+  //   state_interfaces (required): position, and velocity (required with [velocity] or [effort];
+  //     acceleration is not simulated); the joints must offer them
   //   gains.<joint>.{p, i, d, i_clamp (Humble), i_clamp_max, i_clamp_min, ff_velocity_scale}:
   //     PID and velocity feed-forward (all default 0, as ros2_controllers), velocity and effort
   //   constraints.{goal_time, stopped_velocity_tolerance, <joint>.trajectory, <joint>.goal},

@@ -310,6 +310,10 @@ TEST_F(Ros2Controllers, JointTrajectoryControllerReadsRos2Parameters) {
                               "joints: [arm1]\n    command_interfaces: [position, velocity]\n    state_interfaces: [velocity]"),
                          "jtc_position"),
               HasSubstr("/jtc_position/state_interfaces must list 'position'"));
+  EXPECT_THAT(load_error(with("command_interfaces: [velocity]\n    state_interfaces: [position, velocity]",
+                              "command_interfaces: [velocity]\n    state_interfaces: [position]"),
+                         "jtc_velocity"),
+              HasSubstr("/jtc_velocity/state_interfaces must list 'velocity' with command interface velocity"));
 }
 
 TEST_F(Ros2Controllers, DiffDriveControllerWithRos2ParametersAndItsErrors) {
