@@ -1,5 +1,8 @@
 #include "sim/ros2_control_config.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace mechsim::sim {
@@ -51,6 +54,22 @@ Ros2ControlConfig load_ros2_control_config(const description::RobotModel& robot,
   Ros2ControlConfig out = ros2_control_config(robot, control::Ros2ParameterSet::from_files(to_read), node_namespace);
   out.notes.insert(out.notes.begin(), notes.begin(), notes.end());
   return out;
+}
+
+std::uint64_t ros2_control_ticks(double update_rate, double period, std::string* note) {
+  const long long n = std::llround(1.0 / (update_rate * period));
+  const auto every = static_cast<std::uint64_t>(std::max(1LL, n));
+  const double control_period = static_cast<double>(every) * period;
+  char text[512] = {};
+  if (1.0 / update_rate < period * (1.0 - 1e-9)) {
+    std::snprintf(text, sizeof text, "controller manager update_rate %g Hz is faster than the simulation (period %g s): "
+                  "the controllers update every tick", update_rate, period);
+  } else if (std::abs(control_period - 1.0 / update_rate) > 1e-9 / update_rate) {
+    std::snprintf(text, sizeof text, "controller manager update_rate %g Hz is not a whole number of periods (%g s): "
+                  "the controllers update every %g s", update_rate, period, control_period);
+  }
+  if (note != nullptr) *note = text;
+  return every;
 }
 
 void apply_ros2_control(SimulationOptions& options, const Ros2ControlConfig& config) {

@@ -6,6 +6,7 @@
 // (control::ros2_control_setup). Whoever builds a simulation from ROS 2 inputs (a scenario,
 // mechsim check, the bridge) uses this, then apply_ros2_control on the simulation's options.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,12 @@ Ros2ControlConfig load_ros2_control_config(const description::RobotModel& robot,
 // The same, over parameters already loaded (the wire layer's, or a test's).
 Ros2ControlConfig ros2_control_config(const description::RobotModel& robot, control::Ros2ParameterSet parameters,
                                       const std::string& node_namespace = "");
+
+// The controller manager updates every N ticks for ros2_control's `update_rate` (Hz) at `period`
+// (s): N = round(1 / (rate * period)), at least 1, as gazebo_ros2_control updates once the control
+// period has passed. `note`: why the period differs from 1/rate (faster than the simulation, or
+// not a whole number of periods), "" when it does not.
+std::uint64_t ros2_control_ticks(double update_rate, double period, std::string* note);
 
 // Sets options.ros2_control and controller_update_rate from `config`.
 void apply_ros2_control(SimulationOptions& options, const Ros2ControlConfig& config);

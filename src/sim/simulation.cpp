@@ -23,6 +23,7 @@
 #include "physics/heightmap_sample.hpp"
 #include "physics/transform.hpp"
 #include "sim/ground_plane.hpp"
+#include "sim/ros2_control_config.hpp"
 
 namespace mechsim::sim {
 
@@ -212,20 +213,9 @@ void Simulation::build_robot(control::Params controller_params) {
     }
   }
   if (options_.controller_update_rate > 0.0) {
-    // ros2_control's update_rate (gazebo_ros2_control: the control period against the step).
-    const double rate = options_.controller_update_rate;
-    const long long n = std::llround(1.0 / (rate * options_.period));
-    control_every_ = static_cast<std::uint64_t>(std::max(1LL, n));
-    char note[1024];
-    if (1.0 / rate < options_.period * (1.0 - 1e-9)) {
-      std::snprintf(note, sizeof note, "controller manager update_rate %g Hz is faster than the simulation (period %g s): "
-                    "the controllers update every tick", rate, options_.period);
-      plugin_notes_.emplace_back(note);
-    } else if (std::abs(control_period() - 1.0 / rate) > 1e-9 / rate) {
-      std::snprintf(note, sizeof note, "controller manager update_rate %g Hz is not a whole number of periods (%g s): "
-                    "the controllers update every %g s", rate, options_.period, control_period());
-      plugin_notes_.emplace_back(note);
-    }
+    std::string note;
+    control_every_ = ros2_control_ticks(options_.controller_update_rate, options_.period, &note);
+    if (!note.empty()) plugin_notes_.push_back(std::move(note));
   }
   manager_ = std::make_unique<control::ControllerManager>(
       *mechanism_, *mechanism_state_, std::move(controller_params),
