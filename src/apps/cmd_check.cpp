@@ -17,15 +17,19 @@
 #include "apps/cmd_common.hpp"
 #include "apps/commands.hpp"
 #include "control/controller_check.hpp"
+#include "control/ros2_params.hpp"
 #include "controllers/builtin_controllers.hpp"
+#include "controllers/ros2_control/ros2_controllers.hpp"
 #include "controllers/plugins/model_plugins.hpp"
 #include "mechanism/build_mechanism.hpp"
 #include "mechanism/direct_joints.hpp"
 #include "physics/physics_model.hpp"
 #include "physics/wheel_identify.hpp"
+#include "sim/ros2_control_config.hpp"
 #include "sim/simulation.hpp"
 #include "description/robot_loader.hpp"
 #include "description/robot_summary.hpp"
+#include "description/ros2_control_plugin.hpp"
 
 namespace mechsim::apps {
 
@@ -46,6 +50,38 @@ void load_step(const CheckOptions& options, CheckContext& context) {
   context.robot = description::load_robot(options.robot.file, load_options(options.robot));
   context.warnings.insert(context.warnings.end(), context.robot.warnings.begin(),
                           context.robot.warnings.end());
+}
+
+// A ros2_control robot's controllers: the ROS 2 parameter files (`--controllers`, or the
+// description's gazebo_ros2_control <parameters>), the controller manager they configure (its
+// node, update_rate) and every controller it declares, loaded against the mechanism with the
+// ros2_controllers types.
+void ros2_controllers_step(const CheckOptions& options, CheckContext& context, std::ostream& out) {
+  const description::RobotModel& robot = context.robot.model;
+  std::vector<std::string> files;
+  if (!options.controllers.empty()) files.push_back(options.controllers);
+  const sim::Ros2ControlConfig config = sim::load_ros2_control_config(robot, files);
+  context.warnings.insert(context.warnings.end(), config.notes.begin(), config.notes.end());
+  const mechanism::MechanismModel mechanism = mechanism::build_mechanism(robot);
+  sim::fill_description_params(config.setup.controllers, robot, true);
+  const control::ControllerPluginSet plugins = control::find_controller_plugins();
+  const control::ControllerRegistry registry = control::ros2_controller_registry(plugins);
+  for (const std::string& note : registry.notes()) context.warnings.push_back(note);
+  const std::unique_ptr<control::SensorHardware> sensors = control::make_sensor_hardware(robot.sensors);
+  const std::vector<control::ControllerCheck> checks =
+      control::check_controllers(mechanism, config.setup.controllers, registry, sensors.get());
+  std::string sources;
+  for (const std::string& f : config.files) sources += (sources.empty() ? "" : ", ") + f;
+  out << "ros2_control controller manager " << config.setup.controller_manager << " (" << sources << "):\n";
+  out << "  update_rate " << config.setup.update_rate << " Hz" << (config.setup.update_rate_given ? "" : " (ros2_control's default)")
+      << ", " << config.setup.controller_names.size() << " controllers declared\n";
+  std::size_t loaded = 0;
+  for (const control::ControllerCheck& c : checks) {
+    out << "  " << control::describe(c) << "\n";
+    if (c.ok()) ++loaded;
+  }
+  out << "  " << loaded << " of " << checks.size() << " controllers load\n";
+  if (loaded != checks.size()) context.failed = true;
 }
 
 // Loads every controller of the YAML against the robot's mechanism (geometry the rover drive and
@@ -176,7 +212,16 @@ void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err
   wheels_step(context, out);
   plugins_step(options, context, out);
   meshes_step(context);
-  if (!options.controllers.empty()) controllers_step(options, context, out);
+  // A ros2_control robot's controllers: from the ROS 2 file given, or from its plugin's files.
+  const bool ros2_file = !options.controllers.empty() && control::is_ros2_parameter_file(options.controllers);
+  const std::optional<description::Ros2ControlPlugin> ros2_plugin =
+      description::find_ros2_control_plugin(context.robot.model);
+  const bool plugin_files = ros2_plugin && !ros2_plugin->parameters.empty();
+  if (ros2_file || (options.controllers.empty() && !context.robot.model.ros2_control.empty() && plugin_files)) {
+    ros2_controllers_step(options, context, out);
+  } else if (!options.controllers.empty()) {
+    controllers_step(options, context, out);
+  }
   for (const std::string& w : context.warnings) err << "warning: " << w << "\n";
   if (context.failed) {
     result.exit_code = 1;
@@ -184,7 +229,9 @@ void run_check(const CheckOptions& options, std::ostream& out, std::ostream& err
   }
   out << "OK: " << options.robot.file << " is a valid robot description";
   if (!context.warnings.empty()) out << " (" << context.warnings.size() << " warnings)";
-  if (!options.controllers.empty()) out << " and its controllers load";
+  if (!options.controllers.empty() || (plugin_files && !context.robot.model.ros2_control.empty())) {
+    out << " and its controllers load";
+  }
   out << "\n";
 }
 
@@ -196,7 +243,8 @@ void add_check_command(CLI::App& app, CommandResult& result) {
       "check", "Expand (if xacro), parse and validate a robot description; print a summary");
   add_robot_options(cmd, options->robot);
   cmd->add_option("--controllers", options->controllers,
-                  "a controller YAML: load each controller against the robot and print what it claims");
+                  "a controller YAML (ROS 1, or a ROS 2 parameter file for a ros2_control robot): load each controller "
+                  "against the robot and print what it claims");
   cmd->callback([options, &result] { run_check(*options, std::cout, std::cerr, result); });
 }
 

@@ -25,6 +25,7 @@ struct SimBridge::Impl {
   void reapply_overrides();  // loop thread, from refresh()
   BridgeOptions options;
   control::Params params;
+  std::optional<Ros2ControlSummary> ros2;  // ros2_control robots
   std::unique_ptr<sim::Simulation> owned;  // the first robot's simulation (it ticks the world)
   sim::Simulation* simulation = nullptr;   // this robot's: owned, or an other robot of host's world
   Impl* host = nullptr;                    // an other robot's: the bridge of the world's first robot

@@ -14,6 +14,7 @@
 #include "bridge/bridge_impl.hpp"
 #include "bridge/mechanism_statistics.hpp"
 #include "sensors/sensor_types.hpp"
+#include "sim/ros2_control_config.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world.hpp"
 
@@ -77,6 +78,23 @@ sim::SimulationOptions simulation_options(const BridgeOptions& o) {
   return sim_options;
 }
 
+// ros2_control: the manager's configuration from the options' parameters; `options` get its
+// rate and flag. Returns the controllers' parameter tree.
+control::Params ros2_setup(const BridgeOptions& o, sim::SimulationOptions& options, std::optional<Ros2ControlSummary>& out) {
+  const sim::Ros2ControlConfig config = sim::ros2_control_config(o.robot, *o.ros2_parameters, o.ros2_namespace);
+  sim::apply_ros2_control(options, config);
+  Ros2ControlSummary s;
+  s.plugin = config.plugin;
+  s.controller_manager = config.setup.controller_manager;
+  s.node_namespace = config.setup.node_namespace;
+  s.update_rate = config.setup.update_rate;
+  s.declared_controllers = config.setup.controller_names;
+  s.parameter_files = config.files;
+  s.notes = config.notes;
+  out = std::move(s);
+  return config.setup.controllers;
+}
+
 // The description links the physics has (in the description's order).
 std::vector<std::string> physics_links(const sim::Simulation& s) {
   std::vector<std::string> out;
@@ -134,8 +152,12 @@ SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::
   world_config.name = m.options.world;
   world_config.sdf_active_models_apart = m.options.world_models_apart;
   const sim::World world = sim::make_world(world_config);
-  m.params = m.options.controller_params;
-  m.owned = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, simulation_options(m.options));
+  sim::SimulationOptions sim_options = simulation_options(m.options);
+  m.params = m.options.ros2_parameters ? ros2_setup(m.options, sim_options, m.ros2) : m.options.controller_params;
+  m.owned = std::make_unique<sim::Simulation>(m.options.robot, world, m.params, sim_options);
+  if (m.ros2) {
+    for (const std::string& note : m.ros2->notes) m.owned->add_note(note);
+  }
   m.simulation = m.owned.get();
   if (m.options.paused) m.simulation->pause();
   m.link_names = physics_links(*m.simulation);
@@ -145,8 +167,11 @@ SimBridge::SimBridge(BridgeOptions options) : impl_(std::make_unique<Impl>(std::
 SimBridge::SimBridge(SimBridge& host, BridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& m = *impl_;
   m.host = host.impl_->host != nullptr ? host.impl_->host : host.impl_.get();
-  m.params = m.options.controller_params;
+  sim::SimulationOptions ros2_options;
+  m.params = m.options.ros2_parameters ? ros2_setup(m.options, ros2_options, m.ros2) : m.options.controller_params;
   sim::OtherRobot other;
+  other.ros2_control = ros2_options.ros2_control;
+  other.controller_update_rate = ros2_options.controller_update_rate;
   other.name = m.options.robot.name;
   other.robot = m.options.robot;
   other.controllers = m.params;
@@ -316,6 +341,10 @@ bool SimBridge::e_stop_active() const { return impl_->simulation->e_stop_active(
 const std::string& SimBridge::e_stop_topic() const { return impl_->simulation->e_stop_topic(); }
 const description::RobotModel& SimBridge::robot() const { return impl_->simulation->robot(); }
 control::Params SimBridge::controller_params() const { return impl_->params; }
+const Ros2ControlSummary* SimBridge::ros2_control() const { return impl_->ros2 ? &*impl_->ros2 : nullptr; }
+const control::Ros2ParameterSet* SimBridge::ros2_parameters() const {
+  return impl_->options.ros2_parameters ? &*impl_->options.ros2_parameters : nullptr;
+}
 const std::vector<std::string>& SimBridge::joint_drive_notes() const { return impl_->simulation->joint_drive_notes(); }
 const std::vector<std::string>& SimBridge::physics_warnings() const {
   return impl_->simulation->physics().model().warnings();
@@ -375,7 +404,8 @@ std::vector<ControllerSummary> SimBridge::list_controllers() const {
     // applies at the first tick after unpause).
     if (info.start_pending && info.state != control::ControllerLifecycle::Running) s.state = "waiting";
     for (const control::ResourceClaim& claim : info.claims) {
-      s.claims.push_back({ros_control_interface(claim.interface), claim.joints});
+      s.claims.push_back({impl_->ros2 ? control::interface_short_name(claim.interface) : ros_control_interface(claim.interface),
+                          claim.joints});
     }
     // Sensor interfaces: ros_control lists them with no resource (sensor handles claim nothing).
     for (const control::SensorUse& use : info.sensors) s.claims.push_back({use.interface, {}});

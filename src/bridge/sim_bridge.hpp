@@ -21,8 +21,10 @@
 #include <vector>
 
 #include "control/params.hpp"
+#include "control/ros2_params.hpp"
 #include "controllers/trajectory/trajectory_msgs.hpp"
 #include "description/robot_model.hpp"
+#include "description/ros2_control_plugin.hpp"
 #include "description/sensor_spec.hpp"
 #include "sensors/sensor_output.hpp"
 
@@ -50,6 +52,14 @@ struct BridgeOptions {
   // caller brings them in as robots of their own (describe_world's WorldSummary::robots; as
   // bridge::World does).
   bool world_models_apart = false;
+  // ros2_control (docs/ros2_control.md). Set: the robot's controllers are a ros2_control
+  // controller manager's, configured from these ROS 2 parameter files' contents (every node's
+  // parameters: e.g. the files of the description's gazebo_ros2_control <parameters>, or those a
+  // user gives the node); controller_params and parameter_root are then not used. The manager's
+  // node is <ros2_namespace>/<controller_manager_name> (sim/ros2_control_config.hpp), its
+  // update_rate and controllers those its parameters declare.
+  std::optional<control::Ros2ParameterSet> ros2_parameters;
+  std::string ros2_namespace;  // the manager's namespace; "": the plugin's <ros><namespace>
 };
 
 // A link's (or a model's root link's) state in the world frame: pose X_WL, and the twist of the
@@ -154,7 +164,25 @@ struct ClaimedResources {
 struct ControllerSummary {
   std::string name, type;
   std::string state;  // "initialized", "running", "stopped", "waiting" (its start is pending)
+  // ROS 1: hardware_interface is ros_control's class name ("hardware_interface::
+  // EffortJointInterface"). ros2_control: the interface's name ("position", "velocity",
+  // "effort"): ros2_control's claimed interface of joint J is "J/<name>".
   std::vector<ClaimedResources> claims;
+};
+
+// A ros2_control robot (BridgeOptions::ros2_parameters) as the wire layer needs it to name its
+// topics as gazebo_ros2_control would (docs/ros2_control.md).
+struct Ros2ControlSummary {
+  // The description's gazebo_ros2_control / gz_ros2_control plugin element: <ros><namespace>,
+  // <ros><remapping>s, <parameters> files (as written and resolved), <controller_manager_name>,
+  // <hold_joints>, <robot_param>, <robot_param_node>; nullopt when the description has none.
+  std::optional<description::Ros2ControlPlugin> plugin;
+  std::string controller_manager;  // the manager's fully qualified node name ("/ns/controller_manager")
+  std::string node_namespace;      // its (and its controllers') namespace: "/" or "/ns"
+  double update_rate = 100.0;      // Hz
+  std::vector<std::string> declared_controllers;  // what its parameters declare (NAME: {type: ...})
+  std::vector<std::string> parameter_files;       // the files' names, in order
+  std::vector<std::string> notes;                 // warnings from reading them
 };
 
 // A Gazebo model plugin of the robot (controllers/plugins/model_plugin.hpp) as ROS sees it: its
@@ -350,7 +378,14 @@ class SimBridge {
   // Per joint with a position or velocity interface: gazebo_ros_control's PID or mechsim's servo.
   const std::vector<std::string>& joint_drive_notes() const;
   // The controllers' parameter namespace (a handle on the tree the manager reads at load time).
+  // ros2_control: one map per declared controller, its type and its node's parameters
+  // (controller_params().child(NAME): use_stamped_vel, enable_odom_tf, frame_id, ...).
   control::Params controller_params() const;
+  // ros2_control: the robot's controller manager and plugin settings; null for a ROS 1 robot.
+  const Ros2ControlSummary* ros2_control() const;
+  // ros2_control: every node's parameters as the files give them (parameters_for(fqn)); null
+  // for a ROS 1 robot.
+  const control::Ros2ParameterSet* ros2_parameters() const;
 
   // Loop thread (an observer), or any thread once the loop has stopped: the state of every link
   // the physics has, in link_names() order, world frame.

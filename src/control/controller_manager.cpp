@@ -2,6 +2,7 @@
 #include "control/controller_manager_entry.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstring>
 #include <exception>
@@ -35,7 +36,14 @@ std::string join(const std::vector<std::string>& items) {
 
 ControllerManager::ControllerManager(const mechanism::MechanismModel& model, mechanism::MechanismState& state,
                                      Params params, ControllerRegistry registry)
-    : model_(model), state_(state), params_(std::move(params)), registry_(std::move(registry)) {}
+    : model_(model), state_(state), params_(std::move(params)), registry_(std::move(registry)) {
+  for (std::size_t j = 0; j < model_.joints.size(); ++j) {
+    if (model_.joints[j].hold_when_unclaimed) hold_joints_.push_back(static_cast<int>(j));
+  }
+  claimed_.assign(model_.joints.size(), 0);
+  held_.assign(model_.joints.size(), 0);
+  hold_position_.assign(model_.joints.size(), 0.0);
+}
 
 ControllerManager::~ControllerManager() = default;
 
@@ -192,6 +200,34 @@ ControlResult ControllerManager::load_controller(const std::string& name) {
   if (!ok) {
     return ControlResult::failure("could not initialize controller '" + name + "' of type '" + entry->type +
                                   "': " + (error.empty() ? "init() returned false" : error));
+  }
+  if (update_rate_ > 0.0 && params->has("update_rate")) {
+    // ros2_control: a controller's own rate; at or above the manager's it runs at the manager's.
+    double rate = 0.0;
+    try {
+      rate = params->get<double>("update_rate");
+    } catch (const ParamsError& e) {
+      return ControlResult::failure("could not load controller '" + name + "': " + e.what());
+    }
+    if (!(rate >= 0.0) || !std::isfinite(rate)) {
+      return ControlResult::failure("could not load controller '" + name + "': parameter " +
+                                    join_param_path(path, "update_rate") + " must be a rate >= 0 Hz");
+    }
+    if (rate > 0.0 && rate < update_rate_) entry->update_period = 1.0 / rate;
+  }
+  if (update_rate_ > 0.0 && params->has("update_rate")) {
+    // ros2_control: a controller's own rate; at or above the manager's it runs at the manager's.
+    double rate = 0.0;
+    try {
+      rate = params->get<double>("update_rate");
+    } catch (const ParamsError& e) {
+      return ControlResult::failure("could not load controller '" + name + "': " + e.what());
+    }
+    if (!(rate >= 0.0) || !std::isfinite(rate)) {
+      return ControlResult::failure("could not load controller '" + name + "': parameter " +
+                                    join_param_path(path, "update_rate") + " must be a rate >= 0 Hz");
+    }
+    if (rate > 0.0 && rate < update_rate_) entry->update_period = 1.0 / rate;
   }
   entry->claims = hardware.claims();
   entry->sensors = hardware.sensor_uses();

@@ -110,6 +110,13 @@ class ControllerManager {
   ControllerManager& operator=(const ControllerManager&) = delete;
 
   ControllerRegistry& registry() { return registry_; }
+  // ros2_control's controller manager rate (Hz; its update_rate parameter), set before loading:
+  // a controller whose parameters hold `update_rate` (Hz, > 0, below this rate) then updates at
+  // its own rate, as ros2_control runs it: whenever at least 1/update_rate s passed since its
+  // last update (the first update right after it starts), with that time as its period. 0 (the
+  // default, ROS 1): every controller updates at every manager update.
+  void set_update_rate(double hz) { update_rate_ = hz; }
+  double update_rate() const { return update_rate_; }
   // The robot's IMU and force-torque sensors (control/sensor_hardware.hpp), offered to every
   // controller loaded from now on; must outlive the manager. Null: the robot has none.
   void set_sensor_hardware(const SensorHardware* sensors) { sensors_ = sensors; }
@@ -168,6 +175,8 @@ class ControllerManager {
   std::string claim_conflict(const Entry& entry) const;
   void publish_list(std::vector<Entry*> list);
   void run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept;
+  // The hold_joints_ no running controller claims are held where they were when it let go.
+  void hold_unclaimed_joints(const std::vector<Entry*>& list) noexcept;
   // Applies the pending switch unless cancel_pending_switch() takes it back first.
   void try_apply_switch(double time) noexcept;
   void apply_switch(double time) noexcept;
@@ -182,6 +191,13 @@ class ControllerManager {
   Params params_;
   ControllerRegistry registry_;
   const SensorHardware* sensors_ = nullptr;
+  double update_rate_ = 0.0;  // Hz; 0: no per-controller rates
+  // gazebo_ros2_control's hold_joints: the joints that hold still while no running controller
+  // claims them (JointInfo::hold_when_unclaimed), the tick's scratch of claims, and per joint
+  // whether it is held and where (its position when it became unclaimed).
+  std::vector<int> hold_joints_;
+  std::vector<std::uint8_t> claimed_, held_;
+  std::vector<double> hold_position_;
 
   mutable std::mutex config_mutex_;  // non-real-time callers only
   std::vector<std::unique_ptr<Entry>> entries_;

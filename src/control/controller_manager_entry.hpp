@@ -25,6 +25,11 @@ struct ControllerManager::Entry {
   bool model_plugin = false;         // add_model_plugin
   std::string origin;                // model plugins: "file:line" of the <plugin> element
   bool claims_base = false;
+  // ros2_control: the controller's own update period (s; 0: every manager update) and the time
+  // of its last update (NaN: none since it started).
+  double update_period = 0.0;
+  double last_update = 0.0;
+  bool updated_since_start = false;
 
   std::atomic<ControllerLifecycle> state{ControllerLifecycle::Initialized};
   std::atomic<std::uint64_t> updates{0};

@@ -78,7 +78,30 @@ void ControllerManager::start(Entry& e, double time) noexcept {
     e.state.store(ControllerLifecycle::Stopped);
     return;
   }
+  e.updated_since_start = false;
   e.state.store(ControllerLifecycle::Running);
+}
+
+void ControllerManager::hold_unclaimed_joints(const std::vector<Entry*>& list) noexcept {
+  std::fill(claimed_.begin(), claimed_.end(), std::uint8_t{0});
+  for (const Entry* e : list) {
+    if (e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
+    for (const int j : e->joint_indices) claimed_[static_cast<std::size_t>(j)] = 1;
+  }
+  for (const int j : hold_joints_) {
+    const auto i = static_cast<std::size_t>(j);
+    if (claimed_[i] != 0) {
+      held_[i] = 0;
+      continue;
+    }
+    mechanism::JointState& joint = state_.joints[i];
+    if (held_[i] == 0) {
+      held_[i] = 1;
+      hold_position_[i] = joint.position;
+    }
+    joint.command_mode = HardwareInterface::Position;
+    joint.commanded_position = hold_position_[i];
+  }
 }
 
 void ControllerManager::run_controllers(const std::vector<Entry*>& list, double time, double period) noexcept {
@@ -86,10 +109,22 @@ void ControllerManager::run_controllers(const std::vector<Entry*>& list, double 
   Clock::time_point before = Clock::now();
   for (Entry* e : list) {
     if (e->state.load(std::memory_order_relaxed) != ControllerLifecycle::Running) continue;
+    double controller_period = period;
+    if (e->update_period > 0.0) {
+      // ros2_control: due when its own period has passed since its last update (a microsecond
+      // of slack for the ticks' rounding), with that time as its period.
+      if (e->updated_since_start) {
+        const double elapsed = time - e->last_update;
+        if (elapsed + 1e-6 < e->update_period) continue;
+        controller_period = elapsed;
+      }
+      e->updated_since_start = true;
+      e->last_update = time;
+    }
     UpdateStatus status;
     bool failed = false;
     try {
-      status = e->controller->update(time, period);
+      status = e->controller->update(time, controller_period);
     } catch (const std::exception& ex) {
       // The message is copied here, while the exception is alive.
       fail(*e, "update() threw: ", ex.what(), time);
@@ -139,6 +174,7 @@ void ControllerManager::update(double time, double period, bool reset_controller
   for (mechanism::JointState& joint : state_.joints) {
     if (joint.command_mode == HardwareInterface::Effort) joint.commanded_effort = 0.0;
   }
+  if (!hold_joints_.empty()) hold_unclaimed_joints(list);
   run_controllers(list, time, period);
   mechanism::enforce_safety_limits(model_, state_, period > 0.0 ? period : mechanism::kDefaultPeriod);
   mechanism::propagate_joint_to_actuator_effort(model_, state_);

@@ -30,7 +30,7 @@ Params::Kind Params::kind() const { return node_->kind; }
 
 std::string Params::location() const {
   if (node_->line <= 0) return {};
-  return tree_->source + ":" + std::to_string(node_->line);
+  return node_source(*tree_, *node_) + ":" + std::to_string(node_->line);
 }
 
 std::string Params::name() const {
@@ -42,9 +42,9 @@ std::string Params::name() const {
 void Params::fail(const std::string& path, const Node* node, const std::string& what) const {
   std::string message = "parameter " + path + ": " + what;
   if (node != nullptr && node->line > 0) {
-    message += " (" + tree_->source + ":" + std::to_string(node->line) + ")";
+    message += " (" + node_source(*tree_, *node) + ":" + std::to_string(node->line) + ")";
   } else if (node == nullptr && node_->line > 0) {
-    message += " (in the map at " + tree_->source + ":" + std::to_string(node_->line) + ")";
+    message += " (in the map at " + node_source(*tree_, *node_) + ":" + std::to_string(node_->line) + ")";
   }
   throw ParamsError(message, path);
 }

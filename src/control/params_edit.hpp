@@ -18,4 +18,13 @@ bool was_read(const Params& p);
 // as they belong to another source.
 void replace(Params at, std::string_view key, const Params& value);
 
+// replace() that keeps where each copied node came from: its file and line stay in messages
+// (a tree merged from several parameter files, control/ros2_params.hpp). Maps are replaced, not
+// merged; merge() merges.
+void graft(Params at, std::string_view key, const Params& value);
+
+// Lays `value` over the node at `key` under `at` as ROS 2 merges parameter files: maps merge key
+// by key (recursively), anything else replaces; sources and lines kept as graft() keeps them.
+void merge(Params at, std::string_view key, const Params& value);
+
 }  // namespace mechsim::control

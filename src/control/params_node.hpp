@@ -25,6 +25,9 @@ struct Params::Node {
   std::vector<std::pair<std::string, std::unique_ptr<Node>>> map;  // document order
   std::vector<std::unique_ptr<Node>> list;
   int line = 0;  // 1-based line in the source, 0 when built in code
+  // The file `line` is in when it is not the tree's own (a node grafted from another tree,
+  // control/params_edit.hpp's graft); null: the tree's source.
+  std::shared_ptr<const std::string> source;
   // Looked up through a handle (Params::was_read). Atomic: handles to one tree may be read from
   // several threads, and a lookup marks the node.
   mutable std::atomic<bool> read{false};
@@ -35,7 +38,13 @@ struct Params::Tree {
   std::unique_ptr<Node> root;
 };
 
+// The file a node's line is in: its own source or the tree's.
+inline const std::string& node_source(const Params::Tree& tree, const Params::Node& node) {
+  return node.source ? *node.source : tree.source;
+}
+
 struct ParamsAccess {
+  static const Params::Tree& tree(const Params& p) { return *p.tree_; }
   static const Params::Node* node(const Params& p) { return p.node_; }
   static Params::Node* mutable_node(const Params& p) { return p.node_; }
   [[noreturn]] static void fail(const Params& p, const std::string& what) { p.fail(p.path_, p.node_, what); }

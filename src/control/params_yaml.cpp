@@ -8,6 +8,7 @@
 
 #include "control/params.hpp"
 #include "control/params_node.hpp"
+#include "control/params_yaml.hpp"
 #include "description/utf8.hpp"
 
 namespace mechsim::control {
@@ -112,6 +113,32 @@ Params load(const std::string& text, const std::string& source) {
 }
 
 }  // namespace
+
+std::string yaml_where(const std::string& source, const YAML::Mark& mark) { return where(source, mark); }
+
+YAML::Node load_yaml_string(const std::string& yaml, const std::string& source_name) {
+  try {
+    return YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    throw ParamsError(where(source_name, e.mark) + ": malformed YAML: " + e.msg, "/");
+  }
+}
+
+YAML::Node load_yaml_file(const std::string& file_path) {
+  std::ifstream in(file_path, std::ios::binary);
+  if (!in) throw ParamsError(file_path + ": cannot open the parameter file", "/");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ParamsError(file_path + ": error while reading the parameter file", "/");
+  return load_yaml_string(text.str(), file_path);
+}
+
+Params params_from_yaml_map(const YAML::Node& node, const std::string& source) {
+  auto tree = std::make_shared<Params::Tree>();
+  tree->source = source;
+  tree->root = convert(node, source, "/");
+  return ParamsAccess::make(std::move(tree));
+}
 
 Params Params::from_yaml_string(std::string_view yaml, const std::string& source_name) {
   return load(std::string(yaml), source_name);

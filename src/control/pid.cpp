@@ -52,6 +52,11 @@ void Pid::init(const Params& params) {
   reset();
 }
 
+void Pid::init(const PidGains& gains) {
+  gains_.init(gains);
+  reset();
+}
+
 void Pid::init(const Params& parent, std::string_view ns) {
   auto params = parent.find(ns);
   if (!params || !params->is_map()) {

@@ -47,6 +47,8 @@ class Pid {
   // "No p gain specified for pid. Namespace: <path>" when `p` is missing, and names the path of
   // any mistyped gain.
   void init(const Params& params);
+  // Starts with `gains` (read elsewhere: ros2_controllers' defaults differ).
+  void init(const PidGains& gains);
   static PidGains gains_from_params(const Params& params);
 
   // Non-real-time: replaces the gains; the tick picks them up at its next compute_command().

@@ -1,5 +1,6 @@
 #include "description/robot_model.hpp"
 
+#include "description/ros2_control.hpp"
 #include "description/sensor_spec.hpp"
 
 namespace mechsim::description {

@@ -14,6 +14,7 @@
 namespace mechsim::description {
 
 struct SensorSpec;  // description/sensor_spec.hpp
+struct Ros2ControlHardware;  // description/ros2_control.hpp
 
 // A generic XML element, kept for the parts of a description whose meaning depends on a type
 // (PR2 transmissions, gazebo plugins). `line` is the 1-based line in the expanded document.
@@ -187,6 +188,8 @@ struct RobotModel {
   // Document order: <sensor> elements and sensor plugins (description/sensor_spec.hpp; include
   // it to use them: the special members below are out of line so that this header need not).
   std::vector<SensorSpec> sensors;
+  // Document order: the <ros2_control> tags (description/ros2_control.hpp; include it to use them).
+  std::vector<Ros2ControlHardware> ros2_control;
 
   RobotModel();
   ~RobotModel();

@@ -4,6 +4,8 @@
 #include <map>
 #include <sstream>
 
+#include "description/ros2_control.hpp"
+#include "description/ros2_control_plugin.hpp"
 #include "description/sensor_spec.hpp"
 
 namespace mechsim::description {
@@ -74,10 +76,73 @@ std::string summarize_robot(const RobotModel& model) {
     for (const auto& [key, value] : p.parameters) out << " " << key << "=" << value;
     out << "\n";
   }
+  out << summarize_ros2_control(model);
   std::size_t simulated = 0;
   for (const SensorSpec& sensor : model.sensors) simulated += sensor.simulated();
   out << "  sensors:         " << model.sensors.size() << " (" << simulated << " simulated)\n";
   for (const SensorSpec& sensor : model.sensors) out << "    " << describe_sensor(sensor) << "\n";
+  return out.str();
+}
+
+namespace {
+
+// "position [-1, 1]" / "position (initial 0.5)" for one interface.
+std::string describe_interface(const Ros2ControlInterface& i) {
+  std::ostringstream out;
+  out << i.name;
+  if (i.min || i.max) {
+    out << " [";
+    if (i.min) out << *i.min;
+    else out << "-inf";
+    out << ", ";
+    if (i.max) out << *i.max;
+    else out << "inf";
+    out << "]";
+  }
+  if (i.initial_value) out << " (initial " << *i.initial_value << ")";
+  return out.str();
+}
+
+std::string describe_interfaces(const std::vector<Ros2ControlInterface>& list) {
+  std::string out;
+  for (const Ros2ControlInterface& i : list) out += (out.empty() ? "" : ", ") + describe_interface(i);
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+std::string summarize_ros2_control(const RobotModel& model) {
+  if (model.ros2_control.empty()) return {};
+  std::ostringstream out;
+  out << "  ros2_control:    " << model.ros2_control.size() << " hardware component"
+      << (model.ros2_control.size() == 1 ? "" : "s") << "\n";
+  for (const Ros2ControlHardware& h : model.ros2_control) {
+    out << "    " << h.name << " (" << h.type << ", " << (h.plugin.empty() ? std::string("no plugin") : h.plugin)
+        << (h.gazebo_system() ? "" : ": NOT a Gazebo system, simulated as one") << ")\n";
+    for (const Ros2ControlComponent& j : h.joints) {
+      out << "      joint " << j.name << ": command " << describe_interfaces(j.command_interfaces) << "; state "
+          << describe_interfaces(j.state_interfaces);
+      if (const std::optional<Ros2ControlMimic> m = ros2_control_mimic(model, j)) {
+        out << "; mimics " << m->leader << " (x " << m->multiplier;
+        if (m->offset != 0.0) out << ", + " << m->offset;
+        out << (m->from_param ? ", <param name=\"mimic\">" : ", URDF <mimic>") << ")";
+      }
+      out << "\n";
+    }
+    for (const Ros2ControlComponent& c : h.sensors) out << "      sensor " << c.name << ": state " << describe_interfaces(c.state_interfaces) << "\n";
+    for (const Ros2ControlComponent& g : h.gpios) out << "      gpio " << g.name << ": NOT SIMULATED\n";
+  }
+  if (const std::optional<Ros2ControlPlugin> p = find_ros2_control_plugin(model)) {
+    out << "    plugin " << p->filename << ": controller manager " << p->controller_manager_node() << ", hold_joints "
+        << (p->hold_joints ? "true" : "false");
+    for (const Ros2Remapping& r : p->remappings) out << ", remap " << r.from << ":=" << r.to;
+    out << "\n";
+    for (std::size_t i = 0; i < p->parameters.size(); ++i) {
+      out << "      parameters " << p->parameters[i] << (p->parameter_paths[i].empty() ? " (NOT FOUND)" : "") << "\n";
+    }
+  } else {
+    out << "    no gazebo_ros2_control / gz_ros2_control plugin: its defaults (namespace /, controller_manager)\n";
+  }
   return out.str();
 }
 

@@ -1,5 +1,6 @@
 #include "mechanism/build_mechanism.hpp"
 
+#include "mechanism/ros2_control_joints.hpp"
 #include "mechanism/simple_transmission.hpp"
 #include "mechanism/transmission_builder.hpp"
 #include "mechanism/transmission_factory.hpp"
@@ -17,6 +18,8 @@ MechanismModel build_mechanism(const description::RobotModel& robot) {
     if (add_to_driven_joint(builder, robot, model)) continue;
     model.transmissions.push_back(build_transmission(builder));
   }
+  // ros2_control robots: the joints of their <ros2_control> tags, with the tags' interfaces.
+  add_ros2_control_joints(model, robot);
   return model;
 }
 

@@ -15,7 +15,8 @@ namespace mechsim::mechanism {
 // joint/actuator/parameter and the URDF line: unknown transmission type, a joint not in the robot
 // or not movable, a joint driven by two transmissions that are not both simple or disagree on
 // reduction or offset, an actuator of two joints, a zero reduction (or a missing one in the PR2
-// format), an unknown hardware interface, missing or bad type-specific parameters.
+// format), an unknown hardware interface, missing or bad type-specific parameters. Then the
+// joints of the robot's <ros2_control> tags (mechanism/ros2_control_joints.hpp).
 MechanismModel build_mechanism(const description::RobotModel& robot);
 
 }  // namespace mechsim::mechanism

@@ -4,7 +4,9 @@
 // (MechanismState). Hot-path functions take (const MechanismModel&, MechanismState&) and neither
 // allocate nor throw. build_mechanism (mechanism/build_mechanism.hpp) makes a MechanismModel.
 
+#include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,7 +37,29 @@ struct JointInfo {
   int transmission = -1;  // index into MechanismModel::transmissions
   int line = 0;           // the URDF <joint> element's line
 
+  // A joint of a <ros2_control> tag (mechanism/ros2_control_joints.hpp). Its `interfaces` are the
+  // tag's command interfaces; `state_interfaces` the state interfaces it lists ("position",
+  // "velocity", "effort": what ros2_control's broadcasters and controllers may read). ROS 1
+  // joints leave them empty: all three are readable.
+  bool ros2_control = false;
+  std::vector<std::string> state_interfaces;
+  // Per command interface (index: HardwareInterface's value), the <command_interface>'s
+  // <param name="min"> and "max" (rad, m, rad/s, m/s, N m, N): the safety limits clamp that mode's
+  // command into them (mechanism/safety_limits.hpp). +-infinity when not given.
+  std::array<double, 3> command_min{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                                    -std::numeric_limits<double>::infinity()};
+  std::array<double, 3> command_max{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                                    std::numeric_limits<double>::infinity()};
+  // gazebo_ros2_control's <hold_joints> (default true) on a joint with command interfaces: while
+  // no running controller claims it, the controller manager holds it where it was when it
+  // became unclaimed (a position command: the plugin's SetVelocity(0) every step holds it as
+  // hard), instead of letting it fall.
+  bool hold_when_unclaimed = false;
+
   bool has_interface(HardwareInterface hw) const;
+  // Whether ros2_control's state interface `name` is there (every one of position, velocity and
+  // effort for a ROS 1 joint).
+  bool has_state_interface(const std::string& interface_name) const;
 };
 
 struct ActuatorInfo {

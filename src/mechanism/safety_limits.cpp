@@ -89,10 +89,15 @@ int enforce_joint_limits(const JointInfo& joint, JointState& state, double perio
   const double reference = std::isfinite(state.last_position_command) ? state.last_position_command : state.position;
   const int rejected = replace_non_finite(state, reference);
   const EffortBounds b = effort_bounds(joint, state);
+  // A ros2_control command interface's min/max bound its mode's command (inf for other joints).
+  const auto mode = static_cast<std::size_t>(state.command_mode);
+  const double low = joint.command_min[mode], high = joint.command_max[mode];
+  if (state.command_mode == HardwareInterface::Effort) state.commanded_effort = clamp_to(state.commanded_effort, low, high);
+  if (state.command_mode == HardwareInterface::Velocity) state.commanded_velocity = clamp_to(state.commanded_velocity, low, high);
   state.commanded_effort = clamp_to(state.commanded_effort, b.low, b.high);
   state.commanded_velocity = limit_velocity_command(joint, state.commanded_velocity);
   if (state.command_mode == HardwareInterface::Position) {
-    state.commanded_position = limit_position_command(joint, state.commanded_position, reference, period);
+    state.commanded_position = clamp_to(limit_position_command(joint, state.commanded_position, reference, period), low, high);
     state.last_position_command = state.commanded_position;
   } else {
     state.last_position_command = std::numeric_limits<double>::quiet_NaN();

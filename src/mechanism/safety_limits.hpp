@@ -21,6 +21,9 @@
 //   positive, within velocity * period of the previous tick's position command (or of the measured
 //   position on the first position-commanded tick). The position limits win over reachability.
 // Velocity commands: into [-velocity, velocity] when the velocity limit is positive.
+// ros2_control joints (JointInfo::command_min/max, a <command_interface>'s min and max): the
+// command of the joint's current mode is clamped into [min, max] as well (position: after the
+// limits above).
 // Non-finite commands: effort and velocity become 0, a position command becomes the previous
 // position command (or the measured position); each replacement is counted.
 

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "control/params.hpp"
+#include "control/ros2_params.hpp"
 #include "sim/scenario_read.hpp"
 
 namespace mechsim::sim {
@@ -232,15 +233,47 @@ Scenario load_scenario(const Params& root, const std::string& path) {
     }
     // A robot driven by its Gazebo model plugins alone needs no controllers.
     if (auto controllers = root.find("controllers")) {
-      s.controllers_file = resolve_path(base, controllers->get<std::string>("file"));
-      if (!fs::exists(s.controllers_file)) fail(controllers->child("file"), "no such file: " + s.controllers_file);
+      if (controllers->has("file")) {
+        s.controllers_file = resolve_path(base, controllers->get<std::string>("file"));
+        if (!fs::exists(s.controllers_file)) fail(controllers->child("file"), "no such file: " + s.controllers_file);
+      }
+      if (auto files = controllers->find("files")) {
+        for (const Params& f : files->items()) {
+          const std::string file_path = resolve_path(base, f.as<std::string>());
+          if (!fs::exists(file_path)) fail(f, "no such file: " + file_path);
+          s.controllers_files.push_back(file_path);
+        }
+      }
+      // ROS 2 parameter files (ros__parameters), or none: the description's ros2_control plugin's.
+      std::vector<std::string> all_files = s.controllers_files;
+      if (!s.controllers_file.empty()) all_files.insert(all_files.begin(), s.controllers_file);
+      std::size_t ros2 = 0;
+      for (const std::string& f : all_files) ros2 += control::is_ros2_parameter_file(f) ? 1 : 0;
+      if (ros2 != 0 && ros2 != all_files.size()) {
+        fail(*controllers, "mixes ROS 2 parameter files (ros__parameters) with ROS 1 controller files");
+      }
+      if (!s.controllers_files.empty() && ros2 == 0) {
+        fail(controllers->child("files"), "`files` is for ROS 2 parameter files (ros__parameters); give a ROS 1 file as `file`");
+      }
+      s.ros2_control = all_files.empty() || ros2 != 0;
       s.controllers_namespace = controllers->get<std::string>("namespace", "");
       s.start = controllers->get<std::vector<std::string>>("start", {});
       if (auto overlay = controllers->find("params")) {
         Params file_params;
         try {
-          file_params = Params::from_yaml_file(s.controllers_file);
-          if (!s.controllers_namespace.empty()) file_params = file_params.child(s.controllers_namespace);
+          if (s.ros2_control) {
+            if (all_files.empty()) fail(*overlay, "needs controllers.file or files (the parameters it lays values over)");
+            const std::string cm = (s.controllers_namespace.empty() || s.controllers_namespace == "/"
+                                        ? std::string()
+                                        : (s.controllers_namespace.front() == '/' ? "" : "/") + s.controllers_namespace) +
+                                   "/controller_manager";
+            file_params = control::ros2_control_setup(control::Ros2ParameterSet::from_files(all_files), cm).controllers;
+          } else {
+            file_params = Params::from_yaml_file(s.controllers_file);
+            if (!s.controllers_namespace.empty()) file_params = file_params.child(s.controllers_namespace);
+          }
+        } catch (const ScenarioError&) {
+          throw;
         } catch (const std::exception& e) {
           fail(*overlay, std::string("cannot read the controllers file: ") + e.what());
         }
@@ -292,11 +325,26 @@ Scenario load_scenario(const Params& root, const std::string& path) {
         c.controllers_file = s.controllers_file;
         c.controllers_namespace = s.controllers_namespace;
         c.start = s.start;
+        c.controllers_files = s.controllers_files;
+        c.ros2_control = s.ros2_control;
         if (auto controllers = o.find("controllers")) {
-          only_keys(*controllers, {"file", "namespace", "start"});
+          only_keys(*controllers, {"file", "files", "namespace", "start"});
           if (controllers->has("file")) {
             c.controllers_file = resolve_path(base, controllers->get<std::string>("file"));
             if (!fs::exists(c.controllers_file)) fail(controllers->child("file"), "no such file: " + c.controllers_file);
+            c.controllers_files.clear();
+          }
+          if (auto files = controllers->find("files")) {
+            c.controllers_files.clear();
+            for (const Params& f : files->items()) {
+              const std::string file_path = resolve_path(base, f.as<std::string>());
+              if (!fs::exists(file_path)) fail(f, "no such file: " + file_path);
+              c.controllers_files.push_back(file_path);
+            }
+          }
+          if (controllers->has("file") || controllers->has("files")) {
+            c.ros2_control = !c.controllers_files.empty() ||
+                             (!c.controllers_file.empty() && control::is_ros2_parameter_file(c.controllers_file));
           }
           c.controllers_namespace = controllers->get<std::string>("namespace", c.controllers_namespace);
           c.start = controllers->get<std::vector<std::string>>("start", c.start);

@@ -43,6 +43,14 @@
 //     file: ../robots/cc8/config/controllers.yaml
 //     namespace: cc8
 //     start: [joint_state_controller, rover_drive_controller]
+//     # A ros2_control robot (<ros2_control> tags, docs/ros2_control.md): ROS 2 parameter files
+//     # (controller_manager: {ros__parameters: {update_rate: 100, NAME: {type: ...}}}, NAME:
+//     # {ros__parameters: {...}}), recognised by their ros__parameters. `file` and/or `files`
+//     # name them; with neither, the description's gazebo_ros2_control <parameters> are read.
+//     # `namespace` is then the controller manager's ROS 2 namespace (default: the plugin's
+//     # <ros><namespace>), `start` the controllers to load and activate, `params` values laid over
+//     # its controllers (NAME: {param: value}).
+//     # files: [../robots/cc8/config/ros2_controllers.yaml]
 //     # Optional: values laid over the file's parameters (under `namespace`) before the controllers
 //     # load, as a second `rosparam load` would. Each must name a parameter the file has (a
 //     # misspelt gain must not pass silently); lists and scalars replace, maps merge.
@@ -131,7 +139,9 @@
 //       controllers: {file: ..., namespace: cc8, start: [rover_drive_controller]}
 //   # e.g. timeline: - {at: 0, robot: cc8_2, controller: rover_drive_controller, twist: {vx: 0.2}}
 //   #      checks:   - {odometry: {robot: cc8_2, max_error_fraction: 0.03}}
-//   # Other robots' sensors are not simulated, nor their trajectory and gripper goals.
+//   # Other robots' sensors are not simulated, nor their trajectory and gripper goals. An other
+//   # ros2_control robot's controller manager is in the namespace /<name> unless its
+//   # controllers give `namespace` (as spawn_entity's -robot_namespace puts it there).
 //   # Sensors added to the robot, as Gazebo <gazebo reference="LINK"> blocks (the robot's own
 //   # <sensor> tags are simulated too; mechsim check lists them). Each entry is XML text.
 //   sensors:
@@ -267,6 +277,8 @@ struct OtherRobotConfig {
   std::string controllers_file;  // absolute; empty: no controllers YAML
   std::string controllers_namespace;
   std::vector<std::string> start;
+  std::vector<std::string> controllers_files;  // ros2_control: more parameter files
+  bool ros2_control = false;
 };
 
 // A scenario's steady_states: the windows (s) over which a wheel's soil readings are averaged.
@@ -296,6 +308,11 @@ struct Scenario {
   std::string controllers_namespace;
   std::vector<std::string> start;
   std::vector<ControllerParam> controller_params;  // controllers.params, in document order
+  // ros2_control: controllers.files (absolute; after `file`), and whether the controllers are a
+  // ROS 2 controller manager's (the files hold ros__parameters, or `controllers` names no file:
+  // the description's gazebo_ros2_control <parameters>).
+  std::vector<std::string> controllers_files;
+  bool ros2_control = false;
   std::vector<OtherRobotConfig> others;
   double duration = 10.0;
   double period = 0.001;

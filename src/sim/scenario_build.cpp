@@ -9,6 +9,7 @@
 #include "description/robot_loader.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/urdf/sensor_reader.hpp"
+#include "sim/ros2_control_config.hpp"
 #include "sim/world.hpp"
 
 namespace mechsim::sim {
@@ -56,15 +57,24 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s, std::string& urd
   }
   control::Params params;
   control::Params root;  // the whole file: gazebo_ros_control's legacy pid_gains are at its top
+  std::optional<Ros2ControlConfig> ros2;
   try {
-    if (!s.controllers_file.empty()) params = control::Params::from_yaml_file(s.controllers_file);
+    if (s.ros2_control) {
+      std::vector<std::string> files = s.controllers_files;
+      if (!s.controllers_file.empty()) files.insert(files.begin(), s.controllers_file);
+      ros2 = load_ros2_control_config(robot.model, files, s.controllers_namespace);
+      params = ros2->setup.controllers;
+    } else if (!s.controllers_file.empty()) {
+      params = control::Params::from_yaml_file(s.controllers_file);
+    }
     root = params;
-    if (!s.controllers_namespace.empty()) params = params.child(s.controllers_namespace);
+    if (!s.ros2_control && !s.controllers_namespace.empty()) params = params.child(s.controllers_namespace);
     for (const ControllerParam& p : s.controller_params) control::replace(params, p.key, p.value);
   } catch (const std::exception& e) {
     throw ScenarioError(s.file + ": controllers: " + e.what());
   }
   SimulationOptions options;
+  if (ros2) apply_ros2_control(options, *ros2);
   options.period = s.period;
   options.integrator = s.integrator;
   options.spawn = s.spawn;
@@ -92,9 +102,21 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s, std::string& urd
       throw ScenarioError(where + "robot: " + e.what());
     }
     try {
-      if (!c.controllers_file.empty()) o.controllers = control::Params::from_yaml_file(c.controllers_file);
+      if (c.ros2_control) {
+        std::vector<std::string> files = c.controllers_files;
+        if (!c.controllers_file.empty()) files.insert(files.begin(), c.controllers_file);
+        // Its own manager: in its own namespace unless the scenario names one (as spawn_entity's
+        // -robot_namespace puts each spawned robot's plugins in its namespace).
+        const Ros2ControlConfig config =
+            load_ros2_control_config(o.robot, files, c.controllers_namespace.empty() ? "/" + c.name : c.controllers_namespace);
+        o.controllers = config.setup.controllers;
+        o.ros2_control = true;
+        o.controller_update_rate = config.setup.update_rate;
+      } else if (!c.controllers_file.empty()) {
+        o.controllers = control::Params::from_yaml_file(c.controllers_file);
+      }
       o.parameter_root = o.controllers;
-      if (!c.controllers_namespace.empty()) o.controllers = o.controllers.child(c.controllers_namespace);
+      if (!c.ros2_control && !c.controllers_namespace.empty()) o.controllers = o.controllers.child(c.controllers_namespace);
     } catch (const std::exception& e) {
       throw ScenarioError(where + "controllers: " + e.what());
     }
@@ -102,6 +124,9 @@ std::unique_ptr<Simulation> build_simulation(const Scenario& s, std::string& urd
   }
   try {
     auto sim = std::make_unique<Simulation>(std::move(robot.model), world, params, options, std::move(others));
+    if (ros2) {
+      for (const std::string& note : ros2->notes) sim->add_note(note);
+    }
     sim->load_and_start(s.start);
     for (std::size_t i = 0; i < s.others.size(); ++i) {
       try {

@@ -8,6 +8,8 @@
 #include <thread>
 
 #include "controllers/builtin_controllers.hpp"
+#include "controllers/ros2_control/ros2_controllers.hpp"
+#include "description/ros2_control.hpp"
 #include "controllers/plugins/model_plugins.hpp"
 #include "controllers/drive/diff_drive_params.hpp"
 #include "controllers/drive/pr2_base_params.hpp"
@@ -21,6 +23,7 @@
 #include "physics/heightmap_sample.hpp"
 #include "physics/transform.hpp"
 #include "sim/ground_plane.hpp"
+#include "sim/ros2_control_config.hpp"
 
 namespace mechsim::sim {
 
@@ -63,10 +66,11 @@ bool has_cameras(const description::RobotModel& robot) {
 
 }  // namespace
 
-void fill_description_params(const control::Params& controllers, const description::RobotModel& robot) {
+void fill_description_params(const control::Params& controllers, const description::RobotModel& robot, bool ros2_control) {
   control::fill_rover_drive_geometry_all(controllers, robot);
   control::fill_pr2_base_geometry_all(controllers, robot);
-  control::fill_diff_drive_geometry_all(controllers, robot);
+  // ros2_controllers' diff drive reads no robot description.
+  if (!ros2_control) control::fill_diff_drive_geometry_all(controllers, robot);
 }
 
 control::ControlResult Simulation::load_controller(const std::string& name) {
@@ -74,7 +78,8 @@ control::ControlResult Simulation::load_controller(const std::string& name) {
     if (std::optional<control::Params> p = manager_->params().find(name); p && p->is_map()) {
       const std::string type = p->get<std::string>("type", "");
       if (type == control::kRoverDriveControllerType) control::fill_rover_drive_geometry(*p, robot_);
-      if (type == control::kDiffDriveControllerType) control::fill_diff_drive_geometry(*p, robot_);
+      // ros2_controllers' diff drive reads no robot description.
+      if (type == control::kDiffDriveControllerType && !options_.ros2_control) control::fill_diff_drive_geometry(*p, robot_);
       if (type == control::kPr2BaseController2Type || type == control::kPr2BaseControllerType ||
           type == control::kPr2OdometryType) {
         control::fill_pr2_base_geometry(*p, robot_);
@@ -96,6 +101,11 @@ Simulation::Simulation(description::RobotModel robot, const World& world, contro
     throw std::invalid_argument("simulation start time must be finite and >= 0 s");
   }
   ticks_ = static_cast<std::uint64_t>(std::llround(options_.start_time / options_.period));
+  // ros2_control's initial_value: where Gazebo's systems put the joints at load (a scenario's or
+  // spawn_model's -J wins).
+  for (const auto& [joint, position] : description::ros2_control_initial_positions(robot_)) {
+    options_.initial_joints.emplace(joint, position);
+  }
   if (!(options_.real_time_factor >= 0.0)) {
     throw std::invalid_argument("real-time factor must be >= 0 (0: as fast as possible)");
   }
@@ -175,7 +185,7 @@ void Simulation::build_robot(control::Params controller_params) {
   }
   mechanism_state_ = std::make_unique<mechanism::MechanismState>(mechanism::make_state(*mechanism_));
   mechanism_state_->base.floating = floating_;
-  fill_description_params(controller_params, robot_);
+  fill_description_params(controller_params, robot_, options_.ros2_control);
   // gazebo_ros_control's plugin element: its pid_gains (read now, as DefaultRobotHWSim reads them
   // at load) and a RobotHWSim mechsim cannot load.
   const std::optional<description::RosControlPlugin> ros_control = description::find_ros_control_plugin(robot_);
@@ -202,8 +212,15 @@ void Simulation::build_robot(control::Params controller_params) {
       plugin_notes_.emplace_back(note);
     }
   }
-  manager_ = std::make_unique<control::ControllerManager>(*mechanism_, *mechanism_state_, std::move(controller_params),
-                                                         control::controller_registry_with_plugins());
+  if (options_.controller_update_rate > 0.0) {
+    std::string note;
+    control_every_ = ros2_control_ticks(options_.controller_update_rate, options_.period, &note);
+    if (!note.empty()) plugin_notes_.push_back(std::move(note));
+  }
+  manager_ = std::make_unique<control::ControllerManager>(
+      *mechanism_, *mechanism_state_, std::move(controller_params),
+      options_.ros2_control ? control::ros2_controller_registry() : control::controller_registry_with_plugins());
+  if (options_.ros2_control) manager_->set_update_rate(options_.controller_update_rate > 0.0 ? 1.0 / control_period() : 1.0 / options_.period);
 
   const std::size_t n = mechanism_->joints.size();
   physics_joint_.assign(n, -1);

@@ -108,6 +108,16 @@ struct SimulationOptions {
   // sensor_seed: the same seed gives bit-identical readings.
   bool sensors = true;
   std::uint64_t sensor_seed = 1;
+  // ros2_control (sim/ros2_control_config.hpp): the controller parameters are a ROS 2 controller
+  // manager's (control::Ros2ControlSetup::controllers) and its types ros2_controllers'
+  // (controllers/ros2_control/ros2_controllers.hpp, over mechsim's built-in ones).
+  bool ros2_control = false;
+  // Hz: ros2_control's update_rate. The manager updates every round(1 / (rate * period)) ticks
+  // (at least every tick) with that period, commands held and written every tick in between, as
+  // gazebo_ros2_control updates it (read and update once the control period has passed, write
+  // every step); a controller's own update_rate runs it slower (ControllerManager::
+  // set_update_rate). 0: every tick (or gazebo_ros_control's controlPeriod).
+  double controller_update_rate = 0.0;
 };
 
 // Another robot in the same world (Gazebo's second spawned model): the simulation that holds it
@@ -123,6 +133,9 @@ struct OtherRobot {
   physics::SpawnPose spawn;  // X_W<root>; on terrain, z from the ground under (x, y)
   // Initial joint positions by the robot's own joint names (spawn_model -J).
   std::map<std::string, double> initial_joints;
+  // Its controllers are ros2_control's (SimulationOptions::ros2_control, controller_update_rate).
+  bool ros2_control = false;
+  double controller_update_rate = 0.0;
 };
 
 // Wall-clock seconds the paced simulation may fall behind its anchor before it gives up
@@ -136,8 +149,10 @@ struct TickResult {
 };
 
 // Fills, for every controller under `controllers`, the parameters its type takes from the robot
-// description where they are absent (rover drive and PR2 base/odometry geometry).
-void fill_description_params(const control::Params& controllers, const description::RobotModel& robot);
+// description where they are absent (rover drive and PR2 base/odometry geometry; ros_controllers'
+// diff drive geometry unless `ros2_control`: ros2_controllers' reads no description).
+void fill_description_params(const control::Params& controllers, const description::RobotModel& robot,
+                             bool ros2_control = false);
 
 class Simulation {
  public:
@@ -265,6 +280,9 @@ class Simulation {
   // with how often it recurred; then the sensors left out, and the Gazebo model plugins mechsim
   // does not simulate (once each: controllers/plugins/model_plugins.hpp).
   std::vector<std::string> physics_warnings() const;
+  // A configuration note physics_warnings() reports with the plugins' (a ros2_control parameter
+  // file's: sim/ros2_control_config.hpp).
+  void add_note(std::string note) { plugin_notes_.push_back(std::move(note)); }
   // Per joint with a position or velocity interface, how its commands reach the physics:
   // gazebo_ros_control's PID (pid_gains) or mechsim's servo, with the parameter path read.
   const std::vector<std::string>& joint_drive_notes() const { return pid_drive_.notes(); }

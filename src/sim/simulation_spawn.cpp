@@ -9,6 +9,8 @@
 #include "sim/ground_plane.hpp"
 #include "sim/simulation.hpp"
 
+#include "description/ros2_control.hpp"
+
 namespace mechsim::sim {
 
 namespace {
@@ -50,6 +52,11 @@ Simulation::Simulation(Simulation& host, OtherRobot other)
       options_(host.options_) {
   options_.spawn = other.spawn;
   options_.initial_joints = std::move(other.initial_joints);
+  for (const auto& [joint, position] : description::ros2_control_initial_positions(robot_)) {
+    options_.initial_joints.emplace(joint, position);
+  }
+  options_.ros2_control = other.ros2_control;
+  options_.controller_update_rate = other.controller_update_rate;
   options_.parameter_root = std::move(other.parameter_root);
   options_.settle_on_ground = false;
   ticks_ = host.ticks_;

@@ -54,6 +54,9 @@ namespace mechsim::control {
 
 class DiffDriveController : public Controller {
  public:
+  // ros2: ros2_controllers' parameters (controllers/ros2_control/ros2_diff_drive_params.hpp) and,
+  // with position_feedback false, odometry from the wheels' velocities.
+  explicit DiffDriveController(bool ros2 = false) : ros2_(ros2) {}
   bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
   void starting(double time) override;
   UpdateStatus update(double time, double period) override;
@@ -67,9 +70,14 @@ class DiffDriveController : public Controller {
  private:
   void brake() noexcept;
   double mean_position(const std::vector<JointHandle>& wheels) const noexcept;
+  double mean_velocity(const std::vector<JointHandle>& wheels) const noexcept;
 
+  bool ros2_ = false;
   DiffDriveConfig config_;
   std::vector<JointHandle> left_, right_;
+  // position_feedback false: each side's travel integrated from its mean wheel velocity (rad).
+  double left_travel_ = 0.0, right_travel_ = 0.0;
+  double last_time_ = 0.0;
   DiffDriveOdometry odometry_;
   TwistCommandTimeout command_timeout_;
   double last0_linear_ = 0.0, last0_angular_ = 0.0;  // the previous limited command

@@ -32,6 +32,8 @@ struct DiffDriveConfig {
   std::array<double, 6> pose_covariance_diagonal{};   // x, y, z, roll, pitch, yaw
   std::array<double, 6> twist_covariance_diagonal{};
   bool open_loop = false;                 // odometry from the command, not the wheels
+  // ros2_controllers: odometry from the wheels' positions (true) or their velocities integrated.
+  bool position_feedback = true;
   int velocity_rolling_window_size = 10;  // samples, >= 1
   bool publish_cmd = false;               // "cmd_vel_out": the command after the limits
   bool allow_multiple_cmd_vel_publishers = true;

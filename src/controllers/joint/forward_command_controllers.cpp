@@ -48,6 +48,17 @@ UpdateStatus JointCommandController::update(double time, double period) {
 }
 
 bool JointGroupCommandController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
+  if (interface_from_params_) {
+    const std::string path = join_param_path(params.path(), "interface_name");
+    if (!params.has("interface_name")) {
+      throw ControllerConfigError("parameter " + path + " not set (the joints' command interface: position, velocity or effort)");
+    }
+    const std::string name = params.get<std::string>("interface_name");
+    if (name == "position") iface_ = HardwareInterface::Position;
+    else if (name == "velocity") iface_ = HardwareInterface::Velocity;
+    else if (name == "effort") iface_ = HardwareInterface::Effort;
+    else throw ControllerConfigError("parameter " + path + ": interface '" + name + "' is none of position, velocity, effort");
+  }
   const auto names = read_joint_names(params);
   const std::string path = join_param_path(params.path(), "joints");
   for (std::size_t i = 0; i < names.size(); ++i) {

@@ -7,8 +7,11 @@
 //   effort_controllers/JointGroupEffortController, position_controllers/JointGroupPositionController,
 //   velocity_controllers/JointGroupVelocityController
 //     params: joints. Ports: "command" (ArrayCommandPort, one value per joint), "state".
+//   forward_command_controller/ForwardCommandController (ros2_controllers)
+//     params: joints, interface_name (position, velocity or effort). Ports as the group ones.
 // starting(): position controllers hold the current position; effort and velocity controllers
-// start from 0 (as ros_controllers does).
+// start from 0 (as ros_controllers does; ros2_controllers writes nothing until the first command,
+// which leaves Gazebo's command at its last value).
 
 #include <memory>
 #include <vector>
@@ -38,6 +41,8 @@ class JointCommandController : public Controller {
 class JointGroupCommandController : public Controller {
  public:
   explicit JointGroupCommandController(HardwareInterface iface) : iface_(iface) {}
+  // ros2_controllers' ForwardCommandController: the interface from `interface_name`.
+  JointGroupCommandController() : interface_from_params_(true) {}
   bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
   void starting(double time) override;
   UpdateStatus update(double time, double period) override;
@@ -47,7 +52,8 @@ class JointGroupCommandController : public Controller {
   StatePort<JointGroupControllerState>& state_port() { return state_; }
 
  private:
-  HardwareInterface iface_;
+  HardwareInterface iface_ = HardwareInterface::Effort;
+  bool interface_from_params_ = false;
   std::vector<JointHandle> joints_;
   std::vector<double> start_values_;  // scratch for starting(), sized at init
   std::unique_ptr<ArrayCommandPort> command_;

@@ -13,6 +13,7 @@
 #include "controllers/plugins/skid_steer_plugin.hpp"
 #include "controllers/plugins/tricycle_drive_plugin.hpp"
 #include "description/mimic_plugin.hpp"
+#include "description/ros2_control_plugin.hpp"
 #include "description/sensor_spec.hpp"
 
 namespace mechsim::control {
@@ -135,6 +136,14 @@ std::vector<ModelPluginStatus> model_plugin_status(const description::RobotModel
                     "' is NOT SIMULATED (mechsim cannot load a RobotHWSim plugin: gazebo_ros_control/DefaultRobotHWSim's "
                     "behaviour instead)";
       }
+    } else if (description::is_ros2_control_plugin(p.filename)) {
+      s.handling = PluginHandling::ControllerManager;
+      s.detail = "simulated: mechsim's controller manager runs the ros2_control controllers of its ROS 2 parameter files "
+                 "(docs/ros2_control.md)";
+      if (p.xml.child("position_proportional_gain") != nullptr) {
+        s.detail += "; position_proportional_gain is NOT SIMULATED (position commands reach mechsim's joint servo)";
+      }
+      if (p.xml.child("e_stop_topic") != nullptr) s.detail += "; e_stop_topic is NOT SIMULATED";
     } else if (p.filename.find("differential") != std::string::npos) {
       s.handling = PluginHandling::Physics;
       s.detail = "simulated: a law of the physics (the differential's spring)";

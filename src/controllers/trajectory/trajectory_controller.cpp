@@ -45,21 +45,140 @@ HardwareInterface read_interface(const Params& params) {
   return iface;
 }
 
+std::vector<std::string> string_list(const Params& params, const char* key) {
+  const std::string path = join_param_path(params.path(), key);
+  if (!params.has(key)) {
+    throw ControllerConfigError("parameter " + path + " not set (ros2_controllers' joint_trajectory_controller requires it)");
+  }
+  const Params p = params.child(key);
+  std::vector<std::string> out = p.is_scalar() ? std::vector<std::string>{p.as<std::string>()} : p.as<std::vector<std::string>>();
+  if (out.empty()) throw ControllerConfigError("parameter " + path + " is empty");
+  return out;
+}
+
+bool listed(const std::vector<std::string>& list, const char* name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+// ros2_controllers' command_interfaces: the interface the joints are commanded through, and the
+// others a combination lists (which the joints must offer too).
+HardwareInterface read_ros2_interface(const Params& params, std::vector<HardwareInterface>& also_offered) {
+  const std::vector<std::string> list = string_list(params, "command_interfaces");
+  const std::string path = join_param_path(params.path(), "command_interfaces");
+  for (const std::string& name : list) {
+    if (name != "position" && name != "velocity" && name != "acceleration" && name != "effort") {
+      throw ControllerConfigError("parameter " + path + ": unknown interface '" + name +
+                                  "' (position, velocity, acceleration or effort)");
+    }
+    if (std::count(list.begin(), list.end(), name) > 1) {
+      throw ControllerConfigError("parameter " + path + " lists '" + name + "' twice");
+    }
+  }
+  if (listed(list, "effort")) {
+    if (list.size() != 1) throw ControllerConfigError("parameter " + path + ": 'effort' cannot be combined with other interfaces");
+    return HardwareInterface::Effort;
+  }
+  if (listed(list, "position")) {
+    if (listed(list, "acceleration") && !listed(list, "velocity")) {
+      throw ControllerConfigError("parameter " + path + ": 'acceleration' needs 'velocity' with 'position'");
+    }
+    if (listed(list, "velocity")) also_offered.push_back(HardwareInterface::Velocity);
+    return HardwareInterface::Position;
+  }
+  if (list.size() == 1 && list[0] == "velocity") return HardwareInterface::Velocity;
+  throw ControllerConfigError("parameter " + path + ": the combination is not supported (position, position + velocity "
+                              "[+ acceleration], velocity, or effort)");
+}
+
+PidGains read_ros2_gains(const Params& params, const std::string& joint) {
+  PidGains g;
+  const std::optional<Params> p = params.find("gains/" + joint);
+  if (!p) return g;
+  g.p = p->get<double>("p", 0.0);
+  g.i = p->get<double>("i", 0.0);
+  g.d = p->get<double>("d", 0.0);
+  const double i_clamp = p->get<double>("i_clamp", 0.0);
+  g.i_max = std::abs(i_clamp);
+  g.i_min = -std::abs(i_clamp);
+  if (p->has("i_clamp_max")) g.i_max = p->get<double>("i_clamp_max");
+  if (p->has("i_clamp_min")) g.i_min = p->get<double>("i_clamp_min");
+  for (double v : {g.p, g.i, g.d}) {
+    if (!std::isfinite(v)) throw ControllerConfigError("parameter " + p->path() + ": the gains must be finite");
+  }
+  return g;
+}
+
 }  // namespace
+
+std::unique_ptr<JointTrajectoryController> JointTrajectoryController::ros2() {
+  auto c = std::make_unique<JointTrajectoryController>(HardwareInterface::Position);
+  c->ros2_ = true;
+  return c;
+}
 
 bool JointTrajectoryController::init(RobotHardware& hardware, const Params& params, std::string& /*error*/) {
   if (generic_) iface_ = read_interface(params);
   const std::vector<std::string> names = read_joint_names(params);
   const std::string joints_path = join_param_path(params.path(), "joints");
+  std::vector<HardwareInterface> also_offered;
+  std::vector<std::string> state_interfaces;
+  if (ros2_) {
+    if (params.has("command_joints")) {
+      const auto command_joints = params.get<std::vector<std::string>>("command_joints");
+      if (!command_joints.empty() && command_joints != names) {
+        throw ControllerConfigError("parameter " + join_param_path(params.path(), "command_joints") +
+                                    " differs from joints: commanding a subset of the joints is not simulated");
+      }
+    }
+    iface_ = read_ros2_interface(params, also_offered);
+    state_interfaces = string_list(params, "state_interfaces");
+    const std::string path = join_param_path(params.path(), "state_interfaces");
+    for (const std::string& s : state_interfaces) {
+      if (s == "acceleration") throw ControllerConfigError("parameter " + path + ": state interface 'acceleration' is not simulated");
+      if (s != "position" && s != "velocity") {
+        throw ControllerConfigError("parameter " + path + ": unknown state interface '" + s + "' (position, velocity)");
+      }
+    }
+    if (!listed(state_interfaces, "position")) {
+      throw ControllerConfigError("parameter " + path + " must list 'position' (ros2_controllers requires it)");
+    }
+    // ros2_controllers: the PID laws need the velocity too.
+    if (iface_ != HardwareInterface::Position && !listed(state_interfaces, "velocity")) {
+      throw ControllerConfigError("parameter " + path + " must list 'velocity' with command interface " +
+                                  std::string(interface_short_name(iface_)) + " (ros2_controllers requires it)");
+    }
+  }
   const bool pid_law = iface_ != HardwareInterface::Position;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    joints_.push_back(hardware.claim_joint(names[i], iface_, joints_path + "[" + std::to_string(i) + "]"));
+    const std::string joint_path = joints_path + "[" + std::to_string(i) + "]";
+    joints_.push_back(hardware.claim_joint(names[i], iface_, joint_path));
     const mechanism::JointInfo& info = joints_.back().info();
+    for (HardwareInterface other : also_offered) {
+      if (!info.has_interface(other)) {
+        throw ControllerConfigError("joint '" + names[i] + "' (" + joint_path + ") has no " + interface_short_name(other) +
+                                    " command interface, which " + join_param_path(params.path(), "command_interfaces") +
+                                    " lists");
+      }
+    }
+    for (const std::string& s : state_interfaces) {
+      if (!info.has_state_interface(s)) {
+        throw ControllerConfigError("joint '" + names[i] + "' (" + joint_path + ") has no " + s + " state interface, which " +
+                                    join_param_path(params.path(), "state_interfaces") + " lists");
+      }
+    }
     continuous_.push_back(info.continuous || info.type == description::JointType::Continuous ? 1 : 0);
-    velocity_ff_.push_back(pid_law ? params.get<double>("velocity_ff/" + names[i], 0.0) : 0.0);
+    if (ros2_) {
+      velocity_ff_.push_back(pid_law ? params.get<double>("gains/" + names[i] + "/ff_velocity_scale", 0.0) : 0.0);
+    } else {
+      velocity_ff_.push_back(pid_law ? params.get<double>("velocity_ff/" + names[i], 0.0) : 0.0);
+    }
     if (pid_law) {
       pids_.push_back(std::make_unique<Pid>());
-      pids_.back()->init(params, "gains/" + names[i]);
+      if (ros2_) {
+        pids_.back()->init(read_ros2_gains(params, names[i]));
+      } else {
+        pids_.back()->init(params, "gains/" + names[i]);
+      }
       gains_.push_back(std::make_unique<PidGainsPort>("gains/" + names[i], pids_.back().get()));
     }
   }

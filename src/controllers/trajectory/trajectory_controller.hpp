@@ -56,6 +56,22 @@ class JointTrajectoryController : public Controller {
   // PositionJointInterface", ...) or ROS 2's `command_interfaces: [effort|position|velocity]`;
   // effort when neither is given.
   JointTrajectoryController() : iface_(HardwareInterface::Effort), flavour_(ControllerFlavour::RosControl), generic_(true) {}
+  // ros2_controllers' joint_trajectory_controller/JointTrajectoryController (Humble, Jazzy), with
+  // its parameters (controllers/ros2_control/README: what applies):
+  //   joints (required), command_joints (empty or equal to joints)
+  //   command_interfaces (required): [position], [position, velocity], [position, velocity,
+  //     acceleration] command positions (Gazebo's systems give position precedence; the joints
+  //     must offer each interface listed); [velocity] and [effort] the PID law above
+  //   state_interfaces (required): position, and velocity (required with [velocity] or [effort];
+  //     acceleration is not simulated); the joints must offer them
+  //   gains.<joint>.{p, i, d, i_clamp (Humble), i_clamp_max, i_clamp_min, ff_velocity_scale}:
+  //     PID and velocity feed-forward (all default 0, as ros2_controllers), velocity and effort
+  //   constraints.{goal_time, stopped_velocity_tolerance, <joint>.trajectory, <joint>.goal},
+  //   allow_partial_joints_goal, state_publish_rate (Humble; Jazzy publishes every update: give
+  //   0), action_monitor_rate: as above
+  // Read and not simulated: open_loop_control, allow_integration_in_goal_trajectories,
+  // interpolation_method, cmd_timeout, allow_nonzero_velocity_at_trajectory_end.
+  static std::unique_ptr<JointTrajectoryController> ros2();
   bool init(RobotHardware& hardware, const Params& params, std::string& error) override;
   void starting(double time) override;
   UpdateStatus update(double time, double period) override;
@@ -84,6 +100,7 @@ class JointTrajectoryController : public Controller {
   HardwareInterface iface_;
   ControllerFlavour flavour_;
   bool generic_ = false;
+  bool ros2_ = false;
   std::vector<JointHandle> joints_;
   std::vector<std::uint8_t> continuous_;
   std::vector<std::unique_ptr<Pid>> pids_;

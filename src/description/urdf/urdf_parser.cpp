@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "description/ros2_control.hpp"
 #include "description/sensor_spec.hpp"
 #include "description/transmission_types.hpp"
 #include "description/urdf/urdf_reading.hpp"
@@ -280,6 +281,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   detail::precheck_urdf(*robot, problems, skeleton);
   detail::read_transmissions(*robot, problems, skeleton);
   detail::read_gazebo(*robot, problems, skeleton);
+  detail::read_ros2_control(*robot, problems, skeleton);
   ValidationReport& report = problems.report();
   validate_structure(skeleton, report);
   if (!report.ok()) throw_problems(source_name, report.errors);
@@ -349,6 +351,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   // The skeleton the sensors were read against had no collisions: contact sensors name them.
   for (SensorSpec& sensor : model.sensors)
     if (auto* contact = std::get_if<ContactSpec>(&sensor.details)) detail::resolve_contact(*contact, sensor.link, model);
+  model.ros2_control = std::move(skeleton.ros2_control);
 
   for (const std::string& m : urdfdom_messages) report.warnings.push_back(location(source_name, 0) + "urdfdom: " + m);
   if (!unresolved.empty()) {
@@ -358,6 +361,7 @@ RobotModel parse_urdf_string(std::string_view xml, const std::string& source_nam
   }
   validate_physics(model, ValidationOptions{options.lenient}, report);
   validate_references(model, report);
+  if (report.ok()) detail::check_ros2_control(model, problems);
   if (!report.ok()) throw_problems(source_name, report.errors);
   for (Joint& j : model.joints) normalize_axis(j.axis);
   if (warnings != nullptr) warnings->insert(warnings->end(), report.warnings.begin(), report.warnings.end());

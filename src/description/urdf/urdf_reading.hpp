@@ -69,4 +69,11 @@ void read_transmissions(const tinyxml2::XMLElement& robot, Problems& problems, R
 // <gazebo> elements: per-link and per-joint properties, plugins (also those inside sensors).
 void read_gazebo(const tinyxml2::XMLElement& robot, Problems& problems, RobotModel& model);
 
+// <ros2_control> tags (description/ros2_control.hpp): their structure, then (on the built model,
+// after the references are checked) their joints, interfaces, mimic relations and sensors
+// against the robot. check_ros2_control also sets the URDF mimic of a joint that Humble's
+// <param name="mimic"> makes a follower (mechsim's physics makes mimic joints constraints).
+void read_ros2_control(const tinyxml2::XMLElement& robot, Problems& problems, RobotModel& model);
+void check_ros2_control(RobotModel& model, Problems& problems);
+
 }  // namespace mechsim::description::detail
