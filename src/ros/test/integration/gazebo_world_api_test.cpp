@@ -122,34 +122,6 @@ const char* const kSensorWorld = R"(<?xml version="1.0"?>
 </sdf>
 )";
 
-std::string write_world(const std::string& name, const char* text) {
-  const std::string path = log_dir() + "/" + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-template <class M>
-struct Latest {
-  Latest(::ros::NodeHandle& nh, const std::string& topic)
-      : sub(nh.subscribe<M>(topic, 5, [this](const typename M::ConstPtr& m) {
-          std::lock_guard<std::mutex> l(mutex);
-          msg = *m;
-          ++count;
-        })) {}
-  M get() {
-    std::lock_guard<std::mutex> l(mutex);
-    return msg;
-  }
-  int received() {
-    std::lock_guard<std::mutex> l(mutex);
-    return count;
-  }
-  std::mutex mutex;
-  M msg;
-  int count = 0;
-  ::ros::Subscriber sub;
-};
-
 std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }

@@ -4,6 +4,7 @@
 
 #include <gmock/gmock.h>
 
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -128,6 +129,36 @@ class GazeboWorldNode : public ::testing::Test {
   ::ros::Subscriber clock_sub_;
   std::mutex mutex_;
   double clock_ = -1.0;
+};
+
+// Writes `text` into the test program's log folder (removed when the suite ends); its path.
+inline std::string write_world(const std::string& name, const std::string& text) {
+  const std::string path = log_dir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The latest message on a topic, and how many came.
+template <class M>
+struct Latest {
+  Latest(::ros::NodeHandle& nh, const std::string& topic)
+      : sub(nh.subscribe<M>(topic, 5, [this](const typename M::ConstPtr& m) {
+          std::lock_guard<std::mutex> l(mutex);
+          msg = *m;
+          ++count;
+        })) {}
+  M get() {
+    std::lock_guard<std::mutex> l(mutex);
+    return msg;
+  }
+  int received() {
+    std::lock_guard<std::mutex> l(mutex);
+    return count;
+  }
+  std::mutex mutex;
+  M msg;
+  int count = 0;
+  ::ros::Subscriber sub;
 };
 
 // The latest /gazebo/model_states message, and how many came.

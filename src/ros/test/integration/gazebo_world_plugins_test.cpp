@@ -24,34 +24,6 @@
 namespace mechsim::ros::test {
 namespace {
 
-std::string write_world(const std::string& name, const std::string& text) {
-  const std::string path = log_dir() + "/" + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-template <class M>
-struct LatestOf {
-  LatestOf(::ros::NodeHandle& nh, const std::string& topic)
-      : sub(nh.subscribe<M>(topic, 5, [this](const typename M::ConstPtr& m) {
-          std::lock_guard<std::mutex> l(mutex);
-          msg = *m;
-          ++count;
-        })) {}
-  M get() {
-    std::lock_guard<std::mutex> l(mutex);
-    return msg;
-  }
-  int received() {
-    std::lock_guard<std::mutex> l(mutex);
-    return count;
-  }
-  std::mutex mutex;
-  M msg;
-  int count = 0;
-  ::ros::Subscriber sub;
-};
-
 double yaw_of(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
 }
@@ -192,16 +164,16 @@ TEST_F(GazeboWorldNode, DrivePluginsOfWorldModelsAndSpawnedRobotsDriveOnGazebosT
   ASSERT_TRUE(call("/gazebo/spawn_urdf_model", bare));
   ASSERT_TRUE(bare.response.success) << bare.response.status_message;
   ::ros::Publisher t3_cmd = nh_.advertise<geometry_msgs::Twist>("/t3/cmd_vel", 1);
-  LatestOf<nav_msgs::Odometry> t3_odom(nh_, "/t3/odom");
+  Latest<nav_msgs::Odometry> t3_odom(nh_, "/t3/odom");
 
   ::ros::Publisher skid_cmd = nh_.advertise<geometry_msgs::Twist>("/skid/cmd_vel", 1);
   ::ros::Publisher planar_cmd = nh_.advertise<geometry_msgs::Twist>("/planar/cmd_vel", 1);
   ::ros::Publisher trike_cmd = nh_.advertise<geometry_msgs::Twist>("/trike/cmd_vel", 1);
   ::ros::Publisher t2_cmd = nh_.advertise<geometry_msgs::Twist>("/t2/cmd_vel", 1);
   ::ros::Publisher gzdd_cmd = nh_.advertise<geometry_msgs::Pose>("/gzdd/vel_cmd", 1);
-  LatestOf<nav_msgs::Odometry> skid_odom(nh_, "/skid/odom"), planar_odom(nh_, "/planar/odom"), trike_odom(nh_, "/trike/odom"),
+  Latest<nav_msgs::Odometry> skid_odom(nh_, "/skid/odom"), planar_odom(nh_, "/planar/odom"), trike_odom(nh_, "/trike/odom"),
       t2_odom(nh_, "/t2/odom");
-  LatestOf<sensor_msgs::JointState> trike_joints(nh_, "/trike/joint_states");
+  Latest<sensor_msgs::JointState> trike_joints(nh_, "/trike/joint_states");
   ASSERT_TRUE(wait_until(
       [&] {
         return skid_cmd.getNumSubscribers() > 0 && planar_cmd.getNumSubscribers() > 0 && trike_cmd.getNumSubscribers() > 0 &&
@@ -359,9 +331,9 @@ const char* const kSensorPluginWorld = R"(<?xml version="1.0"?>
 
 TEST_F(GazeboWorldNode, SensorPluginsOfWorldModelsPublishOnGazebosTopics) {
   start(false, write_world("sensor_plugins.world", kSensorPluginWorld));
-  LatestOf<sensor_msgs::Imu> imu_plugin(nh_, "/imu_box/data"), imu_sensor(nh_, "/imu_box/sensor");
-  LatestOf<gazebo_msgs::ContactsState> bumper(nh_, "/bumper_box/bumper");
-  LatestOf<nav_msgs::Odometry> p3d(nh_, "/p3d_box/odom");
+  Latest<sensor_msgs::Imu> imu_plugin(nh_, "/imu_box/data"), imu_sensor(nh_, "/imu_box/sensor");
+  Latest<gazebo_msgs::ContactsState> bumper(nh_, "/bumper_box/bumper");
+  Latest<nav_msgs::Odometry> p3d(nh_, "/p3d_box/odom");
   std::mutex js_mutex;
   std::vector<sensor_msgs::JointState> js;
   // A world model's joint state publisher is under the model's name (gazebo_plugins' GazeboRos).
