@@ -11,13 +11,11 @@
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "description/robot_model.hpp"
+#include "ros/bridge_names.hpp"
 
 namespace mechsim::ros {
 
-// X_PC of a joint at position q (rad or m): origin * motion. Fixed/floating/planar: origin.
-description::Pose joint_transform(const description::Joint& joint, double q);
-
+// The transforms come from the bridge layer's robot frames (bridge/robot_frames.hpp).
 class TfPublisher {
  public:
   // `odom_frame` empty: no odom -> root transform.
@@ -31,6 +29,7 @@ class TfPublisher {
   std::string odom_frame_;
   ::ros::Publisher tf_pub_, static_pub_;
   tf2_msgs::TFMessage message_;  // reused
+  std::vector<JointFrame> frames_;  // reused
 };
 
 }  // namespace mechsim::ros

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "physics/transform.hpp"
+#include "bridge/robot_frames.hpp"
 #include "ros2/conversions.hpp"
 
 namespace mechsim::ros2 {
@@ -11,11 +11,6 @@ namespace mechsim::ros2 {
 namespace {
 
 using description::Pose;
-
-bool moving(const description::Joint& j) {
-  using description::JointType;
-  return j.type == JointType::Revolute || j.type == JointType::Continuous || j.type == JointType::Prismatic;
-}
 
 geometry_msgs::msg::TransformStamped transform(const Pose& X, const std::string& parent, const std::string& child,
                                                const builtin_interfaces::msg::Time& stamp) {
@@ -35,18 +30,6 @@ geometry_msgs::msg::TransformStamped transform(const Pose& X, const std::string&
 
 }  // namespace
 
-Pose joint_transform(const description::Joint& joint, double q) {
-  using description::JointType;
-  Pose motion;
-  if (joint.type == JointType::Revolute || joint.type == JointType::Continuous) {
-    const double s = std::sin(0.5 * q);
-    motion.orientation = {std::cos(0.5 * q), joint.axis.x * s, joint.axis.y * s, joint.axis.z * s};
-  } else if (joint.type == JointType::Prismatic) {
-    motion.position = {joint.axis.x * q, joint.axis.y * q, joint.axis.z * q};
-  }
-  return physics::compose(joint.origin, motion);
-}
-
 StatePublisher::StatePublisher(Participant& participant, Outbox& outbox, const std::string& ns,
                                const description::RobotModel& robot, const std::string& urdf, std::string odom_frame)
     : robot_(robot), outbox_(outbox), odom_frame_(std::move(odom_frame)), node_(participant, ns, "robot_state_publisher") {
@@ -61,9 +44,8 @@ StatePublisher::StatePublisher(Participant& participant, Outbox& outbox, const s
 void StatePublisher::publish_static(double time) {
   tf2_msgs::msg::TFMessage msg;
   const auto stamp = to_time(time);
-  for (const description::Joint& j : robot_.joints) {
-    if (!moving(j)) msg.transforms.push_back(transform(j.origin, j.parent_link, j.child_link, stamp));
-  }
+  for (const bridge::JointFrame& f : bridge::fixed_frames(robot_))
+    msg.transforms.push_back(transform(f.X_PC, f.joint->parent_link, f.joint->child_link, stamp));
   static_pub_->publish(msg);
 }
 
@@ -72,10 +54,9 @@ void StatePublisher::publish(double time, const std::vector<double>& q, const de
   const auto stamp = to_time(time);
   auto message = std::make_shared<tf2_msgs::msg::TFMessage>();
   message->transforms.reserve(robot_.joints.size() + 1);
-  for (std::size_t i = 0; i < robot_.joints.size() && i < q.size(); ++i) {
-    const description::Joint& j = robot_.joints[i];
-    if (moving(j)) message->transforms.push_back(transform(joint_transform(j, q[i]), j.parent_link, j.child_link, stamp));
-  }
+  bridge::moving_frames(robot_, q, frames_);
+  for (const bridge::JointFrame& f : frames_)
+    message->transforms.push_back(transform(f.X_PC, f.joint->parent_link, f.joint->child_link, stamp));
   if (!odom_frame_.empty()) message->transforms.push_back(transform(X_OB, odom_frame_, robot_.root_link, stamp));
   if (message->transforms.empty()) return;
   auto pub = tf_pub_;

@@ -16,15 +16,15 @@
 #include <mechsim_ros2_msgs/std_msgs.hpp>
 #include <mechsim_ros2_msgs/tf2_msgs.hpp>
 
+#include "bridge/robot_frames.hpp"
 #include "description/robot_model.hpp"
 #include "ros2/node.hpp"
 #include "ros2/outbox.hpp"
 
 namespace mechsim::ros2 {
 
-// X_PC of a joint at position q (rad or m): origin * motion (fixed, floating, planar: origin).
-description::Pose joint_transform(const description::Joint& joint, double q);
-
+// The transforms come from the bridge layer's robot frames (bridge/robot_frames.hpp), as the
+// ROS 1 binding's.
 class StatePublisher {
  public:
   // `ns`: the node's namespace (robot_description is relative to it); `odom_frame` non-empty adds
@@ -44,6 +44,7 @@ class StatePublisher {
   std::unique_ptr<Publisher<std_msgs::msg::String>> description_pub_;
   std::shared_ptr<Publisher<tf2_msgs::msg::TFMessage>> tf_pub_;
   std::unique_ptr<Publisher<tf2_msgs::msg::TFMessage>> static_pub_;
+  std::vector<bridge::JointFrame> frames_;  // the loop thread's, reused
 };
 
 }  // namespace mechsim::ros2
