@@ -11,6 +11,7 @@
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include "bridge/robot_frames.hpp"
 #include "ros/bridge_names.hpp"
 
 namespace mechsim::ros {
