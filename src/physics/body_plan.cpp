@@ -80,18 +80,20 @@ class Planner {
     return it == robot_.gazebo_links.end() ? no_gazebo_ : it->second;
   }
 
-  // Why a shape has no volume MuJoCo can hold ("" when it has one): a box, cylinder or sphere
-  // with a zero (or negative) size, or a mesh scaled to nothing. MuJoCo refuses such geoms.
+  // Why a shape has no volume ("" when it has one): a box, cylinder or sphere with a size of
+  // exactly zero, or a mesh scaled to nothing, as public descriptions use for placeholders
+  // (MuJoCo refuses them; Gazebo loads them). A negative size is an error in the description and
+  // goes on to MuJoCo, whose rejection names the geom.
   static std::string degenerate(const description::Geometry& g) {
     switch (g.type) {
       case description::GeometryType::Box:
-        if (!(g.size.x > 0.0 && g.size.y > 0.0 && g.size.z > 0.0)) return "a box of size zero";
+        if (g.size.x == 0.0 || g.size.y == 0.0 || g.size.z == 0.0) return "a box of size zero";
         break;
       case description::GeometryType::Cylinder:
-        if (!(g.radius > 0.0 && g.length > 0.0)) return "a cylinder of radius or length zero";
+        if (g.radius == 0.0 || g.length == 0.0) return "a cylinder of radius or length zero";
         break;
       case description::GeometryType::Sphere:
-        if (!(g.radius > 0.0)) return "a sphere of radius zero";
+        if (g.radius == 0.0) return "a sphere of radius zero";
         break;
       case description::GeometryType::Mesh:
         if (!(g.mesh_scale.x != 0.0 && g.mesh_scale.y != 0.0 && g.mesh_scale.z != 0.0)) return "a mesh scaled by zero";

@@ -222,7 +222,9 @@ SensorPublishers::SensorPublishers(::ros::NodeHandle root, SimBridge& bridge)
       }
     } else if (kind == "imu") {
       o.kind = Kind::Imu;
-      o.triggers.push_back(advertise<sensor_msgs::Imu>(root_, topic, 10, o));
+      // A second of a 100 Hz IMU: roscpp drops what its queue cannot hold while the sender
+      // thread waits for a core, and a filter (robot_pose_ekf) wants every sample.
+      o.triggers.push_back(advertise<sensor_msgs::Imu>(root_, topic, 100, o));
       type = "sensor_msgs/Imu";
     } else if (kind == "contact") {
       o.kind = Kind::Contacts;

@@ -159,7 +159,11 @@ TEST(SdfWorld, Pr2EmptyWorldGroundPlaneAndSun) {
   EXPECT_EQ(ground.planes[0].mu, 100.0);
   EXPECT_EQ(ground.planes[0].mu2, 50.0);
   expect_near(iso(ground.planes[0].pose).rotation() * Eigen::Vector3d::UnitZ(), {0, 0, 1}, "plane normal");
-  EXPECT_TRUE(mentions(w.not_simulated, "light 'sun'"));
+  // The sun: a world light (Gazebo's light services read it), not a model.
+  ASSERT_EQ(w.lights.size(), 1u);
+  EXPECT_EQ(w.lights[0].name, "sun");
+  EXPECT_EQ(w.lights[0].type, "directional");
+  EXPECT_FALSE(mentions(w.not_simulated, "sun"));
 }
 
 TEST(SdfWorld, JointsFrictionPhysicsAndIncludes) {
@@ -197,9 +201,10 @@ TEST(SdfWorld, JointsFrictionPhysicsAndIncludes) {
   EXPECT_DOUBLE_EQ(*w.real_time_update_rate, 500.0);
   EXPECT_DOUBLE_EQ(*w.real_time_factor, 2.0);
   EXPECT_DOUBLE_EQ(w.gravity.z, -3.7);
-  // mechsim's own ground_plane: a plane at z = 0; sun: a light, listed.
+  // mechsim's own ground_plane: a plane at z = 0; sun: a directional world light.
   ASSERT_EQ(model(w, "ground_plane").planes.size(), 1u);
-  EXPECT_TRUE(mentions(w.not_simulated, "light"));
+  ASSERT_EQ(w.lights.size(), 1u);
+  EXPECT_EQ(w.lights[0].type, "directional");
   // model:// from SdfOptions::model_paths, renamed and placed by the include.
   expect_near(collision_centre(model(w, "crate_a")), {4, 5, 1.5}, "crate_a");
 

@@ -36,7 +36,7 @@ template <class M>
 class Stamps {
  public:
   Stamps(::ros::NodeHandle& nh, const std::string& topic) {
-    sub_ = nh.subscribe<M>(topic, 100, [this](const typename M::ConstPtr& msg) {
+    sub_ = nh.subscribe<M>(topic, 1000, [this](const typename M::ConstPtr& msg) {
       std::lock_guard<std::mutex> l(m_);
       stamps_.push_back(msg->header.stamp.toSec());
       last_ = *msg;
