@@ -1,6 +1,6 @@
 #pragma once
 // Offscreen rendering of one Physics instance's world with MuJoCo's renderer, on an OpenGL context
-// without a window (EGL surfaceless: Mesa's llvmpipe on the CPU, or a GPU through the same path).
+// without a window (EGL: a GPU when one is listed, else Mesa's llvmpipe on the CPU; egl_context.hpp).
 // Colour and depth come from one render; depth is converted to metres along the optical axis.
 //
 // Cost (DESIGN.md, "Rendering without a GPU"): multisampling, shadows and reflections are off
