@@ -31,14 +31,14 @@ def cases(seconds):
     s = str(seconds)
     return [
         ("PR2", "no sensors", PR2 + ["--sensors", "none", "--seconds", s]),
-        ("PR2", "usual sensors (2 lasers, IMU, bumpers)", PR2 + ["--seconds", s]),
+        ("PR2", "usual sensors (2 lasers, 6 contacts, IMU)", PR2 + ["--seconds", s]),
         ("PR2", "+ its 7 cameras", PR2 + ["--sensors", "cameras", "--seconds", cams]),
         ("CC8, flat", "no sensors", CC8 + ["--sensors", "none", "--seconds", s]),
-        ("CC8, flat", "usual sensors (2 IMUs)", CC8 + ["--seconds", s]),
+        ("CC8, flat", "usual sensors (IMU)", CC8 + ["--seconds", s]),
         ("CC8, flat", "+ ZED2 set 1280x720 15 Hz", CC8 + ["--sensors", "cameras", "--seconds", cams]),
         ("CC8, flat", "+ ZED2 set 640x360 15 Hz", CC8 + ["--sensors", "cameras", "--camera-width", "640", "--seconds", cams]),
         ("CC8, Mars Yard", "no sensors", CC8 + YARD + ["--sensors", "none", "--seconds", s]),
-        ("CC8, Mars Yard", "usual sensors (2 IMUs)", CC8 + YARD + ["--seconds", s]),
+        ("CC8, Mars Yard", "usual sensors (IMU)", CC8 + YARD + ["--seconds", s]),
         ("CC8, Mars Yard", "+ ZED2 set 1280x720 15 Hz", CC8 + YARD + ["--sensors", "cameras", "--seconds", cams]),
         ("CC8, Mars Yard", "+ ZED2 set 640x360 15 Hz",
          CC8 + YARD + ["--sensors", "cameras", "--camera-width", "640", "--seconds", cams]),
