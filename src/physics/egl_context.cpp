@@ -108,9 +108,10 @@ bool cpu_chosen() {
   return env != nullptr && std::string(env) == "cpu";
 }
 
-// A GPU of the device platform first, then the surfaceless platform (llvmpipe), then any other
-// device (an EGL with devices but no surfaceless platform).
-Display open_display(const EglApi& api, std::string& tried) {
+// A GPU of the device platform first (unless `cpu_only`), then the surfaceless platform
+// (llvmpipe), then a software device of the device platform (an EGL with devices but no
+// surfaceless platform).
+Display open_display(const EglApi& api, std::string& tried, bool cpu_only) {
   EGLint major = 0, minor = 0;
   const auto version = [&] { return "EGL " + std::to_string(major) + "." + std::to_string(minor); };
   std::vector<EGLDeviceEXT> handles;
@@ -124,7 +125,7 @@ Display open_display(const EglApi& api, std::string& tried) {
     const EglDeviceInfo& info = devices[i];
     return {d, version() + " device " + std::to_string(i) + (info.node.empty() ? "" : " (" + info.node + ")"), !info.software};
   };
-  if (!cpu_chosen()) {
+  if (!cpu_only) {
     for (std::size_t i = 0; i < devices.size(); ++i)
       if (!devices[i].software)
         if (Display d = device_display(i); d.display != EGL_NO_DISPLAY) return d;
@@ -133,10 +134,26 @@ Display open_display(const EglApi& api, std::string& tried) {
   if (d != EGL_NO_DISPLAY && api.initialize(d, &major, &minor) == EGL_TRUE) return {d, version() + " surfaceless", false};
   tried += (tried.empty() ? "" : "; ") + std::string("surfaceless platform: EGL error ") + hex(api.get_error());
   for (std::size_t i = 0; i < devices.size(); ++i)
-    if (devices[i].software || cpu_chosen())
+    if (devices[i].software)
       if (Display dd = device_display(i); dd.display != EGL_NO_DISPLAY) return dd;
   if (devices.empty()) tried += "; device platform: no devices";
   return {};
+}
+
+// A desktop OpenGL context on `disp` (made, not current); "" or what failed.
+std::string make_context(const EglApi& api, const Display& disp, EGLContext& ctx) {
+  if (api.bind_api(EGL_OPENGL_API) != EGL_TRUE)
+    return "EGL display offers no desktop OpenGL (EGL error " + hex(api.get_error()) + ")";
+  const EGLint attributes[] = {EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
+                               EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_COLOR_BUFFER_TYPE, EGL_RGB_BUFFER,
+                               EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint count = 0;
+  if (api.choose_config(disp.display, attributes, &config, 1, &count) != EGL_TRUE || count < 1)
+    return "EGL has no 8-bit RGBA + 24-bit depth OpenGL configuration (EGL error " + hex(api.get_error()) + ")";
+  ctx = api.create_context(disp.display, config, EGL_NO_CONTEXT, nullptr);
+  if (ctx == EGL_NO_CONTEXT) return "eglCreateContext failed (EGL error " + hex(api.get_error()) + ")";
+  return "";
 }
 
 }  // namespace
@@ -149,22 +166,21 @@ EglContext::EglContext() {
   // The API table lives as long as the context: keep it beside the handles.
   static_assert(sizeof(void*) == sizeof(EGLDisplay));
   const EglApi api = load_api();
-  std::string tried;
-  const Display disp = open_display(api, tried);
+  std::string tried, fallback;
+  Display disp = open_display(api, tried, cpu_chosen());
   if (disp.display == EGL_NO_DISPLAY) throw RenderUnavailable("no EGL display (" + tried + ")" + kInstallHint);
-  if (api.bind_api(EGL_OPENGL_API) != EGL_TRUE)
-    throw RenderUnavailable("EGL display offers no desktop OpenGL (EGL error " + hex(api.get_error()) + ")" + kInstallHint);
-  const EGLint attributes[] = {EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
-                               EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_COLOR_BUFFER_TYPE, EGL_RGB_BUFFER,
-                               EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint count = 0;
-  if (api.choose_config(disp.display, attributes, &config, 1, &count) != EGL_TRUE || count < 1)
-    throw RenderUnavailable("EGL has no 8-bit RGBA + 24-bit depth OpenGL configuration (EGL error " +
-                            hex(api.get_error()) + ")" + kInstallHint);
-  EGLContext ctx = api.create_context(disp.display, config, EGL_NO_CONTEXT, nullptr);
-  if (ctx == EGL_NO_CONTEXT)
-    throw RenderUnavailable("eglCreateContext failed (EGL error " + hex(api.get_error()) + ")" + kInstallHint);
+  EGLContext ctx = EGL_NO_CONTEXT;
+  std::string failed = make_context(api, disp, ctx);
+  if (!failed.empty() && disp.gpu) {
+    // A GPU whose driver offers no usable OpenGL context: the CPU renders instead, and the
+    // description says why.
+    fallback = "; the GPU (" + disp.platform + ") failed: " + failed;
+    tried = disp.platform + ": " + failed;
+    disp = open_display(api, tried, true);
+    if (disp.display == EGL_NO_DISPLAY) throw RenderUnavailable("no EGL display (" + tried + ")" + kInstallHint);
+    failed = make_context(api, disp, ctx);
+  }
+  if (!failed.empty()) throw RenderUnavailable(failed + kInstallHint);
   display_ = disp.display;
   context_ = ctx;
   api_ = std::make_unique<EglState>(EglState{api});
@@ -177,7 +193,7 @@ EglContext::EglContext() {
   };
   const std::string renderer = text(0x1F01 /* GL_RENDERER */), version = text(0x1F02 /* GL_VERSION */);
   if (version.empty()) throw RenderUnavailable("the EGL context answers no OpenGL version" + std::string(kInstallHint));
-  description_ = disp.platform + ": " + renderer + ", OpenGL " + version;
+  description_ = disp.platform + ": " + renderer + ", OpenGL " + version + fallback;
   // A hardware device whose driver still renders in software (Mesa's fallbacks) is the CPU.
   on_gpu_ = disp.gpu && renderer.find("llvmpipe") == std::string::npos && renderer.find("softpipe") == std::string::npos;
   // MuJoCo's renderer needs OpenGL 1.5 with framebuffer objects; its own check would exit().

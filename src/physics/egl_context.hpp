@@ -6,7 +6,8 @@
 // DRM render node) comes first; a software device (Mesa's llvmpipe, EGL_MESA_device_software) is
 // skipped there. Without a GPU, Mesa's surfaceless platform (llvmpipe on the CPU). Surfaceless
 // alone would not do: under libglvnd it answers with Mesa, which renders on the CPU beside an
-// NVIDIA GPU it cannot drive. MECHSIM_RENDER_DEVICE=cpu chooses the CPU whatever is there.
+// NVIDIA GPU it cannot drive. MECHSIM_RENDER_DEVICE=cpu chooses the CPU whatever is there. A GPU
+// whose driver makes no desktop OpenGL context falls back to the CPU (description() says why).
 
 #include <memory>
 #include <string>
