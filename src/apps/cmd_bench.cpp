@@ -3,6 +3,13 @@
 // safety limits, sensors, physics) against the bare physics step of the same model, and the
 // real-time factor, on one core.
 //
+// --sensors none | usual | cameras: without the robot's sensors, with them as a run without
+// consumers has them (lasers, IMUs, contacts; cameras render only when asked), or with its cameras
+// rendering at their rates too (all of them, or those named by --camera; --camera-width W sets
+// their size as camera_overrides {all: {width: W}} would). Rendering runs on threads of its own
+// (llvmpipe), so the full tick is also given in process CPU and wall-clock time, the real-time
+// factor in wall time, and the cameras' stage budget (sensors/render_hub.hpp) per simulated second.
+//
 // The two are timed on the same states: alternating blocks of kBlock full ticks and kBlock bare
 // steps, so that the bare step never runs for long on commands the controllers no longer
 // update. (Timed one after the other, 5 s of bare steps on the last efforts let a CC8 on the Mars
@@ -20,6 +27,7 @@
 #include "apps/cmd_common.hpp"
 #include "apps/commands.hpp"
 #include "control/params.hpp"
+#include "description/camera_override.hpp"
 #include "description/robot_loader.hpp"
 #include "sim/controller_set.hpp"
 #include "sim/simulation.hpp"
@@ -37,6 +45,9 @@ struct BenchArgs {
   std::vector<double> spawn_xy;  // empty: the Mars Yard's start pad, the origin elsewhere
   std::string soil;              // a named soil (physics/soil.hpp); empty: rigid ground
   std::string integrator = physics::integrator_name(physics::BuildOptions{}.integrator);
+  std::string sensors = "usual";      // none, usual or cameras
+  std::vector<std::string> cameras;   // with --sensors cameras: these (empty: all)
+  int camera_width = 0;               // > 0: every camera that wide (aspect kept)
 };
 
 using physics::StageTime;
@@ -89,6 +100,19 @@ void run(const BenchArgs& args) {
   BenchStartup startup;
   physics::StageTimer total, timer;
   description::RobotModel robot = description::load_robot(args.robot.file, load_options(args.robot)).model;
+  const bool with_cameras = args.sensors == "cameras";
+  if ((!args.cameras.empty() || args.camera_width > 0) && !with_cameras)
+    throw UserError("--camera and --camera-width need --sensors cameras");
+  if (with_cameras && args.camera_width > 0) {
+    description::CameraOverride o;
+    o.width = args.camera_width;
+    o.origin = "--camera-width";
+    try {
+      description::apply_camera_overrides(robot, {{"all", o}});
+    } catch (const std::exception& e) {
+      throw UserError(std::string("--camera-width: ") + e.what());
+    }
+  }
   startup.description = timer.lap();
   control::Params params;
   std::vector<std::string> start = args.start;
@@ -112,6 +136,7 @@ void run(const BenchArgs& args) {
   }
   sim::SimulationOptions options;
   options.spawn.z = args.spawn_z;
+  options.sensors = args.sensors != "none";
   // On a height field the robot stands on the ground fitted under it, as a scenario puts it.
   options.settle_on_ground = args.world != "empty";
   options.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
@@ -146,6 +171,22 @@ void run(const BenchArgs& args) {
   for (const std::string& name : s.starting) std::printf(" %s", name.c_str());
   std::printf("\n");
   startup.controllers += timer.lap();
+  std::vector<std::size_t> cameras;  // sensor indices rendering
+  if (with_cameras) {
+    sensors::SensorSet& set = sim.sensors();
+    std::vector<std::string> unknown = args.cameras;
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      if (!set.sensor(i).renders()) continue;
+      const std::string& name = set.spec(i).name;
+      const auto named = std::find(unknown.begin(), unknown.end(), name);
+      if (!args.cameras.empty() && named == unknown.end()) continue;
+      if (named != unknown.end()) unknown.erase(named);
+      set.set_enabled(i, true);
+      cameras.push_back(i);
+    }
+    if (!unknown.empty()) throw UserError("--camera " + unknown.front() + ": no camera sensor of the robot has that name");
+    if (cameras.empty()) throw UserError("--sensors cameras: the robot has no camera sensor simulated here");
+  }
   const sim::TickResult first = sim.step();
   startup.first_tick = timer.lap();
   startup.total = total.lap();
@@ -166,9 +207,14 @@ void run(const BenchArgs& args) {
     return cpu_now() - t0;
   };
   double bare = 0.0, full = 0.0;
+  physics::StageTime full_process;  // the full ticks in wall-clock and process CPU time
+  const sensors::CameraStages stages0 =
+      sim.sensors().render_hub() != nullptr ? sim.sensors().render_hub()->stages() : sensors::CameraStages{};
   for (long done = 0; done < ticks; done += kBlock) {
     const long n = std::min(kBlock, ticks - done);
+    physics::StageTimer process;
     full += time_it(n, [&] { sim.step(); });
+    full_process += process.lap();
     bare += time_it(n, [&] { sim.physics().step(); });
   }
   const double bare_rate = static_cast<double>(ticks) / bare, full_rate = static_cast<double>(ticks) / full;
@@ -182,6 +228,39 @@ void run(const BenchArgs& args) {
   std::printf("tick overhead:     %+.1f %% over the bare step\n", 100.0 * (bare_rate / full_rate - 1.0));
   std::printf("real-time factor:  %.2f (full tick, as fast as possible, one core)\n", full_rate * sim.period());
   std::printf("(thread CPU time; wall time is longer when other processes share the core)\n");
+  const double per_tick = 1e3 / static_cast<double>(ticks);  // ms -> us per tick
+  std::printf("sensors: %s%s\n", args.sensors.c_str(),
+              args.sensors == "none" ? " (SimulationOptions::sensors off)"
+              : with_cameras        ? ""
+                                    : " (cameras render only when asked: none here)");
+  std::printf("full tick, process: %.2f us CPU (all threads), %.2f us wall: real-time factor %.2f (wall)\n",
+              full_process.cpu_ms * per_tick, full_process.wall_ms * per_tick,
+              full_process.wall_ms > 0.0 ? static_cast<double>(ticks) * sim.period() * 1e3 / full_process.wall_ms : 0.0);
+  if (with_cameras && sim.sensors().render_hub() != nullptr) {
+    const sensors::RenderHub& hub = *sim.sensors().render_hub();
+    if (!hub.error().empty()) std::cerr << "warning: cameras: " << hub.error() << "\n";
+    const sensors::CameraStages& st = hub.stages();
+    const double sim_s = static_cast<double>(ticks) * sim.period();
+    std::printf("cameras (%zu):", cameras.size());
+    for (const std::size_t i : cameras) std::printf(" %s", sim.sensors().spec(i).name.c_str());
+    std::printf("\n  %.1f instants, %.1f renders, %.1f images per simulated second\n",
+                static_cast<double>(st.instants - stages0.instants) / sim_s,
+                static_cast<double>(st.renders - stages0.renders) / sim_s,
+                static_cast<double>(st.images - stages0.images) / sim_s);
+    std::printf("  stage budget, ms per simulated second (wall, process CPU):\n");
+    const auto stage = [&](const char* name, physics::StageTime sensors::CameraStages::*m, const char* what) {
+      std::printf("  %-9s %8.1f %8.1f  %s\n", name, ((st.*m).wall_ms - (stages0.*m).wall_ms) / sim_s,
+                  ((st.*m).cpu_ms - (stages0.*m).cpu_ms) / sim_s, what);
+    };
+    stage("scene", &sensors::CameraStages::scene, "(positions into the renderer's scene)");
+    stage("prep", &sensors::CameraStages::prep, "(geoms, terrain levels, camera, lights)");
+    stage("draw", &sensors::CameraStages::draw, "(the render: MuJoCo's renderer and rasterisation to glFinish)");
+    stage("read", &sensors::CameraStages::read, "(glReadPixels)");
+    stage("convert", &sensors::CameraStages::convert, "(rows top-down, RGBA to RGB, depth to metres)");
+    stage("resample", &sensors::CameraStages::resample, "(copy, or the distortion's resampling)");
+    stage("noise", &sensors::CameraStages::noise, "(Gaussian image noise)");
+    stage("points", &sensors::CameraStages::points, "(depth image and organised points)");
+  }
   const physics::ArenaUse use = sim.physics().arena_use();
   std::printf("arena use: at most %d contacts, %d constraint rows in a step (arena %d, %d; grew %d times)\n",
               use.peak.contacts, use.peak.constraints, use.size.contacts, use.size.constraints, use.growths);
@@ -205,6 +284,12 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
       ->expected(2);
   cmd->add_option("--integrator", args->integrator, "MuJoCo integrator: euler (default), implicit or rk4")
       ->check(CLI::IsMember({"implicit", "euler", "rk4"}));
+  cmd->add_option("--sensors", args->sensors,
+                  "none, usual (default: lasers, IMUs, contacts; cameras render only when asked) or cameras (and the cameras rendering at their rates)")
+      ->check(CLI::IsMember({"none", "usual", "cameras"}));
+  cmd->add_option("--camera", args->cameras, "With --sensors cameras: only these camera sensors (default: all)");
+  cmd->add_option("--camera-width", args->camera_width, "With --sensors cameras: every camera this wide (pixels, aspect kept)")
+      ->check(CLI::Range(1, 8192));
   cmd->callback([args] { run(*args); });
 }
 

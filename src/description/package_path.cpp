@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
+#include <string_view>
 #include <set>
 #include <system_error>
 
@@ -16,15 +16,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The <name> element of a package.xml, or empty.
+// The <name> element of a package.xml, or empty: the text between <name> and </name>, trimmed,
+// when it is one word (a plain scan: std::regex cost more than the rest of a PR2 expansion).
 std::string package_xml_name(const fs::path& manifest) {
-  std::ifstream in(manifest);
+  std::ifstream in(manifest, std::ios::binary);
   std::stringstream buffer;
   buffer << in.rdbuf();
-  static const std::regex name_re(R"(<name>\s*([^<\s]+)\s*</name>)");
-  std::smatch m;
   const std::string text = buffer.str();
-  if (std::regex_search(text, m, name_re)) return m[1].str();
+  constexpr std::string_view open = "<name>", close = "</name>";
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; };
+  for (std::size_t at = text.find(open); at != std::string::npos; at = text.find(open, at + 1)) {
+    std::size_t b = at + open.size();
+    while (b < text.size() && space(text[b])) ++b;
+    std::size_t e = b;
+    while (e < text.size() && text[e] != '<' && !space(text[e])) ++e;
+    std::size_t c = e;
+    while (c < text.size() && space(text[c])) ++c;
+    if (e > b && text.compare(c, close.size(), close) == 0) return text.substr(b, e - b);
+  }
   return {};
 }
 

@@ -238,10 +238,12 @@ class Writer {
          << "\" size=\"" << num(h.size_x / 2) << " " << num(h.size_y / 2) << " " << num(range) << " "
          << num(std::max(1.0, 0.1 * range)) << "\"/>\n";
       if (options_.render_terrain)
+        // Each tile spans its own heights, its walls reaching kTileBase below its lowest sample
+        // (terrain_tiles.hpp).
         for (const TerrainTile& t : plan_terrain_tiles(h))
           x_ << "    <hfield name=\"" << t.name << "\" nrow=\"" << t.nrow << "\" ncol=\"" << t.ncol << "\" size=\""
-             << num((t.x1 - t.x0) / 2) << " " << num((t.y1 - t.y0) / 2) << " " << num(range) << " "
-             << num(std::max(1.0, 0.1 * range)) << "\"/>\n";
+             << num((t.x1 - t.x0) / 2) << " " << num((t.y1 - t.y0) / 2) << " "
+             << num(std::max(static_cast<double>(t.hi - t.lo), 1e-6)) << " " << num(kTileBase) << "\"/>\n";
     }
     x_ << "  </asset>\n";
   }
@@ -257,7 +259,7 @@ class Writer {
       if (options_.render_terrain)
         for (const TerrainTile& t : plan_terrain_tiles(h))
           x_ << "    <geom name=\"" << t.name << "\" type=\"hfield\" hfield=\"" << t.name << "\" pos=\""
-             << num((t.x0 + t.x1) / 2) << " " << num((t.y0 + t.y1) / 2) << " " << num(lo) << "\" contype=\"0\""
+             << num((t.x0 + t.x1) / 2) << " " << num((t.y0 + t.y1) / 2) << " " << num(t.lo) << "\" contype=\"0\""
              << " conaffinity=\"0\" group=\"" << kTileGroup << "\"/>\n";
     } else if (options_.world.ground_plane) {
       x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""

@@ -125,11 +125,10 @@ void fill_hfield(mjModel& m, const Heightmap& h) {
 }
 
 void fill_terrain_tiles(mjModel& m, const Heightmap& h) {
-  const auto [lo, hi] = std::minmax_element(h.heights.begin(), h.heights.end());
   for (const TerrainTile& t : plan_terrain_tiles(h)) {
     const int id = mj_name2id(&m, mjOBJ_HFIELD, t.name.c_str());
     if (id < 0) throw PhysicsError("internal: terrain tile '" + t.name + "' missing from the compiled model");
-    fill_terrain_tile(h, t, *lo, *hi, m.hfield_data + m.hfield_adr[id]);
+    fill_terrain_tile(h, t, m.hfield_data + m.hfield_adr[id]);
   }
 }
 

@@ -90,6 +90,34 @@ bool ViewFrustum::outside_sphere(const float c[3], double r) const {
   return false;
 }
 
+bool ViewFrustum::outside_oriented_box(const float pos[3], const float mat[9], const float lo[3], const float hi[3]) const {
+  for (const auto& pl : planes_) {
+    // The plane's normal in the box's frame; the box corner farthest along it.
+    double best = pl[3] + pl[0] * pos[0] + pl[1] * pos[1] + pl[2] * pos[2];
+    for (int a = 0; a < 3; ++a) {
+      const double n = pl[0] * mat[a] + pl[1] * mat[3 + a] + pl[2] * mat[6 + a];
+      best += n * (n >= 0 ? hi[a] : lo[a]);
+    }
+    if (best < 0.0) return true;
+  }
+  return false;
+}
+
+bool ViewFrustum::outside_points(const float pos[3], const float mat[9], const float* v, int n) const {
+  for (const auto& pl : planes_) {
+    // The plane in the points' frame: n_local . v + d_local < 0 for every point.
+    const float nx = static_cast<float>(pl[0] * mat[0] + pl[1] * mat[3] + pl[2] * mat[6]);
+    const float ny = static_cast<float>(pl[0] * mat[1] + pl[1] * mat[4] + pl[2] * mat[7]);
+    const float nz = static_cast<float>(pl[0] * mat[2] + pl[1] * mat[5] + pl[2] * mat[8]);
+    // A margin of a micrometre over float rounding: a point on the plane counts as inside.
+    const float d = static_cast<float>(pl[3] + pl[0] * pos[0] + pl[1] * pos[1] + pl[2] * pos[2]) + 1e-6f;
+    bool all_outside = true;
+    for (int i = 0; i < n && all_outside; ++i) all_outside = nx * v[3 * i] + ny * v[3 * i + 1] + nz * v[3 * i + 2] + d < 0.0f;
+    if (all_outside) return true;
+  }
+  return false;
+}
+
 std::vector<int> TerrainLod::choose(const CameraView& v, double pixels_per_cell, RenderStats& stats) const {
   std::vector<int> out(tiles_.size(), -1);
   const ViewFrustum frustum(v);

@@ -21,6 +21,12 @@ class ViewFrustum {
   bool outside_box(const double lo[3], const double hi[3]) const;
   // Whether the sphere of radius r (m) about c (world frame) lies wholly outside one plane.
   bool outside_sphere(const float c[3], double r) const;
+  // Whether the box [lo, hi] of a frame at `pos` turned by `mat` (3x3, row-major, its columns the
+  // frame's axes in the world) lies wholly outside one plane.
+  bool outside_oriented_box(const float pos[3], const float mat[9], const float lo[3], const float hi[3]) const;
+  // Whether the points `v` (n of them, xyz, in a frame at `pos` turned by `mat`) all lie outside
+  // one plane: then so does their convex hull, e.g. a mesh.
+  bool outside_points(const float pos[3], const float mat[9], const float* v, int n) const;
 
  private:
   double planes_[6][4];

@@ -7,7 +7,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include <GL/gl.h>
 
 #include "physics/egl_context.hpp"
 #include "physics/mjcf_writer.hpp"
@@ -25,6 +28,10 @@ namespace {
 // 0.4, carried by MuJoCo's headlight (ambient only): images lit as a Gazebo world's default.
 constexpr float kSunDirection[3] = {-0.5f, 0.1f, -0.9f};
 constexpr float kSunDiffuse = 0.8f, kSunSpecular = 0.2f, kAmbient = 0.4f;
+
+// Meshes with more vertices than this are tested vertex by vertex when their box reaches into a
+// view.
+constexpr int kVertexCullMin = 2000;
 
 bool is_ground(const mjModel* m, int geom, int terrain_geom, int ground_geom) {
   return geom == terrain_geom || geom == ground_geom || (geom >= 0 && m->geom_group[geom] == kTileGroup);
@@ -45,8 +52,20 @@ std::string check_view(const CameraView& v) {
   return "";
 }
 
+// The OpenGL calls mechsim makes itself, around MuJoCo's renderer (entry points of the context's
+// driver: nothing links libGL).
+struct GlCalls {
+  void (*finish)() = nullptr;
+  void (*pixel_store)(GLenum, GLint) = nullptr;
+  void (*read_buffer)(GLenum) = nullptr;
+  void (*bind_framebuffer)(GLenum, GLuint) = nullptr;
+  void (*read_pixels)(GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, void*) = nullptr;
+  bool complete() const { return finish && pixel_store && read_buffer && bind_framebuffer && read_pixels; }
+};
+
 struct Renderer::Impl {
   EglContext egl;
+  GlCalls gl;
   const mjModel* m = nullptr;
   mjData* d = nullptr;
   mjvScene scn{};
@@ -55,12 +74,17 @@ struct Renderer::Impl {
   mjvPerturb pert{};
   mjrContext con{};
   std::vector<mjvGeom> geoms;  // the scene of the last update_scene(), every geom
+  // Per mesh: the box its vertices span in the geom's frame (a mesh geom's frame is its mesh's).
+  // Tighter than the bounding sphere: a camera on a rover sees none of the rover's 60 000-face
+  // rockers below and behind it, whose spheres still reach into its view.
+  std::vector<std::array<float, 6>> mesh_box;
   int nlight = 0;
   std::array<mjvLight, mjMAXLIGHT> lights{};
   int terrain_geom = -1, ground_geom = -1;
   TerrainLod lod;
   bool scene_ready = false;
-  std::vector<float> scratch_depth;  // depth read for the background when only colour is asked for
+  std::vector<std::uint8_t> scratch_rgba;  // colour as the frame buffer holds it, rows from the bottom
+  std::vector<float> scratch_depth;        // window depth, rows from the bottom
 
   ~Impl() {
     try {
@@ -85,6 +109,13 @@ Renderer::Renderer(std::shared_ptr<const PhysicsModel> model, const RenderSettin
     throw std::invalid_argument("render settings: terrain_pixels_per_cell must be > 0");
   impl_ = std::make_unique<Impl>();
   Impl& r = *impl_;
+  const auto load = [&](auto& f, const char* name) { f = reinterpret_cast<std::remove_reference_t<decltype(f)>>(r.egl.proc(name)); };
+  load(r.gl.finish, "glFinish");
+  load(r.gl.pixel_store, "glPixelStorei");
+  load(r.gl.read_buffer, "glReadBuffer");
+  load(r.gl.bind_framebuffer, "glBindFramebuffer");
+  load(r.gl.read_pixels, "glReadPixels");
+  if (!r.gl.complete()) throw RenderUnavailable("the OpenGL driver lacks glReadPixels, glFinish or framebuffer objects");
   r.m = model_->impl().model;
   r.d = mj_makeData(r.m);
   // MuJoCo sizes the offscreen buffer from the model's visual options: a shallow copy carries
@@ -110,6 +141,17 @@ Renderer::Renderer(std::shared_ptr<const PhysicsModel> model, const RenderSettin
   r.opt.geomgroup[1] = 1;  // robot visuals
   r.opt.geomgroup[2] = 1;  // ground, terrain, world boxes
   r.lod = TerrainLod(r.m);
+  r.mesh_box.resize(static_cast<std::size_t>(r.m->nmesh));
+  for (int i = 0; i < r.m->nmesh; ++i) {
+    std::array<float, 6>& b = r.mesh_box[static_cast<std::size_t>(i)];
+    b = {0, 0, 0, 0, 0, 0};
+    const float* v = r.m->mesh_vert + 3 * r.m->mesh_vertadr[i];
+    for (int k = 0; k < r.m->mesh_vertnum[i]; ++k)
+      for (int a = 0; a < 3; ++a) {
+        b[static_cast<std::size_t>(a)] = k == 0 ? v[3 * k + a] : std::min(b[static_cast<std::size_t>(a)], v[3 * k + a]);
+        b[static_cast<std::size_t>(3 + a)] = k == 0 ? v[3 * k + a] : std::max(b[static_cast<std::size_t>(3 + a)], v[3 * k + a]);
+      }
+  }
   r.opt.geomgroup[kTileGroup] = r.lod.empty() ? 0 : 1;
   r.terrain_geom = mj_name2id(r.m, mjOBJ_GEOM, kTerrainName);
   r.ground_geom = mj_name2id(r.m, mjOBJ_GEOM, kGroundName);
@@ -147,6 +189,7 @@ RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb
                                 " is larger than the renderer's " + std::to_string(settings_.max_width) + " x " +
                                 std::to_string(settings_.max_height));
   if (!r.scene_ready) throw std::logic_error("renderer: render() before update_scene()");
+  StageTimer timer;
   r.egl.make_current();
 
   const description::Vec3 y_axis = rotate(view.X_WC.orientation, {0.0, 1.0, 0.0});
@@ -167,6 +210,18 @@ RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb
       continue;
     }
     const int id = g.objtype == mjOBJ_GEOM ? g.objid : -1;
+    if (g.type == mjGEOM_MESH && g.dataid >= 0 && g.dataid < r.m->nmesh) {
+      // MuJoCo draws a mesh's vertices as they are in the geom's frame (its size is not a scale).
+      const std::array<float, 6>& b = r.mesh_box[static_cast<std::size_t>(g.dataid)];
+      const int nvert = r.m->mesh_vertnum[g.dataid];
+      // The box first; a large mesh whose box reaches into the view, vertex by vertex (a rover's
+      // rocker: 60 000 faces drawn for nothing; the test costs a fraction of drawing them).
+      if (frustum.outside_oriented_box(g.pos, g.mat, b.data(), b.data() + 3) ||
+          (nvert > kVertexCullMin && frustum.outside_points(g.pos, g.mat, r.m->mesh_vert + 3 * r.m->mesh_vertadr[g.dataid], nvert))) {
+        ++stats.culled;
+        continue;
+      }
+    }
     if (id >= 0 && !r.lod.empty()) {
       if (id == r.terrain_geom) continue;
       if (r.m->geom_group[id] == kTileGroup && !r.lod.drawn(id, levels)) continue;
@@ -238,40 +293,71 @@ RenderStats Renderer::render(const CameraView& view, Frame& frame, bool want_rgb
 
   const mjrRect viewport{0, 0, view.width, view.height};
   mjr_setBuffer(mjFB_OFFSCREEN, &r.con);
+  stats.prep = timer.lap();
   mjr_render(viewport, &r.scn, &r.con);
+  // To the last pixel: llvmpipe rasterises on its own threads, and glReadPixels would wait here.
+  r.gl.finish();
+  stats.draw = timer.lap();
 
   const std::size_t w = static_cast<std::size_t>(view.width), h = static_cast<std::size_t>(view.height);
   frame.width = view.width;
   frame.height = view.height;
   frame.rgb.resize(want_rgb ? w * h * 3 : 0);
   frame.depth.resize(want_depth ? w * h : 0);
-  // Depth is read whenever colour is: MuJoCo clears to black, and the background (window depth 1)
-  // gets the sky's colour here.
-  std::vector<float>& depth = want_depth ? frame.depth : r.scratch_depth;
-  depth.resize(w * h);
-  mjr_readPixels(want_rgb ? frame.rgb.data() : nullptr, depth.data(), viewport, &r.con);
+  // Depth is read whenever colour is: MuJoCo clears to black whatever the clear colour, and the
+  // background (window depth 1) gets the sky's colour here.
+  r.scratch_depth.resize(w * h);
+  if (settings_.multisamples > 0) {
+    // MuJoCo resolves the samples into its second frame buffer first.
+    r.scratch_rgba.resize(want_rgb ? w * h * 3 : 0);
+    mjr_readPixels(want_rgb ? r.scratch_rgba.data() : nullptr, r.scratch_depth.data(), viewport, &r.con);
+  } else {
+    // RGBA and float depth are what the frame buffer holds: Mesa copies them out without a
+    // conversion pass of its own (GL_RGB costs a repack per pixel).
+    r.gl.bind_framebuffer(GL_READ_FRAMEBUFFER, r.con.offFBO);
+    r.gl.read_buffer(GL_COLOR_ATTACHMENT0);
+    r.gl.pixel_store(GL_PACK_ALIGNMENT, 1);
+    if (want_rgb) {
+      r.scratch_rgba.resize(w * h * 4);
+      r.gl.read_pixels(0, 0, view.width, view.height, GL_RGBA, GL_UNSIGNED_BYTE, r.scratch_rgba.data());
+    }
+    r.gl.read_pixels(0, 0, view.width, view.height, GL_DEPTH_COMPONENT, GL_FLOAT, r.scratch_depth.data());
+  }
+  stats.read = timer.lap();
 
-  // OpenGL's rows run from the bottom; images' from the top.
+  // OpenGL's rows run from the bottom; images' from the top. One pass per buffer.
   if (want_rgb) {
     std::uint8_t sky[3];
     for (int i = 0; i < 3; ++i) sky[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(settings_.background_rgb[i], 0.0f, 1.0f)));
-    for (std::size_t i = 0; i < w * h; ++i)
-      if (depth[i] >= 1.0f) std::copy(sky, sky + 3, frame.rgb.begin() + static_cast<std::ptrdiff_t>(3 * i));
-    for (std::size_t y = 0; y < h / 2; ++y)
-      std::swap_ranges(frame.rgb.begin() + static_cast<std::ptrdiff_t>(y * w * 3),
-                       frame.rgb.begin() + static_cast<std::ptrdiff_t>((y + 1) * w * 3),
-                       frame.rgb.begin() + static_cast<std::ptrdiff_t>((h - 1 - y) * w * 3));
+    const std::size_t in_px = settings_.multisamples > 0 ? 3 : 4;
+    for (std::size_t y = 0; y < h; ++y) {
+      const std::size_t row = (h - 1 - y) * w;
+      const std::uint8_t* src = r.scratch_rgba.data() + row * in_px;
+      const float* d = r.scratch_depth.data() + row;
+      std::uint8_t* dst = frame.rgb.data() + y * w * 3;
+      for (std::size_t x = 0; x < w; ++x) {
+        const bool background = d[x] >= 1.0f;
+        dst[3 * x] = background ? sky[0] : src[in_px * x];
+        dst[3 * x + 1] = background ? sky[1] : src[in_px * x + 1];
+        dst[3 * x + 2] = background ? sky[2] : src[in_px * x + 2];
+      }
+    }
   }
   if (want_depth) {
-    for (std::size_t y = 0; y < h / 2; ++y)
-      std::swap_ranges(frame.depth.begin() + static_cast<std::ptrdiff_t>(y * w),
-                       frame.depth.begin() + static_cast<std::ptrdiff_t>((y + 1) * w),
-                       frame.depth.begin() + static_cast<std::ptrdiff_t>((h - 1 - y) * w));
-    // Window depth d in [0, 1] of a perspective projection: z = n f / (f - d (f - n)).
+    // Window depth d in [0, 1] of a perspective projection: z = n f / (f - d (f - n)); the far
+    // plane (nothing drawn) is +infinity.
     const double fn = f * n, span = f - n;
-    for (float& z : frame.depth)
-      z = z >= 1.0f ? std::numeric_limits<float>::infinity() : static_cast<float>(fn / (f - static_cast<double>(z) * span));
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    for (std::size_t y = 0; y < h; ++y) {
+      const float* src = r.scratch_depth.data() + (h - 1 - y) * w;
+      float* dst = frame.depth.data() + y * w;
+      for (std::size_t x = 0; x < w; ++x) {
+        const float d = src[x];
+        dst[x] = d >= 1.0f ? kInf : static_cast<float>(fn / (f - static_cast<double>(d) * span));
+      }
+    }
   }
+  stats.convert = timer.lap();
   return stats;
 }
 

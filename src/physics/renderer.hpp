@@ -1,6 +1,6 @@
 #pragma once
 // Offscreen rendering of one Physics instance's world with MuJoCo's renderer, on an OpenGL context
-// without a window (EGL surfaceless: Mesa's llvmpipe on the CPU, or a GPU through the same path).
+// without a window (EGL: a GPU when one is listed, else Mesa's llvmpipe on the CPU; egl_context.hpp).
 // Colour and depth come from one render; depth is converted to metres along the optical axis.
 //
 // Cost (DESIGN.md, "Rendering without a GPU"): multisampling, shadows and reflections are off
@@ -21,6 +21,7 @@
 #include "physics/physics.hpp"
 #include "physics/physics_model.hpp"
 #include "physics/render_error.hpp"
+#include "physics/stage_timer.hpp"
 
 namespace mechsim::physics {
 
@@ -54,12 +55,17 @@ struct Frame {
   std::vector<float> depth;       // width * height, metres along the optical axis, rows from the top
 };
 
-// What a render cost (for benchmarks and `mechsim bench`).
+// What a render cost (for benchmarks and `mechsim bench`). The stage times are wall and process
+// CPU time (llvmpipe rasterises on threads of its own: its work shows in `draw`'s CPU time).
 struct RenderStats {
   int geoms = 0;          // geoms drawn
   int culled = 0;         // geoms not drawn: their bounding spheres lie outside the view
   int terrain_tiles = 0;  // terrain tiles drawn (after culling)
   long terrain_cells = 0; // height field cells drawn (two triangles each)
+  StageTime prep;     // choosing geoms, terrain levels, camera and lights
+  StageTime draw;     // MuJoCo's renderer and the rasterisation, to the last pixel (glFinish)
+  StageTime read;     // glReadPixels: colour and/or depth out of the frame buffer
+  StageTime convert;  // rows top-down, RGBA to RGB, window depth to metres
 };
 
 class Renderer {

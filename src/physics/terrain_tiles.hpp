@@ -26,14 +26,25 @@ struct TerrainTile {
   std::size_t row_cells = 0, col_cells = 0;  // source cells covered
   std::size_t nrow = 0, ncol = 0;            // samples of this level's grid (>= 2)
   double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0;  // world extent (m)
+  // The lowest and highest source samples of the tile's area, its edges included (m): every
+  // level's samples lie between them, and so does any neighbour's edge along a shared side.
+  float lo = 0.0f, hi = 0.0f;
   double cell() const;  // this level's cell size along x (m)
 };
+
+// How far a tile's walls reach below its lowest sample (m). MuJoCo draws a height field with side
+// walls down to its base and a bottom there; the walls close the cracks where neighbouring tiles
+// meet at different levels of detail. A crack lies between the two tiles' edges, and both edges
+// lie at or above the lowest sample of either tile's area, so walls down to each tile's own lowest
+// sample close every crack. Walls down to the whole map's lowest point (as the tiles once had)
+// closed the same cracks with walls metres tall, which llvmpipe rasterised under the ground.
+inline constexpr double kTileBase = 0.01;
 
 // Every tile at every level, level-major. Levels go on while a tile still has 2 cells.
 std::vector<TerrainTile> plan_terrain_tiles(const Heightmap& h);
 
-// The tile's samples, row-major from its south-west corner, normalised as the physics height
-// field's: (height - lo) / (hi - lo) with the whole map's lo and hi. Bilinear in the source grid.
-void fill_terrain_tile(const Heightmap& h, const TerrainTile& tile, float lo, float hi, float* out);
+// The tile's samples, row-major from its south-west corner, normalised to its own range:
+// (height - tile.lo) / (tile.hi - tile.lo). Bilinear in the source grid.
+void fill_terrain_tile(const Heightmap& h, const TerrainTile& tile, float* out);
 
 }  // namespace mechsim::physics

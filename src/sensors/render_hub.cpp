@@ -20,7 +20,10 @@ physics::Renderer* RenderHub::scene(const physics::Physics& physics) {
   }
   if (!renderer_) return nullptr;
   if (!fresh_) {
+    physics::StageTimer timer;
     renderer_->update_scene(physics);
+    stages_.scene += timer.lap();
+    ++stages_.instants;
     fresh_ = true;
     ++updates_;
   }
@@ -50,7 +53,15 @@ const physics::Frame* RenderHub::frame(const physics::Physics& physics, const ph
   Slot& s = *slots_[used_++];
   s.view = view;
   s.depth = depth;
-  renderer->render(view, s.frame, true, depth);
+  const physics::RenderStats stats = renderer->render(view, s.frame, true, depth);
+  stages_.prep += stats.prep;
+  stages_.draw += stats.draw;
+  stages_.read += stats.read;
+  stages_.convert += stats.convert;
+  ++stages_.renders;
+  stages_.geoms += stats.geoms;
+  stages_.terrain_tiles += stats.terrain_tiles;
+  stages_.terrain_cells += stats.terrain_cells;
   ++renders_;
   return &s.frame;
 }

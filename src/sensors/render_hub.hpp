@@ -25,6 +25,19 @@ namespace mechsim::sensors {
 // step (the CC8 on the Mars Yard: 76-86 us a step without them, 437-529 us with).
 using RenderModelFactory = std::function<std::shared_ptr<const physics::PhysicsModel>()>;
 
+// Where the cameras' time goes, summed since the hub was made (benchmarks, `mechsim bench`): the
+// scene update per instant, the renderer's stages per render (physics::RenderStats), and the
+// camera sensors' own passes per image. Wall and process CPU time each.
+struct CameraStages {
+  physics::StageTime scene;     // positions into the renderer's scene, once per instant
+  physics::StageTime prep, draw, read, convert;  // per render (physics::RenderStats)
+  physics::StageTime resample;  // an image from its render: a copy, or the distortion's resampling
+  physics::StageTime noise;     // Gaussian image noise
+  physics::StageTime points;    // depth image and organised points from the render's depth
+  long instants = 0, renders = 0, images = 0;
+  long geoms = 0, terrain_tiles = 0, terrain_cells = 0;  // drawn, summed over the renders
+};
+
 class RenderHub {
  public:
   // `render_model` empty: the renderer draws `model` itself.
@@ -57,6 +70,8 @@ class RenderHub {
   const std::string& error() const { return error_; }
   long scene_updates() const { return updates_; }
   long renders() const { return renders_; }
+  const CameraStages& stages() const { return stages_; }
+  CameraStages& stages() { return stages_; }  // the camera sensors add their passes
 
  private:
   std::shared_ptr<const physics::PhysicsModel> model_;
@@ -74,6 +89,7 @@ class RenderHub {
   std::string error_;
   bool fresh_ = false;
   long updates_ = 0, renders_ = 0;
+  CameraStages stages_;
   std::vector<std::unique_ptr<Slot>> slots_;  // the first used_ hold this instant's frames
   std::size_t used_ = 0;
 };

@@ -62,5 +62,20 @@ TEST(XacroProgram, LoadsNoSimulatorLibraries) {
   }
 }
 
+// `mechsim` itself loads libsdformat (and its 28 ms of static initialisers) only to read SDF: not
+// to expand xacro, whose speed roslaunch users feel (src/description/sdf/sdf_module.hpp).
+TEST(XacroProgram, MechsimXacroLoadsNoSdformat) {
+  const fs::path cc8 = kShared / "robots" / "cc8_description";
+  if (!fs::exists(cc8)) GTEST_SKIP() << "no shared robots under " << kShared;
+  const ProcessResult r = run_process({"/usr/bin/env", "LD_DEBUG=files", MECHSIM_EXE, "xacro",
+                                       (cc8 / "urdf" / "cc8.xacro").string(), "--package", "cc8_description=" + cc8.string()},
+                                      60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(r.out.size(), 1000u);
+  EXPECT_THAT(r.err, HasSubstr("libmujoco"));  // LD_DEBUG reports what the loader opens
+  EXPECT_THAT(r.err, Not(HasSubstr("libsdformat")));
+  EXPECT_THAT(r.err, Not(HasSubstr("libignition-math")));
+}
+
 }  // namespace
 }  // namespace mechsim::apps::test

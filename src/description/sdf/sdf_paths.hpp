@@ -1,6 +1,7 @@
 #pragma once
-// Private to description/sdf: where model://, file:// and package:// URIs of an SDF file lead,
-// and mechsim's own versions of Gazebo's most used library models for <include>s that find no other.
+// Private to description/sdf and the SDF module (description/sdformat): where model://, file://
+// and package:// URIs of an SDF file lead, and mechsim's own versions of Gazebo's most used
+// library models for <include>s that find no other.
 
 #include <string>
 #include <vector>

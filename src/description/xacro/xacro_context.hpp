@@ -129,6 +129,7 @@ class Context {
   int eval_depth = 0;  // nested expression evaluations (lazy property chains)
   int nesting = 0;     // elements, macro bodies and included files being processed, in all
   std::unordered_map<std::string, std::shared_ptr<const pyexpr::Expr>> expr_cache;
+  std::map<std::string, std::string> found_packages;  // $(find pkg) answers of this expansion
 
   // Scopes and macro tables live as long as the expansion (they point at their parents).
   std::shared_ptr<Symbols> new_scope(Symbols* parent, bool is_namespace);

@@ -230,9 +230,12 @@ std::string Context::eval_extension(std::string_view raw_inner, Symbols& symbols
     if (words.size() != count + 1) fail(std::string(usage) + " (in $(" + inner + "))");
   };
   auto find_pkg = [&](const std::string& pkg) {
+    // Once per package and expansion: a lookup walks ROS_PACKAGE_PATH and reads manifests, and
+    // the PR2 asks for pr2_description dozens of times.
+    if (auto it = found_packages.find(pkg); it != found_packages.end()) return it->second;
     auto dir = find_package(pkg, options.packages);
     if (!dir) fail("resource not found: " + pkg + " (package not given with --package and not on ROS_PACKAGE_PATH)");
-    return *dir;
+    return found_packages.emplace(pkg, *dir).first->second;
   };
   if (cmd == "arg") {
     need(1, "$(arg var) must specify exactly one argument");

@@ -1,4 +1,4 @@
-#include "description/sdf/sdf_convert.hpp"
+#include "description/sdformat/sdf_convert.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// Private to description/sdf: one libsdformat model (DOM) to an SdfModel.
+// Private to the SDF module (description/sdformat): one libsdformat model (DOM) to an SdfModel.
 
 #include <string>
 

@@ -1,5 +1,6 @@
-// Loading SDF worlds and models with libsdformat (its own ParserConfig per load: no global
-// search paths), then converting each model (sdf_convert.cpp).
+// The module side of SDF reading (sdf/sdf_module.hpp): loading SDF worlds and models with
+// libsdformat (its own ParserConfig per load: no global search paths), then converting each model
+// (sdf_convert.cpp).
 #include <array>
 #include <filesystem>
 #include <set>
@@ -11,8 +12,9 @@
 #include <sdf/Root.hh>
 #include <sdf/World.hh>
 
-#include "description/sdf/sdf_convert.hpp"
+#include "description/sdformat/sdf_convert.hpp"
 #include "description/sdf/sdf_model.hpp"
+#include "description/sdf/sdf_module.hpp"
 #include "description/sdf/sdf_paths.hpp"
 
 namespace mechsim::description {
@@ -84,14 +86,9 @@ void explicit_value(const sdf::ElementPtr& physics, const char* name, std::optio
     out = physics->Get<double>(name);
 }
 
-}  // namespace
-
-bool is_sdf_world_file(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".world" || ext == ".sdf";
-}
-
-SdfModel parse_sdf_model(const std::string& xml, const std::string& source, const SdfOptions& options) {
+// parse_sdf_model and load_sdf_world as the module does them (the description library's
+// versions call these through sdf_module.hpp's entry point, mechsim_sdformat_module below).
+SdfModel read_sdf_model(const std::string& xml, const std::string& source, const SdfOptions& options) {
   const sdf_detail::SdfSearch search = sdf_detail::make_search(options);
   const sdf_detail::BuiltinModels builtin;
   sdf::Root root;
@@ -108,7 +105,7 @@ SdfModel parse_sdf_model(const std::string& xml, const std::string& source, cons
   return out;
 }
 
-SdfWorld load_sdf_world(const std::string& path, const SdfOptions& options) {
+SdfWorld read_sdf_world(const std::string& path, const SdfOptions& options) {
   if (!std::filesystem::is_regular_file(path)) throw SdfError("world file '" + path + "': no such file");
   const sdf_detail::SdfSearch search = sdf_detail::make_search(options);
   const sdf_detail::BuiltinModels builtin;
@@ -179,4 +176,33 @@ SdfWorld load_sdf_world(const std::string& path, const SdfOptions& options) {
   return out;
 }
 
+std::string module_parse_model(const std::string& xml, const std::string& source, const SdfOptions& options,
+                               SdfModel& out) {
+  try {
+    out = read_sdf_model(xml, source, options);
+    return {};
+  } catch (const SdfError& e) {
+    return e.what();
+  }
+}
+
+std::string module_load_world(const std::string& path, const SdfOptions& options, SdfWorld& out) {
+  try {
+    out = read_sdf_world(path, options);
+    return {};
+  } catch (const SdfError& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
 }  // namespace mechsim::description
+
+extern "C" __attribute__((visibility("default"))) const mechsim::description::sdf_detail::SdfModuleApi*
+mechsim_sdformat_module() {
+  static const mechsim::description::sdf_detail::SdfModuleApi api{
+      mechsim::description::sdf_detail::kSdfModuleVersion, &mechsim::description::module_parse_model,
+      &mechsim::description::module_load_world};
+  return &api;
+}
