@@ -48,6 +48,8 @@ struct BenchArgs {
   std::string sensors = "usual";      // none, usual or cameras
   std::vector<std::string> cameras;   // with --sensors cameras: these (empty: all)
   int camera_width = 0;               // > 0: every camera that wide (aspect kept)
+  std::vector<std::string> step_cost;  // which of physics::StepCost's ways are on (empty: all)
+  bool compare_step_cost = false;       // also time the step as before (StepCost::before())
 };
 
 using physics::StageTime;
@@ -96,6 +98,41 @@ void print_startup(const sim::Simulation& sim, const BenchStartup& b) {
   }
 }
 
+// --step-cost: the named ways of physics::StepCost on, the others off ("none": all off).
+physics::StepCost step_cost_of(const std::vector<std::string>& names) {
+  if (names.empty()) return {};
+  physics::StepCost c = physics::StepCost::before();
+  for (const std::string& n : names) {
+    if (n == "pairs") c.listed_pairs = true;
+    else if (n == "sparse") c.sparse_jacobian = true;
+    else if (n == "tree-forces") c.tree_external_forces = true;
+    else if (n != "none") throw UserError("--step-cost: unknown '" + n + "' (pairs, sparse, tree-forces or none)");
+  }
+  return c;
+}
+
+// Loads `start` (or, with `usual_set`, every controller, then keeps the widest conflict-free
+// set) and starts them; the names started.
+std::vector<std::string> start_controllers(sim::Simulation& sim, const std::vector<std::string>& start, bool usual_set,
+                                           bool quiet) {
+  // Load everything asked for; start what does not conflict first come first served.
+  std::vector<std::string> loaded;
+  for (const std::string& name : start) {
+    if (control::ControlResult r = sim.load_controller(name); r) {
+      loaded.push_back(name);
+    } else if (!quiet) {
+      std::cerr << "warning: " << r.error << "\n";
+    }
+  }
+  // Without --start: the robot's usual set (sim::widest_conflict_free), not every controller of
+  // the YAML, so that the figures are those of the configuration its scenarios run.
+  if (usual_set) loaded = sim::widest_conflict_free(sim.controllers().list_controllers());
+  const control::SwitchResult s = sim.controllers().switch_controllers(loaded, {}, control::SwitchStrictness::SkipConflicts);
+  if (!quiet)
+    for (const std::string& skipped : s.skipped) std::cerr << "warning: " << skipped << "\n";
+  return s.starting;
+}
+
 void run(const BenchArgs& args) {
   BenchStartup startup;
   physics::StageTimer total, timer;
@@ -140,6 +177,7 @@ void run(const BenchArgs& args) {
   // On a height field the robot stands on the ground fitted under it, as a scenario puts it.
   options.settle_on_ground = args.world != "empty";
   options.integrator = *physics::parse_integrator(args.integrator);  // checked by CLI11
+  options.step_cost = step_cost_of(args.step_cost);
   startup.controllers = timer.lap();  // the controllers' YAML
   const sim::World world = sim::make_world(world_config);
   startup.world = timer.lap();
@@ -151,24 +189,22 @@ void run(const BenchArgs& args) {
     options.spawn.y = world.mars_yard->start.y;
     options.spawn.yaw = world.mars_yard->start.yaw;
   }
+  // The same robot with the step as mechsim computed it before (physics::StepCost::before()),
+  // timed in the same run, before the measured one is built so that its start-up stays its own.
+  std::unique_ptr<sim::Simulation> before;
+  if (args.compare_step_cost) {
+    sim::SimulationOptions o = options;
+    o.step_cost = physics::StepCost::before();
+    before = std::make_unique<sim::Simulation>(robot, world, params, o);
+    start_controllers(*before, start, usual_set, true);
+    if (const sim::TickResult r = before->step(); !r) throw UserError("the first tick (step as before) failed: " + r.error);
+    timer.restart();
+  }
   sim::Simulation sim(std::move(robot), world, params, options);
   timer.restart();  // its stages: Simulation::startup_times()
-  // Load everything asked for; start what does not conflict first come first served.
-  std::vector<std::string> loaded;
-  for (const std::string& name : start) {
-    if (control::ControlResult r = sim.load_controller(name); r) {
-      loaded.push_back(name);
-    } else {
-      std::cerr << "warning: " << r.error << "\n";
-    }
-  }
-  // Without --start: the robot's usual set (sim::widest_conflict_free), not every controller of
-  // the YAML, so that the figures are those of the configuration its scenarios run.
-  if (usual_set) loaded = sim::widest_conflict_free(sim.controllers().list_controllers());
-  const control::SwitchResult s = sim.controllers().switch_controllers(loaded, {}, control::SwitchStrictness::SkipConflicts);
-  for (const std::string& skipped : s.skipped) std::cerr << "warning: " << skipped << "\n";
+  const std::vector<std::string> starting = start_controllers(sim, start, usual_set, false);
   std::printf("controllers running (%s):", usual_set ? "default: the widest conflict-free set" : "--start");
-  for (const std::string& name : s.starting) std::printf(" %s", name.c_str());
+  for (const std::string& name : starting) std::printf(" %s", name.c_str());
   std::printf("\n");
   startup.controllers += timer.lap();
   std::vector<std::size_t> cameras;  // sensor indices rendering
@@ -193,6 +229,7 @@ void run(const BenchArgs& args) {
   if (!first) throw UserError("the first tick failed: " + first.error);
   print_startup(sim, startup);
   sim.run_for(0.2);
+  if (before) before->run_for(0.2);
 
   const auto ticks = static_cast<long>(args.seconds / sim.period());
   // CPU time of this thread: on a shared machine wall time measures the neighbours too.
@@ -206,7 +243,7 @@ void run(const BenchArgs& args) {
     for (long k = 0; k < n; ++k) body();
     return cpu_now() - t0;
   };
-  double bare = 0.0, full = 0.0;
+  double bare = 0.0, full = 0.0, bare_before = 0.0, full_before = 0.0;
   physics::StageTime full_process;  // the full ticks in wall-clock and process CPU time
   const sensors::CameraStages stages0 =
       sim.sensors().render_hub() != nullptr ? sim.sensors().render_hub()->stages() : sensors::CameraStages{};
@@ -216,10 +253,16 @@ void run(const BenchArgs& args) {
     full += time_it(n, [&] { sim.step(); });
     full_process += process.lap();
     bare += time_it(n, [&] { sim.physics().step(); });
+    if (!before) continue;
+    full_before += time_it(n, [&] { before->step(); });
+    bare_before += time_it(n, [&] { before->physics().step(); });
   }
   const double bare_rate = static_cast<double>(ticks) / bare, full_rate = static_cast<double>(ticks) / full;
   std::printf("robot %s, %zu controllers running, %ld steps of %.4g s, %s integrator\n", sim.robot().name.c_str(),
-              s.starting.size(), ticks, sim.period(), physics::integrator_name(options.integrator));
+              starting.size(), ticks, sim.period(), physics::integrator_name(options.integrator));
+  const physics::StepCost& c = options.step_cost;
+  std::printf("step cost: listed pairs %s (%d pairs), sparse Jacobian %s, tree forces %s\n", c.listed_pairs ? "on" : "off",
+              sim.physics().model().listed_pairs(), c.sparse_jacobian ? "on" : "off", c.tree_external_forces ? "on" : "off");
   std::printf("spawned at (%.3g, %.3g) in %s%s%s; full ticks and bare steps alternate in blocks of %ld\n",
               sim.options().spawn.x, sim.options().spawn.y, args.world.c_str(), args.soil.empty() ? "" : ", soil ",
               args.soil.c_str(), kBlock);
@@ -227,6 +270,14 @@ void run(const BenchArgs& args) {
   std::printf("full tick:         %10.0f steps/s (%.2f us)\n", full_rate, 1e6 / full_rate);
   std::printf("tick overhead:     %+.1f %% over the bare step\n", 100.0 * (bare_rate / full_rate - 1.0));
   std::printf("real-time factor:  %.2f (full tick, as fast as possible, one core)\n", full_rate * sim.period());
+  if (before) {
+    const double per_bare = 1e6 * bare_before / static_cast<double>(ticks), per_full = 1e6 * full_before / static_cast<double>(ticks);
+    std::printf("step as before (physics::StepCost::before(), timed in the same blocks):\n");
+    std::printf("  bare physics step: %10.0f steps/s (%.2f us)\n", 1e6 / per_bare, per_bare);
+    std::printf("  full tick:         %10.0f steps/s (%.2f us)\n", 1e6 / per_full, per_full);
+    std::printf("full tick now / bare step before: %.3f; bare step now / before: %.3f; full tick now / before: %.3f\n",
+                full / bare_before, bare / bare_before, full / full_before);
+  }
   std::printf("(thread CPU time; wall time is longer when other processes share the core)\n");
   const double per_tick = 1e3 / static_cast<double>(ticks);  // ms -> us per tick
   std::printf("sensors: %s%s\n", args.sensors.c_str(),
@@ -290,6 +341,12 @@ void add_bench_command(CLI::App& app, CommandResult& /*result*/) {
   cmd->add_option("--camera", args->cameras, "With --sensors cameras: only these camera sensors (default: all)");
   cmd->add_option("--camera-width", args->camera_width, "With --sensors cameras: every camera this wide (pixels, aspect kept)")
       ->check(CLI::Range(1, 8192));
+  cmd->add_option("--step-cost", args->step_cost,
+                  "Which of the cheaper ways to the same MuJoCo step are on (physics::StepCost): pairs, sparse, "
+                  "tree-forces, or none (default: all)")
+      ->delimiter(',');
+  cmd->add_flag("--compare-step-cost", args->compare_step_cost,
+                "Also time the same robot with the step as before (every StepCost way off), in the same blocks");
   cmd->callback([args] { run(*args); });
 }
 

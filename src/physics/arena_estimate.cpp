@@ -5,30 +5,11 @@
 #include <utility>
 #include <vector>
 
+#include "physics/collision_pairs.hpp"
 #include "physics/wheel_terrain_contact.hpp"
 
 namespace mechsim::physics {
 namespace {
-
-// Whether MuJoCo 2.2.2's collision filters let geoms g1 and g2 touch: contype/conaffinity
-// bits, not on one (welded) body, not parent and child (unless the filter is disabled), not
-// an excluded body pair.
-bool can_collide(const mjModel& m, int g1, int g2) {
-  const int ct1 = m.geom_contype[g1], ca1 = m.geom_conaffinity[g1];
-  const int ct2 = m.geom_contype[g2], ca2 = m.geom_conaffinity[g2];
-  if (!((ct1 & ca2) || (ct2 & ca1))) return false;
-  const int b1 = m.geom_bodyid[g1], b2 = m.geom_bodyid[g2];
-  const int w1 = m.body_weldid[b1], w2 = m.body_weldid[b2];
-  if (w1 == w2) return false;
-  const int p1 = m.body_weldid[m.body_parentid[w1]], p2 = m.body_weldid[m.body_parentid[w2]];
-  const bool filter_parent = (m.opt.disableflags & mjDSBL_FILTERPARENT) == 0;
-  if (filter_parent && w1 != 0 && w2 != 0 && (w1 == p2 || w2 == p1)) return false;
-  for (int e = 0; e < m.nexclude; ++e) {
-    const int s = m.exclude_signature[e];
-    if (s == ((b1 + 1) << 16) + b2 + 1 || s == ((b2 + 1) << 16) + b1 + 1) return false;
-  }
-  return true;
-}
 
 // A geom's axis-aligned bounds in the world frame at the model's reference configuration (qpos0:
 // the spawn pose, every joint at 0).
@@ -175,10 +156,14 @@ ArenaEstimate estimate_arena(const mjModel& m) {
         touch_rows = std::max(touch_rows, rows);
       }
     };
-    for (int g1 = 0; g1 < m.ngeom; ++g1)
-      for (int g2 = g1 + 1; g2 < m.ngeom; ++g2)
-        if (can_collide(m, g1, g2)) add_pair(g1, g2);
-    for (int p = 0; p < m.npair; ++p) add_pair(m.pair_geom1[p], m.pair_geom2[p]);
+    // MuJoCo's broad phase (collision "dynamic", or "all" with the predefined pairs too) and its
+    // predefined pairs (collision "pair": mechsim's listed pairs, StepCost::listed_pairs).
+    if (m.opt.collision != mjCOL_PAIR)
+      for (int g1 = 0; g1 < m.ngeom; ++g1)
+        for (int g2 = g1 + 1; g2 < m.ngeom; ++g2)
+          if (filters_let_touch(m, g1, g2)) add_pair(g1, g2);
+    if (m.opt.collision != mjCOL_DYNAMIC)
+      for (int p = 0; p < m.npair; ++p) add_pair(m.pair_geom1[p], m.pair_geom2[p]);
     touches = std::min(touches, kTouchesPerGeom * movable / 2);
     e.contacts += touches;
     e.contact_rows += touches * touch_rows;

@@ -6,8 +6,11 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
+#include "physics/collision_pairs.hpp"
 #include "physics/mesh_loader.hpp"
 #include "physics/physics_error.hpp"
 #include "physics/terrain_tiles.hpp"
@@ -150,7 +153,8 @@ class Writer {
                                                                       : "implicit";
     x_ << "  <option timestep=\"" << num(options_.timestep) << "\" integrator=\"" << integrator
        << "\" gravity=\"0 0 " << num(-options_.world.gravity) << "\" cone=\""
-       << (c.elliptic_cone ? "elliptic" : "pyramidal") << "\"/>\n";
+       << (c.elliptic_cone ? "elliptic" : "pyramidal") << "\""
+       << (options_.step_cost.sparse_jacobian ? " jacobian=\"sparse\"" : "") << kCollisionSlot << "/>\n";
     x_ << "  " << mjcf_size_element(arena_) << "\n";
     // One user number per geom: the depth (m) below the ground where a soil wheel's rigid contact
     // starts (Physics::set_soil writes it in its own copy of the model; 0 is rigid ground).
@@ -195,8 +199,14 @@ class Writer {
       excludes.insert(excludes.end(), p.excludes.begin(), p.excludes.end());
       mimics.insert(mimics.end(), p.mimics.begin(), p.mimics.end());
     }
-    if (!excludes.empty()) {
+    // Listed pairs (StepCost::listed_pairs, collision_pairs.hpp): MuJoCo then tests these and
+    // nothing else (the excludes stay for the broad phase, should PhysicsModel::build fall back).
+    std::optional<std::vector<ListedPair>> pairs;
+    if (options_.step_cost.listed_pairs) pairs = list_collision_pairs(written_bodies_, written_geoms_, excludes);
+    if (!excludes.empty() || (pairs && !pairs->empty())) {
       x_ << "  <contact>\n";
+      if (pairs)
+        for (const ListedPair& p : *pairs) write_pair(p);
       for (const auto& [a, b] : excludes)
         x_ << "    <exclude body1=\"" << escape(a) << "\" body2=\"" << escape(b) << "\"/>\n";
       x_ << "  </contact>\n";
@@ -215,10 +225,40 @@ class Writer {
     write_actuators();
     x_ << "</mujoco>\n";
     doc_.xml = x_.str();
+    const std::size_t slot = doc_.xml.find(kCollisionSlot);
+    doc_.xml.replace(slot, std::string_view(kCollisionSlot).size(), pairs && !pairs->empty() ? " collision=\"predefined\"" : "");
     return std::move(doc_);
   }
 
  private:
+  // Where the <option> element gets its collision attribute once the pairs are known.
+  static constexpr const char* kCollisionSlot = "@collision@";
+
+  // One listed pair with the parameters MuJoCo's dynamic collision would give it: the geoms'
+  // common condim, solref, solimp and margin (ContactDefaults), the smaller sliding coefficient
+  // (the priorities rank the geoms by it), the common torsional and rolling ones.
+  void write_pair(const ListedPair& p) {
+    const ContactDefaults& c = options_.contact;
+    const double mu = std::min(p.geom1->friction, p.geom2->friction);
+    x_ << "    <pair geom1=\"" << escape(p.geom1->name) << "\" geom2=\"" << escape(p.geom2->name) << "\" condim=\""
+       << c.condim << "\" friction=\"" << num(mu) << " " << num(mu) << " " << num(c.torsional_friction) << " "
+       << num(c.rolling_friction) << " " << num(c.rolling_friction) << "\" solref=\"" << num(c.solref[0]) << " "
+       << num(c.solref[1]) << "\" solimp=\"" << num(c.solimp[0]) << " " << num(c.solimp[1]) << " " << num(c.solimp[2])
+       << " " << num(c.solimp[3]) << " " << num(c.solimp[4]) << "\" margin=\"" << num(c.margin) << "\" gap=\"0\"/>\n";
+  }
+
+  // A collision geom on the body being written (body_), for the listed pairs.
+  void record_geom(const std::string& name, int contype, int conaffinity, double friction, bool ground = false) {
+    written_geoms_.push_back({name, body_, contype, conaffinity, ground, friction});
+  }
+  // A body that begins now under the body being written; returns the one it was under.
+  int begin_body(const std::string& name, bool jointed) {
+    written_bodies_.push_back({name, body_, jointed});
+    const int parent = body_;
+    body_ = static_cast<int>(written_bodies_.size()) - 1;
+    return parent;
+  }
+
   void write_assets() {
     std::vector<const MeshAsset*> used;
     for (const auto& [key, m] : usable_) used.push_back(m);
@@ -256,6 +296,7 @@ class Writer {
       const double lo = static_cast<double>(*std::min_element(h.heights.begin(), h.heights.end()));
       x_ << "    <geom name=\"" << kTerrainName << "\" type=\"hfield\" hfield=\"" << kTerrainName << "\" pos=\"0 0 "
          << num(lo) << "\" contype=\"1\" conaffinity=\"1\" group=\"2\"" << contact_attrs(c.ground_friction) << "/>\n";
+      record_geom(kTerrainName, 1, 1, c.ground_friction, true);
       if (options_.render_terrain)
         for (const TerrainTile& t : plan_terrain_tiles(h))
           x_ << "    <geom name=\"" << t.name << "\" type=\"hfield\" hfield=\"" << t.name << "\" pos=\""
@@ -264,6 +305,7 @@ class Writer {
     } else if (options_.world.ground_plane) {
       x_ << "    <geom name=\"" << kGroundName << "\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"1\""
          << " group=\"2\"" << contact_attrs(ground_plane_friction()) << "/>\n";
+      record_geom(kGroundName, 1, 1, ground_plane_friction(), true);
     }
   }
 
@@ -305,10 +347,14 @@ class Writer {
                                "\" contype=\"1\" conaffinity=\"1\" group=\"2\"" + friction;
       if (b.fixed) {
         x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
+        record_geom("box:" + b.name, 1, 1, box_friction(b));
       } else {
         x_ << "    <body name=\"box:" << escape(b.name) << "\"" << pose_attrs(b.pose) << ">\n      <freejoint name=\"box:"
            << escape(b.name) << "\"/>\n      <inertial pos=\"0 0 0\" mass=\"" << num(b.mass) << "\" diaginertia=\""
            << vec(inertia) << "\"/>\n      " << geom << "/>\n    </body>\n";
+        const int world = begin_body("box:" + b.name, true);
+        record_geom("box:" + b.name, 1, 1, box_friction(b));
+        body_ = world;
       }
     }
   }
@@ -333,6 +379,7 @@ class Writer {
                              "\" contype=\"1\" conaffinity=\"1\" group=\"2\"" + contact;
     if (b.fixed) {
       x_ << "    " << geom << pose_attrs(b.pose) << "/>\n";
+      record_geom("box:" + b.name, 1, 1, box_friction(b));
       return;
     }
     if (!(b.size.x > 0.0 && b.size.y > 0.0 && b.size.z > 0.0))
@@ -343,6 +390,9 @@ class Writer {
        << escape(b.name) << "\"/>\n      <inertial pos=\"" << vec(centre) << "\" mass=\"" << num(m) << "\" diaginertia=\""
        << vec({m * (yy + zz) / 12.0, m * (xx + zz) / 12.0, m * (xx + yy) / 12.0}) << "\"/>\n      " << geom
        << "/>\n    </body>\n";
+    const int world = begin_body("box:" + b.name, true);
+    record_geom("box:" + b.name, 1, 1, box_friction(b));
+    body_ = world;
   }
 
   void write_body(const BodyPlan& plan, const std::vector<std::vector<std::size_t>>& children, std::size_t index,
@@ -350,6 +400,7 @@ class Writer {
     const PlannedBody& b = plan.bodies[index];
     const std::string pad(static_cast<std::size_t>(indent) * 2, ' ');
     x_ << pad << "<body name=\"" << escape(b.name) << "\"" << pose_attrs(b.X_PB) << ">\n";
+    const int parent = begin_body(b.name, !b.joints.empty());
     if (b.inertial) {
       const auto I = inertia_in_link_frame(*b.inertial);
       x_ << pad << "  <inertial pos=\"" << vec(b.inertial->origin.position) << "\" mass=\"" << num(b.inertial->mass)
@@ -359,6 +410,7 @@ class Writer {
     for (const PlannedJoint& j : b.joints) write_joint(j, pad + "  ");
     for (const PlannedGeom& g : b.geoms) write_geom(g, indent + 1);
     for (std::size_t child : children[index]) write_body(plan, children, child, indent + 1);
+    body_ = parent;
     x_ << pad << "</body>\n";
   }
 
@@ -408,19 +460,25 @@ class Writer {
     if (g.visual) {
       x_ << " contype=\"0\" conaffinity=\"0\" group=\"1\"";
       if (g.rgba) x_ << " rgba=\"" << num((*g.rgba)[0]) << " " << num((*g.rgba)[1]) << " " << num((*g.rgba)[2]) << " " << num((*g.rgba)[3]) << "\"";
-    } else if (passive_ && robot_bit_ != 0) {
-      // Another robot's geoms (an actuated world model): its own bit, touching the world (bit 0),
-      // the first robot (bit 1) and the other robots; its own links as the first robot's do.
-      const int affinity = 1 | 2 | (other_robot_bits_ & ~robot_bit_) | (g.self_collide ? robot_bit_ : 0);
-      x_ << " contype=\"" << robot_bit_ << "\" conaffinity=\"" << affinity << "\" group=\"0\"" << contact_attrs(g.friction);
-    } else if (passive_) {
-      // A passive model's geoms are world objects (bit 0): they touch the ground, the robot,
-      // other objects and each other (MuJoCo skips a body and its parent).
-      x_ << " contype=\"1\" conaffinity=\"1\" group=\"2\"" << contact_attrs(g.friction);
     } else {
-      // bit 0: world; bit 1: this robot. Links without selfCollide do not accept bit 1, so two
-      // of them never touch; a selfCollide link touches every link (SDF: collide if either).
-      x_ << " contype=\"2\" conaffinity=\"" << (g.self_collide ? 3 : 1) << "\" group=\"0\"" << contact_attrs(g.friction);
+      int contype = 2, affinity = 0, group = 0;
+      if (passive_ && robot_bit_ != 0) {
+        // Another robot's geoms (an actuated world model): its own bit, touching the world (bit 0),
+        // the first robot (bit 1) and the other robots; its own links as the first robot's do.
+        contype = robot_bit_;
+        affinity = 1 | 2 | (other_robot_bits_ & ~robot_bit_) | (g.self_collide ? robot_bit_ : 0);
+      } else if (passive_) {
+        // A passive model's geoms are world objects (bit 0): they touch the ground, the robot,
+        // other objects and each other (MuJoCo skips a body and its parent).
+        contype = affinity = 1;
+        group = 2;
+      } else {
+        // bit 0: world; bit 1: this robot. Links without selfCollide do not accept bit 1, so two
+        // of them never touch; a selfCollide link touches every link (SDF: collide if either).
+        affinity = g.self_collide ? 3 : 1;
+      }
+      x_ << " contype=\"" << contype << "\" conaffinity=\"" << affinity << "\" group=\"" << group << "\"" << contact_attrs(g.friction);
+      record_geom(g.name, contype, affinity, g.friction);
     }
     x_ << "/>\n";
   }
@@ -457,6 +515,11 @@ class Writer {
   bool passive_ = false;  // writing a passive model's geoms
   int robot_bit_ = 0;        // of the actuated model being written (BodyPlan::robot_bit), 0: none
   int other_robot_bits_ = 0;  // every actuated model's bit
+  // What was written, for the listed pairs: the bodies in MuJoCo's order (the world first), the
+  // collision geoms, the body being written.
+  std::vector<WrittenBody> written_bodies_{{"world", 0, false}};
+  std::vector<WrittenGeom> written_geoms_;
+  int body_ = 0;
   std::ostringstream x_;
   MjcfDocument doc_;
 };

@@ -62,6 +62,9 @@ Physics::Physics(std::shared_ptr<const PhysicsModel> model) : model_(std::move(m
   data_->saved_act.resize(static_cast<std::size_t>(std::max(shared->na, 1)));
   data_->saved_warm.resize(static_cast<std::size_t>(shared->nv));
   data_->external_effort.assign(static_cast<std::size_t>(shared->nv), 0.0);
+  data_->tree_spatial.assign(6 * static_cast<std::size_t>(shared->nbody), 0.0);
+  data_->saved_xfrc.assign(6 * static_cast<std::size_t>(shared->nbody), 0.0);
+  data_->saved_qfrc_applied.assign(static_cast<std::size_t>(shared->nv), 0.0);
   for (int g = 0; g < shared->ngeom; ++g) {
     const char* n = mj_id2name(shared, mjOBJ_GEOM, g);
     // Geom names are "<link>/collision/<i>" or "<link>/visual/<i>" (link names may hold '/').

@@ -383,8 +383,11 @@ class Physics {
   // Runs mj_step (step) or mj_forward from the saved state until it fits the arena, growing it
   // as ArenaOverflow allows; false when it did not fit.
   bool compute_in_arena(bool step);
-  // One mj_step, with the soil's forces on the wheels when there is a soil (wheel_soil.cpp).
+  // One mj_step, with the soil's forces on the wheels when there is a soil (wheel_soil.cpp), body
+  // forces as joint forces (StepCost::tree_external_forces).
   void mujoco_step();
+  // mj_step2 with xfrc_applied as joint forces gathered over the body tree (tree_forces.cpp).
+  void step2_with_tree_forces();
   void apply_soil();     // from the state at the start of the step: forces, pending soil state
   void commit_soil();    // the step succeeded: its soil state becomes the state
   bool grow_arena(bool contacts_full, bool constraints_full, const char* what);

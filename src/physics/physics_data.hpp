@@ -62,6 +62,9 @@ struct Physics::Data {
   };
   std::vector<Press> soil_press;
   std::vector<mjtNum> xfrc_base;
+  // StepCost::tree_external_forces (tree_forces.cpp): the wrench gathered per body, and the
+  // caller's xfrc_applied and qfrc_applied while a step holds them as joint forces.
+  std::vector<mjtNum> tree_spatial, saved_xfrc, saved_qfrc_applied;
   // The root's free joint and the root link's frame in its body (root_io.cpp), found once.
   mutable bool root_known = false;
   mutable int root_free_joint = -1;
@@ -74,6 +77,11 @@ struct Physics::Data {
 };
 
 namespace detail {
+
+// Adds to qfrc (nv) the joint forces of the wrenches in d->xfrc_applied (force and torque at each
+// body's centre of mass), as MuJoCo's mj_applyFT per body would, in one pass over the tree; the
+// kinematics (xipos, subtree_com, cdof) must be current. `spatial`: scratch of 6 nbody.
+void add_tree_forces(const mjModel* m, const mjData* d, mjtNum* qfrc, mjtNum* spatial);
 
 // The free joint of the robot's root link's body, or -1 (a robot fixed to the world; the world's
 // free objects and passive models have free joints of their own, after the robot's).

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "physics/arena_estimate.hpp"
+#include "physics/collision_pairs.hpp"
 #include "physics/body_plan.hpp"
 #include "physics/wheel_identify.hpp"
 #include "physics/mjcf_writer.hpp"
@@ -199,6 +200,17 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
   pm->impl_->model = m;
   const long side = static_cast<long>(compile_arena.constraints) + m->nv;
   pm->impl_->stack_residual = static_cast<long>(m->nstack) - 5 * side * side;
+  // Listed collision pairs (StepCost::listed_pairs) only when they are exactly what MuJoCo's
+  // filters let touch, with the parameters it would give them; else its broad phase.
+  if (m->opt.collision == mjCOL_PAIR) {
+    if (const std::string why = check_listed_pairs(*m); !why.empty()) {
+      m->opt.collision = mjCOL_DYNAMIC;
+      const std::string slot = " collision=\"predefined\"";
+      doc.xml.replace(doc.xml.find(slot), slot.size(), " collision=\"dynamic\"");
+      compile_warnings.push_back("the listed collision pairs are not MuJoCo's (" + why +
+                                 "): MuJoCo's broad phase finds the contacts instead (the same physics, slower)");
+    }
+  }
   pm->arena_ = estimate_arena(*m);
   if (options.arena) {
     pm->arena_.size = *options.arena;
@@ -357,6 +369,11 @@ std::shared_ptr<const PhysicsModel> PhysicsModel::build(const description::Robot
   pm->build_times_.mjcf = mjcf_time;
   pm->build_times_.compile = compile_time;
   return pm;
+}
+
+int PhysicsModel::listed_pairs() const {
+  const mjModel* m = impl_->model;
+  return m->opt.collision == mjCOL_PAIR ? m->npair : 0;
 }
 
 std::optional<std::size_t> PhysicsModel::joint_index(std::string_view name) const {

@@ -136,6 +136,9 @@ class PhysicsModel {
 
   const std::string& mjcf() const { return mjcf_; }  // the generated document (arena size included)
   const ArenaEstimate& arena() const { return arena_; }
+  // Geom pairs MuJoCo tests each step without its broad phase (StepCost::listed_pairs); 0 when the
+  // broad phase runs (listed pairs off, too many, or not matching MuJoCo's filters: a warning).
+  int listed_pairs() const;
   const BuildTimes& build_times() const { return build_times_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
 

@@ -141,6 +141,35 @@ enum class ArenaOverflow {
 // The most constraints an arena may have: MuJoCo 2.2.2 sizes its stack 5 (njmax + nv)^2 in an int.
 inline constexpr int kMaxArenaConstraints = 16000;
 
+// Ways of computing the same MuJoCo step at less cost (physics/README.md, "Step cost"). None
+// changes what is simulated: the same contacts with the same parameters, the same equations and
+// solver; results differ from the slower way by floating-point rounding only (the order of sums).
+// `before()` turns all off: the step as mechsim computed it before, for benchmarks and fidelity
+// comparisons in one run (mechsim bench --compare-step-cost).
+struct StepCost {
+  // Every geom pair that MuJoCo's collision filters let touch (contype/conaffinity, welded and
+  // parent/child bodies, excludes) as a predefined pair with the contact parameters MuJoCo would
+  // give it, tested every step without a broad phase (<option collision="predefined">), when at most
+  // kMaxListedMovingPairs of them join two movable bodies; else MuJoCo's broad phase. On the PR2
+  // (no self-collision, 61 collision geoms) the broad phase swept 74 bodies and tested ~900 geom
+  // pairs of overlapping links a step to find 8 wheel contacts: a quarter of the step.
+  bool listed_pairs = true;
+  // The constraint solver's Jacobian in MuJoCo's sparse form (mjJAC_SPARSE; MuJoCo's "auto" picks
+  // it from 60 DOFs): a branched robot's contact and equality rows touch a few of its DOFs.
+  bool sparse_jacobian = true;
+  // Cartesian forces on bodies (xfrc_applied: gravity-off links, outside wrenches, the soil's
+  // wheel forces) turned into joint forces in one pass over the body tree, where MuJoCo 2.2.2
+  // builds a dense Jacobian per body (mj_applyFT: a tenth of the PR2's step for its 40 gravity-off
+  // links). Euler and implicit integrators; RK4 keeps MuJoCo's (its stages move the bodies).
+  bool tree_external_forces = true;
+  static constexpr StepCost before() { return {false, false, false}; }
+  bool operator==(const StepCost&) const = default;
+};
+
+// Most listed pairs (StepCost::listed_pairs) between two movable bodies: each is tested every step
+// (a bounding-sphere test, ~0.1 us), where MuJoCo's sweep and prune finds the close ones.
+inline constexpr int kMaxListedMovingPairs = 1000;
+
 struct BuildOptions {
   double timestep = 0.001;  // s (1 kHz)
   // Euler is the default, measured against Implicit on every acceptance test (PR2 and CC8, 1 ms):
@@ -163,6 +192,7 @@ struct BuildOptions {
   std::optional<ArenaSize> arena;
   ArenaOverflow arena_overflow = ArenaOverflow::Grow;
   ArenaSize max_arena{16000, 8000};
+  StepCost step_cost;  // cheaper ways to the same step (all on by default)
 };
 
 }  // namespace mechsim::physics

@@ -244,8 +244,14 @@ const std::vector<std::string>& Physics::soil_wheel_notes() const { return data_
 void Physics::mujoco_step() {
   mjModel* m = data_->m;
   mjData* d = data_->d;
-  if (!data_->soil) {
+  const bool tree_forces = model_->options().step_cost.tree_external_forces && m->opt.integrator != mjINT_RK4;
+  if (!data_->soil && !tree_forces) {
     mj_step(m, d);
+    return;
+  }
+  if (!data_->soil) {  // mj_step1 + mj_step2 is mj_step for Euler and implicit
+    mj_step1(m, d);
+    step2_with_tree_forces();
     return;
   }
   if (m->opt.integrator == mjINT_RK4) {
@@ -260,7 +266,8 @@ void Physics::mujoco_step() {
   }
   mj_step1(m, d);
   apply_soil();
-  mj_step2(m, d);
+  if (tree_forces) step2_with_tree_forces();
+  else mj_step2(m, d);
 }
 
 void Physics::commit_soil() {

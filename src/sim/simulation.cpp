@@ -41,6 +41,7 @@ physics::BuildOptions build_options(const World& world, const SimulationOptions&
   b.spawn = options.spawn;
   b.arena = options.arena;
   b.arena_overflow = options.arena_overflow;
+  b.step_cost = options.step_cost;
   if (world.spec.terrain) b.spawn.z += physics::height_at(*world.spec.terrain, b.spawn.x, b.spawn.y);
   for (const OtherRobot& o : others) {
     if (o.name.empty() || o.name.find("::") != std::string::npos)

@@ -103,6 +103,8 @@ struct SimulationOptions {
   // a tick that needs more grows it (reported in physics_warnings()) or, with Fail, stops the run.
   std::optional<physics::ArenaSize> arena;
   physics::ArenaOverflow arena_overflow = physics::ArenaOverflow::Grow;
+  // Cheaper ways to the same MuJoCo step (physics::StepCost; all on by default).
+  physics::StepCost step_cost;
   // The robot's sensors (RobotModel::sensors) are simulated at their rates (sensors/sensor_set.hpp);
   // false leaves them out (a benchmark's "without sensors"). Their noise is seeded from
   // sensor_seed: the same seed gives bit-identical readings.
