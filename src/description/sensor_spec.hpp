@@ -82,7 +82,7 @@ struct ImuSpec {
   Pose offset;
   // Orientation relative to the sensor's orientation at start (true) or to the world (false).
   bool initial_orientation_as_reference = false;
-  std::string service_name;  // gazebo_ros_imu's calibrate service (answered by nothing here)
+  std::string service_name;  // the plugin's calibrate service (std_srvs/Empty; the ROS 1 binding answers it)
 };
 
 // <contact><collision>: which of the link's collisions count. Gazebo names a URDF link's

@@ -15,6 +15,7 @@
 
 #include <pr2_msgs/PressureState.h>
 #include <std_msgs/Empty.h>
+#include <std_srvs/Empty.h>
 
 #include "ros/publish_helpers.hpp"
 #include "ros/sensor_messages.hpp"
@@ -226,6 +227,11 @@ SensorPublishers::SensorPublishers(::ros::NodeHandle root, SimBridge& bridge)
       // thread waits for a core, and a filter (robot_pose_ekf) wants every sample.
       o.triggers.push_back(advertise<sensor_msgs::Imu>(root_, topic, 100, o));
       type = "sensor_msgs/Imu";
+      // gazebo_ros_imu's and hector's calibration service (<serviceName>): a simulated IMU has
+      // no bias to learn, so, as theirs, it answers at once.
+      if (const auto* imu = std::get_if<description::ImuSpec>(&spec.details); imu && !imu->service_name.empty())
+        services_.push_back(root_.advertiseService<std_srvs::Empty::Request, std_srvs::Empty::Response>(
+            imu->service_name, [](std_srvs::Empty::Request&, std_srvs::Empty::Response&) { return true; }));
     } else if (kind == "contact") {
       o.kind = Kind::Contacts;
       o.triggers.push_back(advertise<gazebo_msgs::ContactsState>(root_, topic, 10, o));

@@ -89,6 +89,7 @@ class SensorPublishers {
   std::vector<std::unique_ptr<Output>> outputs_;
   std::vector<std::unique_ptr<Pressure>> pressures_;
   std::vector<std::string> topics_;
+  std::vector<::ros::ServiceServer> services_;  // IMU calibration services
   SensorPublishStats stats_;
   bool pushed_ = false;  // this tick queued messages: wake the sender
   std::unique_ptr<Sender> sender_;  // last: joined first, while the publishers exist

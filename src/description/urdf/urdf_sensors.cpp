@@ -96,7 +96,7 @@ void name_outputs(SensorPlugin& plugin, const std::string& kind, const std::stri
     plugin.topic = param(p, "bumperTopicName", "bumper_states");
     plugin.frame = param(p, "frameName", "world");
   } else if (file == "libgazebo_ros_imu.so") {
-    plugin.topic = param(p, "topicName", "imu_data");
+    plugin.topic = param(p, "topicName", "/default_imu");  // gazebo_ros_imu's default
     plugin.frame = param(p, "frameName", link);
   } else if (file == "libhector_gazebo_ros_imu.so") {
     plugin.topic = param(p, "topicName", "imu");
@@ -423,13 +423,14 @@ bool read_sensor_plugin(const XmlNode& e, const RobotModel& robot, Problems& p, 
         for (auto* axes : {&imu.rate_noise, &imu.accel_noise})
           for (NoiseSpec& n : *axes) n.stddev = gn;
         imu.offset = offset_pose("xyzOffset", "rpyOffset", f, e);
-        imu.service_name = param(plugin.parameters, "serviceName", "");
+        imu.service_name = param(plugin.parameters, "serviceName", "/default_imu");  // as its topic
       } else {
         imu.rate_noise = hector_noise("rate", f, e);
         imu.accel_noise = hector_noise("accel", f, e);
         imu.yaw_noise = hector_noise("heading", f, e)[0];
         imu.offset = offset_pose("xyzOffset", "rpyOffset", f, e);
-        imu.service_name = param(plugin.parameters, "serviceName", "");
+        // hector's default: <topicName>/calibrate
+        imu.service_name = param(plugin.parameters, "serviceName", param(plugin.parameters, "topicName", "imu") + "/calibrate");
       }
       s.details = imu;
       s.update_rate = plugin_rate(plugin, "updateRate", f, e, 0.0);

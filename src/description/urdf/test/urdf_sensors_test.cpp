@@ -154,6 +154,7 @@ TEST(UrdfSensors, ReadsContactSensorsAndSensorModelPlugins) {
   EXPECT_DOUBLE_EQ(imu.update_rate, 100.0);
   EXPECT_EQ(imu.plugin->frame, "arm");  // gazebo_ros_imu: frameName defaults to bodyName
   EXPECT_DOUBLE_EQ(std::get<ImuSpec>(imu.details).rate_noise[1].stddev, 2.89e-08);
+  EXPECT_EQ(std::get<ImuSpec>(imu.details).service_name, "/default_imu");  // gazebo_ros_imu's default
 
   const auto& gt = std::get<GroundTruthSpec>(m.sensors[2].details);
   EXPECT_EQ(gt.frame, "map");
@@ -168,6 +169,21 @@ TEST(UrdfSensors, ReadsContactSensorsAndSensorModelPlugins) {
 
   EXPECT_FALSE(m.sensors[4].simulated());  // f3d: named, not simulated
   EXPECT_EQ(m.plugins.size(), 6u);         // model plugins are all still listed
+}
+
+TEST(UrdfSensors, ImuPluginsTopicAndServiceDefaultsAreThePlugins) {
+  // gazebo_ros_imu: /default_imu for both; hector's: imu and <topicName>/calibrate.
+  const RobotModel m = parse(R"(<gazebo>
+  <plugin name="a" filename="libgazebo_ros_imu.so"><bodyName>arm</bodyName></plugin>
+  <plugin name="b" filename="libhector_gazebo_ros_imu.so"><bodyName>arm</bodyName></plugin>
+  <plugin name="c" filename="libhector_gazebo_ros_imu.so"><bodyName>arm</bodyName><topicName>raw</topicName></plugin>
+</gazebo>)");
+  ASSERT_EQ(m.sensors.size(), 3u);
+  EXPECT_EQ(m.sensors[0].plugin->topic, "/default_imu");
+  EXPECT_EQ(std::get<ImuSpec>(m.sensors[0].details).service_name, "/default_imu");
+  EXPECT_EQ(m.sensors[1].plugin->topic, "imu");
+  EXPECT_EQ(std::get<ImuSpec>(m.sensors[1].details).service_name, "imu/calibrate");
+  EXPECT_EQ(std::get<ImuSpec>(m.sensors[2].details).service_name, "raw/calibrate");
 }
 
 TEST(UrdfSensors, OtherCameraTypesAreReadAndNamedAsNotSimulated) {

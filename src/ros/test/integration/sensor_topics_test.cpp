@@ -23,6 +23,7 @@
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_srvs/Empty.h>
 
 #include "ros_fixture.hpp"
 
@@ -165,6 +166,9 @@ TEST_F(Pr2Sensors, LasersImuAndGroundTruthAtTheirRatesInSimTime) {
   EXPECT_LT(m.linear_acceleration.z, -9.5);
   std::printf("torso IMU linear_acceleration (%.3f, %.3f, %.3f) m/s^2\n", m.linear_acceleration.x,
               m.linear_acceleration.y, m.linear_acceleration.z);
+  // gazebo_ros_imu's calibration service (the PR2 names /default_imu): answered at once.
+  std_srvs::Empty calibrate;
+  EXPECT_TRUE(::ros::service::call("/default_imu", calibrate)) << "the IMU plugin's <serviceName>";
 
   const nav_msgs::Odometry o = truth.last();
   EXPECT_EQ(o.header.frame_id, "map");
