@@ -108,22 +108,24 @@ class ServiceServer {
   // Replies whose client was gone (see the header).
   std::uint64_t dropped() const { return dropped_.load(); }
 
+  // Whether the client of `to` is still there: its reply reader matched (rmw_fastrtps: the
+  // reader in the request's related_sample_identity; rmw_cyclonedds: a reader carrying its
+  // clientid). A client that named no reader counts as there.
+  bool client_alive(const ReplyTo& to) const {
+    if (to.form == ClientForm::FastRtps) return to.reply_reader == Guid{} || writer_->has_matched(to.reply_reader);
+    if (to.client.empty()) return true;
+    for (const Guid& r : participant_.remote_readers_with("clientid=" + to.client + ";"))
+      if (writer_->has_matched(r)) return true;
+    return false;
+  }
+
   // Sends `response` to the client of `to` (any thread). Waits at most 100 ms for the client's
   // reply reader to be matched (a reply to a reader not matched yet is lost); a client that is
   // gone gets nothing: false, counted in dropped().
   bool reply(const ReplyTo& to, const Response& response) {
     bool matched = false;
     for (int i = 0; i < 10 && !matched; ++i) {
-      if (to.form == ClientForm::FastRtps) {
-        matched = to.reply_reader == Guid{} || writer_->has_matched(to.reply_reader);
-      } else {
-        if (to.client.empty()) {
-          matched = true;  // no clientid to wait for: as rmw_cyclonedds, reply at once
-          break;
-        }
-        for (const Guid& r : participant_.remote_readers_with("clientid=" + to.client + ";"))
-          matched = matched || writer_->has_matched(r);
-      }
+      matched = client_alive(to);  // no clientid to wait for: as rmw_cyclonedds, reply at once
       if (!matched) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     if (!matched) {
