@@ -130,6 +130,7 @@ class ServiceServer {
     }
     if (!matched) {
       dropped_.fetch_add(1);
+      participant_.log(name_ + ": the reply to " + to.who() + " was dropped: the client is gone");
       return false;
     }
     if (to.form == ClientForm::FastRtps) {

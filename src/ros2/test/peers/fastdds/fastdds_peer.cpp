@@ -14,6 +14,9 @@
 //                                     its related_sample_identity), in order, before --call;
 //                                     prints {"service","form","available","replies","sent",
 //                                     "response" (the first reply, decoded),"ms"}
+//       [--script JSON]               a scripted client (../common/script.hpp: service calls, action
+//                                     goals, cancels, results, topics), first of all
+//       [--lease S]                   the participant's lease (Fast DDS's default: 20 s)
 //       [--call SERVICE=empty]...     call a std_srvs/srv/Empty service first, as an rmw_fastrtps_cpp
 //                                     client does (reply reader GUID as the request's
 //                                     related_sample_identity; the reply matched by its
@@ -48,162 +51,17 @@
 #include <fastrtps/types/DynamicTypeBuilderPtr.h>
 #include <nlohmann/json.hpp>
 
+#include "../common/ros2_definitions.hpp"
+#include "../common/script.hpp"
+
 namespace fdds = eprosima::fastdds::dds;
 namespace types = eprosima::fastrtps::types;
 using nlohmann::json;
 
 namespace {
 
-// ROS 2 message fields, from the official .msg files (Humble and Jazzy have the same ones, but
-// rmw_dds_common/Gid: 24 bytes in Humble, 16 from Iron on).
-using Fields = std::vector<std::pair<std::string, std::string>>;
-std::map<std::string, Fields> definitions(const std::string& distro) {
-  return {
-      {"builtin_interfaces/Time", {{"sec", "int32"}, {"nanosec", "uint32"}}},
-      {"builtin_interfaces/Duration", {{"sec", "int32"}, {"nanosec", "uint32"}}},
-      {"rosgraph_msgs/Clock", {{"clock", "builtin_interfaces/Time"}}},
-      {"std_msgs/Header", {{"stamp", "builtin_interfaces/Time"}, {"frame_id", "string"}}},
-      {"std_msgs/String", {{"data", "string"}}},
-      {"std_msgs/MultiArrayDimension", {{"label", "string"}, {"size", "uint32"}, {"stride", "uint32"}}},
-      {"std_msgs/MultiArrayLayout", {{"dim", "std_msgs/MultiArrayDimension[]"}, {"data_offset", "uint32"}}},
-      {"std_msgs/Float64MultiArray", {{"layout", "std_msgs/MultiArrayLayout"}, {"data", "float64[]"}}},
-      {"geometry_msgs/Vector3", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}}},
-      {"geometry_msgs/Point", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}}},
-      {"geometry_msgs/Quaternion", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}, {"w", "float64"}}},
-      {"geometry_msgs/Pose", {{"position", "geometry_msgs/Point"}, {"orientation", "geometry_msgs/Quaternion"}}},
-      {"geometry_msgs/PoseWithCovariance", {{"pose", "geometry_msgs/Pose"}, {"covariance", "float64[36]"}}},
-      {"geometry_msgs/Twist", {{"linear", "geometry_msgs/Vector3"}, {"angular", "geometry_msgs/Vector3"}}},
-      {"geometry_msgs/TwistStamped", {{"header", "std_msgs/Header"}, {"twist", "geometry_msgs/Twist"}}},
-      {"geometry_msgs/TwistWithCovariance", {{"twist", "geometry_msgs/Twist"}, {"covariance", "float64[36]"}}},
-      {"geometry_msgs/Transform", {{"translation", "geometry_msgs/Vector3"}, {"rotation", "geometry_msgs/Quaternion"}}},
-      {"geometry_msgs/TransformStamped",
-       {{"header", "std_msgs/Header"}, {"child_frame_id", "string"}, {"transform", "geometry_msgs/Transform"}}},
-      {"tf2_msgs/TFMessage", {{"transforms", "geometry_msgs/TransformStamped[]"}}},
-      {"sensor_msgs/JointState",
-       {{"header", "std_msgs/Header"}, {"name", "string[]"}, {"position", "float64[]"}, {"velocity", "float64[]"},
-        {"effort", "float64[]"}}},
-      {"sensor_msgs/LaserScan",
-       {{"header", "std_msgs/Header"}, {"angle_min", "float32"}, {"angle_max", "float32"}, {"angle_increment", "float32"},
-        {"time_increment", "float32"}, {"scan_time", "float32"}, {"range_min", "float32"}, {"range_max", "float32"},
-        {"ranges", "float32[]"}, {"intensities", "float32[]"}}},
-      {"sensor_msgs/Image",
-       {{"header", "std_msgs/Header"}, {"height", "uint32"}, {"width", "uint32"}, {"encoding", "string"},
-        {"is_bigendian", "uint8"}, {"step", "uint32"}, {"data", "uint8[]"}}},
-      {"sensor_msgs/RegionOfInterest",
-       {{"x_offset", "uint32"}, {"y_offset", "uint32"}, {"height", "uint32"}, {"width", "uint32"}, {"do_rectify", "bool"}}},
-      {"sensor_msgs/CameraInfo",
-       {{"header", "std_msgs/Header"}, {"height", "uint32"}, {"width", "uint32"}, {"distortion_model", "string"},
-        {"d", "float64[]"}, {"k", "float64[9]"}, {"r", "float64[9]"}, {"p", "float64[12]"}, {"binning_x", "uint32"},
-        {"binning_y", "uint32"}, {"roi", "sensor_msgs/RegionOfInterest"}}},
-      {"sensor_msgs/Imu",
-       {{"header", "std_msgs/Header"}, {"orientation", "geometry_msgs/Quaternion"}, {"orientation_covariance", "float64[9]"},
-        {"angular_velocity", "geometry_msgs/Vector3"}, {"angular_velocity_covariance", "float64[9]"},
-        {"linear_acceleration", "geometry_msgs/Vector3"}, {"linear_acceleration_covariance", "float64[9]"}}},
-      {"nav_msgs/Odometry",
-       {{"header", "std_msgs/Header"}, {"child_frame_id", "string"}, {"pose", "geometry_msgs/PoseWithCovariance"},
-        {"twist", "geometry_msgs/TwistWithCovariance"}}},
-      {"trajectory_msgs/JointTrajectoryPoint",
-       {{"positions", "float64[]"}, {"velocities", "float64[]"}, {"accelerations", "float64[]"}, {"effort", "float64[]"},
-        {"time_from_start", "builtin_interfaces/Duration"}}},
-      {"trajectory_msgs/JointTrajectory",
-       {{"header", "std_msgs/Header"}, {"joint_names", "string[]"}, {"points", "trajectory_msgs/JointTrajectoryPoint[]"}}},
-      {"std_srvs/srv/Empty_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"std_srvs/srv/Empty_Response", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"rmw_dds_common/Gid", {{"data", distro == "humble" ? "uint8[24]" : "uint8[16]"}}},
-      // Services of issue 37, from the official definitions (gazebo_ros_pkgs ros2, ros2_control
-      // humble and jazzy, rcl_interfaces, action_msgs, control_msgs).
-      {"geometry_msgs/Pose", {{"position", "geometry_msgs/Point"}, {"orientation", "geometry_msgs/Quaternion"}}},
-      {"gazebo_msgs/EntityState",
-       {{"name", "string"}, {"pose", "geometry_msgs/Pose"}, {"twist", "geometry_msgs/Twist"}, {"reference_frame", "string"}}},
-      {"gazebo_msgs/srv/SpawnEntity_Request",
-       {{"name", "string"}, {"xml", "string"}, {"robot_namespace", "string"}, {"initial_pose", "geometry_msgs/Pose"},
-        {"reference_frame", "string"}}},
-      {"gazebo_msgs/srv/SpawnEntity_Response", {{"success", "bool"}, {"status_message", "string"}}},
-      {"gazebo_msgs/srv/DeleteEntity_Request", {{"name", "string"}}},
-      {"gazebo_msgs/srv/DeleteEntity_Response", {{"success", "bool"}, {"status_message", "string"}}},
-      {"gazebo_msgs/srv/GetEntityState_Request", {{"name", "string"}, {"reference_frame", "string"}}},
-      {"gazebo_msgs/srv/GetEntityState_Response",
-       {{"header", "std_msgs/Header"}, {"state", "gazebo_msgs/EntityState"}, {"success", "bool"}}},
-      {"gazebo_msgs/srv/SetEntityState_Request", {{"state", "gazebo_msgs/EntityState"}}},
-      {"gazebo_msgs/srv/SetEntityState_Response", {{"success", "bool"}}},
-      {"gazebo_msgs/srv/GetModelList_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"gazebo_msgs/srv/GetModelList_Response", {{"header", "std_msgs/Header"}, {"model_names", "string[]"}, {"success", "bool"}}},
-      {"controller_manager_msgs/ChainConnection", {{"name", "string"}, {"reference_interfaces", "string[]"}}},
-      {"controller_manager_msgs/ControllerState",
-       distro == "humble"
-           ? Fields{{"name", "string"}, {"state", "string"}, {"type", "string"}, {"claimed_interfaces", "string[]"},
-                    {"required_command_interfaces", "string[]"}, {"required_state_interfaces", "string[]"},
-                    {"is_chainable", "bool"}, {"is_chained", "bool"},
-                    {"chain_connections", "controller_manager_msgs/ChainConnection[]"}}
-           : Fields{{"name", "string"}, {"state", "string"}, {"type", "string"}, {"claimed_interfaces", "string[]"},
-                    {"required_command_interfaces", "string[]"}, {"required_state_interfaces", "string[]"},
-                    {"is_chainable", "bool"}, {"is_chained", "bool"}, {"exported_state_interfaces", "string[]"},
-                    {"reference_interfaces", "string[]"}, {"chain_connections", "controller_manager_msgs/ChainConnection[]"}}},
-      {"controller_manager_msgs/HardwareInterface", {{"name", "string"}, {"is_available", "bool"}, {"is_claimed", "bool"}}},
-      {"lifecycle_msgs/State", {{"id", "uint8"}, {"label", "string"}}},
-      {"controller_manager_msgs/HardwareComponentState",
-       {{"name", "string"}, {"type", "string"}, {distro == "humble" ? "class_type" : "plugin_name", "string"},
-        {"state", "lifecycle_msgs/State"}, {"command_interfaces", "controller_manager_msgs/HardwareInterface[]"},
-        {"state_interfaces", "controller_manager_msgs/HardwareInterface[]"}}},
-      {"controller_manager_msgs/srv/ListControllers_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListControllers_Response", {{"controller", "controller_manager_msgs/ControllerState[]"}}},
-      {"controller_manager_msgs/srv/ListControllerTypes_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListControllerTypes_Response", {{"types", "string[]"}, {"base_classes", "string[]"}}},
-      {"controller_manager_msgs/srv/ListHardwareInterfaces_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListHardwareInterfaces_Response",
-       {{"command_interfaces", "controller_manager_msgs/HardwareInterface[]"},
-        {"state_interfaces", "controller_manager_msgs/HardwareInterface[]"}}},
-      {"controller_manager_msgs/srv/ListHardwareComponents_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListHardwareComponents_Response",
-       {{"component", "controller_manager_msgs/HardwareComponentState[]"}}},
-      {"controller_manager_msgs/srv/LoadController_Request", {{"name", "string"}}},
-      {"controller_manager_msgs/srv/LoadController_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/ConfigureController_Request", {{"name", "string"}}},
-      {"controller_manager_msgs/srv/ConfigureController_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/UnloadController_Request", {{"name", "string"}}},
-      {"controller_manager_msgs/srv/UnloadController_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/ReloadControllerLibraries_Request", {{"force_kill", "bool"}}},
-      {"controller_manager_msgs/srv/ReloadControllerLibraries_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/SetHardwareComponentState_Request", {{"name", "string"}, {"target_state", "lifecycle_msgs/State"}}},
-      {"controller_manager_msgs/srv/SetHardwareComponentState_Response", {{"ok", "bool"}, {"state", "lifecycle_msgs/State"}}},
-      {"controller_manager_msgs/srv/SwitchController_Request",
-       distro == "humble"
-           ? Fields{{"activate_controllers", "string[]"}, {"deactivate_controllers", "string[]"},
-                    {"start_controllers", "string[]"}, {"stop_controllers", "string[]"}, {"strictness", "int32"},
-                    {"activate_asap", "bool"}, {"start_asap", "bool"}, {"timeout", "builtin_interfaces/Duration"}}
-           : Fields{{"activate_controllers", "string[]"}, {"deactivate_controllers", "string[]"}, {"strictness", "int32"},
-                    {"activate_asap", "bool"}, {"timeout", "builtin_interfaces/Duration"}}},
-      {"controller_manager_msgs/srv/SwitchController_Response", {{"ok", "bool"}}},
-      {"rcl_interfaces/ParameterValue",
-       {{"type", "uint8"}, {"bool_value", "bool"}, {"integer_value", "int64"}, {"double_value", "float64"},
-        {"string_value", "string"}, {"byte_array_value", "uint8[]"}, {"bool_array_value", "bool[]"},
-        {"integer_array_value", "int64[]"}, {"double_array_value", "float64[]"}, {"string_array_value", "string[]"}}},
-      {"rcl_interfaces/Parameter", {{"name", "string"}, {"value", "rcl_interfaces/ParameterValue"}}},
-      {"rcl_interfaces/SetParametersResult", {{"successful", "bool"}, {"reason", "string"}}},
-      {"rcl_interfaces/ListParametersResult", {{"names", "string[]"}, {"prefixes", "string[]"}}},
-      {"rcl_interfaces/FloatingPointRange", {{"from_value", "float64"}, {"to_value", "float64"}, {"step", "float64"}}},
-      {"rcl_interfaces/IntegerRange", {{"from_value", "int64"}, {"to_value", "int64"}, {"step", "uint64"}}},
-      {"rcl_interfaces/ParameterDescriptor",
-       {{"name", "string"}, {"type", "uint8"}, {"description", "string"}, {"additional_constraints", "string"},
-        {"read_only", "bool"}, {"dynamic_typing", "bool"}, {"floating_point_range", "rcl_interfaces/FloatingPointRange[]"},
-        {"integer_range", "rcl_interfaces/IntegerRange[]"}}},
-      {"rcl_interfaces/srv/ListParameters_Request", {{"prefixes", "string[]"}, {"depth", "uint64"}}},
-      {"rcl_interfaces/srv/ListParameters_Response", {{"result", "rcl_interfaces/ListParametersResult"}}},
-      {"rcl_interfaces/srv/GetParameters_Request", {{"names", "string[]"}}},
-      {"rcl_interfaces/srv/GetParameters_Response", {{"values", "rcl_interfaces/ParameterValue[]"}}},
-      {"rcl_interfaces/srv/SetParameters_Request", {{"parameters", "rcl_interfaces/Parameter[]"}}},
-      {"rcl_interfaces/srv/SetParameters_Response", {{"results", "rcl_interfaces/SetParametersResult[]"}}},
-      {"rcl_interfaces/srv/DescribeParameters_Request", {{"names", "string[]"}}},
-      {"rcl_interfaces/srv/DescribeParameters_Response", {{"descriptors", "rcl_interfaces/ParameterDescriptor[]"}}},
-      {"rcl_interfaces/srv/GetParameterTypes_Request", {{"names", "string[]"}}},
-      {"rcl_interfaces/srv/GetParameterTypes_Response", {{"types", "uint8[]"}}},
-      {"rmw_dds_common/NodeEntitiesInfo",
-       {{"node_namespace", "string"}, {"node_name", "string"}, {"reader_gid_seq", "rmw_dds_common/Gid[]"},
-        {"writer_gid_seq", "rmw_dds_common/Gid[]"}}},
-      {"rmw_dds_common/ParticipantEntitiesInfo",
-       {{"gid", "rmw_dds_common/Gid"}, {"node_entities_info_seq", "rmw_dds_common/NodeEntitiesInfo[]"}}},
-  };
-}
+using mechsim::ros2::peers::Fields;
+using mechsim::ros2::peers::definitions;
 
 struct FieldType {
   std::string base;  // int32, float64, string, pkg/Name, ...
@@ -350,6 +208,10 @@ void write_message(Types& t, types::DynamicData* d, const std::string& name, con
     if (v.contains(field)) {
       if (ft.container == FieldType::Single) {
         write_value(t, d, k, ft.base, v[field]);
+      } else if (ft.container == FieldType::Array) {
+        types::DynamicData* arr = d->loan_value(k);
+        for (std::uint32_t i = 0; i < ft.size && i < v[field].size(); ++i) write_value(t, arr, i, ft.base, v[field][i]);
+        d->return_loaned_value(arr);
       } else if (ft.container == FieldType::Sequence) {
         types::DynamicData* seq = d->loan_value(k);
         for (const json& item : v[field]) {
@@ -502,6 +364,160 @@ json command(const std::string& kind, const std::string& values) {
   return json::object();
 }
 
+
+// ---- the scripted client's middleware (../common/script.hpp): rmw_fastrtps_cpp's forms
+namespace peers = mechsim::ros2::peers;
+
+fdds::DataWriterQos writer_qos(peers::PeerQos q) {
+  fdds::DataWriterQos wq = fdds::DATAWRITER_QOS_DEFAULT;
+  wq.reliability().kind = q.reliable ? fdds::RELIABLE_RELIABILITY_QOS : fdds::BEST_EFFORT_RELIABILITY_QOS;
+  wq.durability().kind = q.transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS : fdds::VOLATILE_DURABILITY_QOS;
+  wq.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  wq.history().depth = q.depth;
+  wq.endpoint().history_memory_policy = eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  return wq;
+}
+fdds::DataReaderQos reader_qos(peers::PeerQos q) {
+  fdds::DataReaderQos rq = fdds::DATAREADER_QOS_DEFAULT;
+  rq.reliability().kind = q.reliable ? fdds::RELIABLE_RELIABILITY_QOS : fdds::BEST_EFFORT_RELIABILITY_QOS;
+  rq.durability().kind = q.transient_local ? fdds::TRANSIENT_LOCAL_DURABILITY_QOS : fdds::VOLATILE_DURABILITY_QOS;
+  rq.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  rq.history().depth = q.depth;
+  rq.endpoint().history_memory_policy = eprosima::fastrtps::rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  return rq;
+}
+
+class FastBackend : public peers::Backend {
+ public:
+  FastBackend(fdds::DomainParticipant* pp, fdds::Publisher* pub, fdds::Subscriber* sub, Types& types)
+      : pp_(pp), pub_(pub), sub_(sub), types_(types) {}
+  std::string form() const override { return "rmw_fastrtps"; }
+
+  fdds::Topic* topic(const std::string& dds_name, const std::string& type) {
+    if (auto it = topics_.find(dds_name); it != topics_.end()) return it->second;
+    fdds::TypeSupport support(new types::DynamicPubSubType(types_.get(type)));
+    support->auto_fill_type_object(false);
+    support->auto_fill_type_information(false);
+    support.register_type(pp_);
+    return topics_[dds_name] = pp_->create_topic(dds_name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
+  }
+
+  // As rmw_fastrtps_cpp's client: the reply reader's GUID in each request's
+  // related_sample_identity, replies matched by theirs (Fast DDS writes every reply to every
+  // client's reader).
+  class Client : public peers::ServiceClient {
+   public:
+    Client(FastBackend& b, const std::string& service, const std::string& type) : b_(b), req_(type + "_Request"), rep_(type + "_Response") {
+      w_ = b.pub_->create_datawriter(b.topic("rq" + service + "Request", req_), writer_qos({true, false, 1000}));
+      r_ = b.sub_->create_datareader(b.topic("rr" + service + "Reply", rep_), reader_qos({true, false, 1000}));
+      reply_ = types::DynamicDataFactory::get_instance()->create_data(b.types_.get(rep_));
+    }
+    ~Client() override {
+      b_.pub_->delete_datawriter(w_);
+      b_.sub_->delete_datareader(r_);
+    }
+    bool available() override {
+      fdds::PublicationMatchedStatus pm;
+      fdds::SubscriptionMatchedStatus sm;
+      w_->get_publication_matched_status(pm);
+      r_->get_subscription_matched_status(sm);
+      return pm.current_count > 0 && sm.current_count > 0;
+    }
+    std::optional<std::int64_t> send(const peers::json& request) override {
+      types::DynamicData_ptr d(types::DynamicDataFactory::get_instance()->create_data(b_.types_.get(req_)));
+      write_message(b_.types_, d.get(), req_, request);
+      eprosima::fastrtps::rtps::WriteParams params;
+      params.related_sample_identity().writer_guid(r_->guid());
+      if (!w_->write(d.get(), params)) return std::nullopt;
+      sent_ = params.sample_identity().writer_guid();
+      return params.sample_identity().sequence_number().to64long();
+    }
+    std::vector<std::pair<std::int64_t, peers::json>> take() override {
+      std::vector<std::pair<std::int64_t, peers::json>> out;
+      fdds::SampleInfo info;
+      while (r_->take_next_sample(reply_.get(), &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+        if (!info.valid_data) continue;
+        if (info.related_sample_identity.writer_guid() != sent_) {
+          ++foreign;
+          continue;
+        }
+        out.emplace_back(info.related_sample_identity.sequence_number().to64long(), read_message(b_.types_, reply_.get(), rep_));
+      }
+      return out;
+    }
+
+   private:
+    FastBackend& b_;
+    std::string req_, rep_;
+    fdds::DataWriter* w_ = nullptr;
+    fdds::DataReader* r_ = nullptr;
+    types::DynamicData_ptr reply_;
+    eprosima::fastrtps::rtps::GUID_t sent_;
+  };
+
+  class Reader : public peers::TopicReader {
+   public:
+    Reader(FastBackend& b, const std::string& topic, const std::string& type, peers::PeerQos q) : b_(b), type_(type) {
+      r_ = b.sub_->create_datareader(b.topic("rt" + topic, type), reader_qos(q));
+      data_ = types::DynamicDataFactory::get_instance()->create_data(b.types_.get(type));
+    }
+    ~Reader() override { b_.sub_->delete_datareader(r_); }
+    std::vector<peers::json> take() override {
+      std::vector<peers::json> out;
+      fdds::SampleInfo info;
+      while (r_->take_next_sample(data_.get(), &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
+        if (info.valid_data) out.push_back(read_message(b_.types_, data_.get(), type_));
+      return out;
+    }
+
+   private:
+    FastBackend& b_;
+    std::string type_;
+    fdds::DataReader* r_ = nullptr;
+    types::DynamicData_ptr data_;
+  };
+
+  class Writer : public peers::TopicWriter {
+   public:
+    Writer(FastBackend& b, const std::string& topic, const std::string& type, peers::PeerQos q) : b_(b), type_(type) {
+      w_ = b.pub_->create_datawriter(b.topic("rt" + topic, type), writer_qos(q));
+    }
+    ~Writer() override { b_.pub_->delete_datawriter(w_); }
+    int matched() override {
+      fdds::PublicationMatchedStatus pm;
+      w_->get_publication_matched_status(pm);
+      return pm.current_count;
+    }
+    bool write(const peers::json& message) override {
+      types::DynamicData_ptr d(types::DynamicDataFactory::get_instance()->create_data(b_.types_.get(type_)));
+      write_message(b_.types_, d.get(), type_, message);
+      return w_->write(d.get());
+    }
+
+   private:
+    FastBackend& b_;
+    std::string type_;
+    fdds::DataWriter* w_ = nullptr;
+  };
+
+  std::unique_ptr<peers::ServiceClient> client(const std::string& service, const std::string& type) override {
+    return std::make_unique<Client>(*this, service, type);
+  }
+  std::unique_ptr<peers::TopicReader> reader(const std::string& topic, const std::string& type, peers::PeerQos q) override {
+    return std::make_unique<Reader>(*this, topic, type, q);
+  }
+  std::unique_ptr<peers::TopicWriter> writer(const std::string& topic, const std::string& type, peers::PeerQos q) override {
+    return std::make_unique<Writer>(*this, topic, type, q);
+  }
+
+ private:
+  fdds::DomainParticipant* pp_;
+  fdds::Publisher* pub_;
+  fdds::Subscriber* sub_;
+  Types& types_;
+  std::map<std::string, fdds::Topic*> topics_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -532,6 +548,8 @@ int main(int argc, char** argv) {
     int count = 1;
   };
   std::vector<Request> requests;
+  std::string script;
+  double lease = 0.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
@@ -539,6 +557,8 @@ int main(int argc, char** argv) {
     else if (a == "--seconds" && more) seconds = std::atof(argv[++i]);
     else if (a == "--rate" && more) rate = std::atof(argv[++i]);
     else if (a == "--distro" && more) distro = argv[++i];
+    else if (a == "--script" && more) script = argv[++i];
+    else if (a == "--lease" && more) lease = std::atof(argv[++i]);
     else if (a == "--request" && more) {
       const std::string spec = argv[++i];
       const auto eq1 = spec.find('=');
@@ -590,6 +610,13 @@ int main(int argc, char** argv) {
   pq.name("fastdds_peer");
   const std::string enclave = "enclave=/;";
   pq.user_data().data_vec(std::vector<eprosima::fastrtps::rtps::octet>(enclave.begin(), enclave.end()));
+  if (lease > 0.0) {
+    // A short lease: a peer that vanishes (the tests' crash) is noticed in `lease` seconds, not
+    // Fast DDS's default 20.
+    auto& discovery = pq.wire_protocol().builtin.discovery_config;
+    discovery.leaseDuration = eprosima::fastrtps::Duration_t(lease);
+    discovery.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(lease / 4.0);
+  }
   fdds::DomainParticipant* pp = fdds::DomainParticipantFactory::get_instance()->create_participant(domain, pq);
   if (pp == nullptr) {
     std::fprintf(stderr, "fastdds_peer: no participant\n");
@@ -609,6 +636,18 @@ int main(int argc, char** argv) {
     return topics[name] = pp->create_topic(name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   };
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+  FastBackend backend(pp, publisher, subscriber, types_);
+  peers::Script runner(backend);  // lives to the end: its writers (publish) keep their samples
+  if (!script.empty()) {
+    peers::json steps;
+    try {
+      steps = peers::json::parse(script);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "fastdds_peer: --script: %s\n", e.what());
+      return 2;
+    }
+    if (const int rc = runner.run(steps); rc != 0) return rc;
+  }
   for (const Request& rq_spec : requests) {
     // As rmw_fastrtps_cpp's client: request writer and reply reader (services' default QoS); the
     // reply reader's GUID in each request's related_sample_identity; replies matched by theirs.
