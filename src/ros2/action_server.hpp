@@ -229,7 +229,7 @@ class ActionServer : public Pollable {
         r.ended_at = now_();
         ++stats_.canceled;
         changed = true;
-        for (const ReplyTo& to : r.waiting) replies.emplace_back(to, response_of(r));
+        for (const Waiter& w : r.waiting) replies.emplace_back(w.to, response_of(r));
         r.waiting.clear();
       }
       if (changed) node_.participant().log(name_ + ": goals canceled: " + why);
@@ -285,13 +285,18 @@ class ActionServer : public Pollable {
                                                  : stats_.aborted);
         r.ended_at = now;
         changed = true;
-        for (const ReplyTo& to : r.waiting) replies.emplace_back(to, response_of(r));
+        for (const Waiter& w : r.waiting) replies.emplace_back(w.to, response_of(r));
         r.waiting.clear();
       }
       // get_result requests whose client is gone: dropped now, not when the goal ends.
       for (Record& r : goals_) {
         const std::size_t before = r.waiting.size();
-        std::erase_if(r.waiting, [this](const ReplyTo& to) { return !get_result_->client_alive(to); });
+        const auto wall = std::chrono::steady_clock::now();
+        std::erase_if(r.waiting, [&](Waiter& w) {
+          const bool alive = get_result_->client_alive(w.to);
+          w.seen = w.seen || alive;
+          return !alive && (w.seen || wall - w.since > kMatchGrace);
+        });
         if (r.waiting.size() != before) {
           stats_.results_dropped += before - r.waiting.size();
           node_.participant().log(name_ + ": goal " + uuid_string(r.uuid) + ": " + std::to_string(before - r.waiting.size()) +
@@ -318,6 +323,15 @@ class ActionServer : public Pollable {
   }
 
  private:
+  // A get_result request waiting for its goal. Its client counts as gone once its reply reader,
+  // matched before, is not any more (or was never matched within kMatchGrace: a request can come
+  // before the server's reply writer has matched the client's reader).
+  struct Waiter {
+    ReplyTo to;
+    std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
+    bool seen = false;  // its reader was matched once
+  };
+  static constexpr std::chrono::seconds kMatchGrace{5};
   struct Record {
     GoalUuid uuid{};
     std::uint64_t port_id = 0;
@@ -326,7 +340,7 @@ class ActionServer : public Pollable {
     bool superseded = false;              // a newer goal was accepted after it
     Result result;
     double ended_at = 0.0;
-    std::vector<ReplyTo> waiting;  // get_result requests
+    std::vector<Waiter> waiting;  // get_result requests
   };
   static bool ended(std::int8_t s) {
     return s == Status::STATUS_SUCCEEDED || s == Status::STATUS_CANCELED || s == Status::STATUS_ABORTED;
@@ -419,7 +433,7 @@ class ActionServer : public Pollable {
           node_.participant().log(name_ + ": goal " + uuid_string(r->uuid) + ": more than " + std::to_string(kMaxWaiting) +
                                   " get_result requests waiting; this one is refused (STATUS_UNKNOWN)");
         } else {
-          r->waiting.push_back(to);
+          r->waiting.push_back({to});
           return;
         }
       } else if (r != nullptr) {

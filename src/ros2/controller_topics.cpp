@@ -297,6 +297,19 @@ ActionStats SimNode::action_stats() const {
   return sum;
 }
 
+void SimNode::stop_actions(const std::string& why) {
+  std::vector<ControllerAction> actions;
+  {
+    std::lock_guard<std::mutex> lock(bindings_mutex_);
+    for (const auto& b : bindings_)
+      if (b->action.server) actions.push_back(b->action);
+  }
+  for (const ControllerAction& a : actions) {
+    poller_->remove(a.server.get());
+    a.shutdown(why);
+  }
+}
+
 void SimNode::publish_controller_states(double time) {
   // A message filled here and written by the outbox thread; nothing while nobody subscribes (the
   // port's snapshot is not even read).

@@ -98,6 +98,9 @@ class SimNode {
   NodeStats stats() const;
   // Every action server of its controllers, summed.
   ActionStats action_stats() const;
+  // Its action servers stop polling their ports and end their goals (CANCELED, `why` logged):
+  // before the model's simulation goes (the world stopping). Idempotent.
+  void stop_actions(const std::string& why);
 
  private:
   struct Binding;

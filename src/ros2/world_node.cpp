@@ -38,6 +38,12 @@ void WorldNode::start() {
 }
 
 void WorldNode::stop() {
+  {
+    // The actions poll their controllers' ports on a thread of their own: they stop before the
+    // world lets go of the models' simulations.
+    std::lock_guard<std::mutex> lock(nodes_mutex_);
+    for (const auto& [name, node] : nodes_) node->stop_actions("the simulation is stopping");
+  }
   world_.stop();
   std::lock_guard<std::mutex> lock(nodes_mutex_);
   nodes_.clear();
@@ -133,7 +139,8 @@ void WorldNode::model_added(const bridge::ModelInfo& info, bridge::SimBridge& mo
 void WorldNode::model_removing(const bridge::ModelInfo& info, bridge::SimBridge&) {
   SimNode* node = model_node(info.name);
   if (node == nullptr) return;
-  // Its outputs off, then its controllers stopped and unloaded (topics first).
+  // Its actions end, its outputs off, then its controllers stopped and unloaded (topics first).
+  node->stop_actions("the model is being deleted");
   node->stop();
   const std::size_t unloaded = node->unload_all_controllers();
   participant_->log("deleting '" + info.name + "': " + std::to_string(unloaded) + " controllers stopped and unloaded");

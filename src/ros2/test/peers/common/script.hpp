@@ -4,8 +4,10 @@
 // clients, readers, writers carrying JSON), the script says what to do, one JSON line per step.
 //
 // --script '[STEP, ...]', each STEP an object with "op":
-//   call       {"service", "type": "pkg/srv/T", "request": {...}, "count": 1}
-//              -> {"available", "sent", "replies", "foreign", "response": the first reply, "ms"}
+//   call       {"service", "type": "pkg/srv/T", "request": {...}, "count": 1, "wait": true}
+//              -> {"available", "sent", "replies", "foreign", "response": the first reply, "ms",
+//              "reply_ms": from the first request written to the last reply};
+//              "wait": false sends and goes on (a call the client leaves, e.g. to vanish)
 //   send_goal  {"action", "type": "pkg/action/A", "goal": {...}, "as": NAME, "result": true}
 //              the goal with a fresh UUID; then (result true) its get_result request at once, as
 //              rclcpp_action's client does -> {"accepted", "stamp", "ms"}
@@ -13,11 +15,14 @@
 //   result     {"goal": NAME, "timeout": s} waits for the goal's get_result reply (sends the
 //              request if none is out) -> {"status", "result", "feedback": count,
 //              "last_feedback", "statuses": every status seen for it on <action>/_action/status}
-//   take       {"topic", "type", "qos": "tl"|"rel"|"be", "field", "as": VAR, "timeout"} one sample;
-//              its field becomes "$VAR" in later requests and goals -> {"got", "length"}
+//   take       {"topic", "type", "qos": "tl"|"rel"|"be", "field", "as": VAR, "timeout", "print"} one
+//              sample; its field becomes "$VAR" in later requests and goals -> {"got", "length",
+//              "value" (with "print": true)}
 //   publish    {"topic", "type", "qos", "message"} once matched (kept until the script ends)
 //   sleep      {"seconds"}
 //   vanish     {} the process ends at once, as a crash: nothing closed, nothing said
+//   exit       {} the script ends here and the client closes (its participant deleted, as a ROS 2
+//              client stopped with Ctrl-C), whatever it left waiting
 // Between steps and while waiting, feedback, status and replies keep being taken.
 
 #include <unistd.h>
@@ -96,6 +101,7 @@ class Script {
     }
     int index = 0;
     for (const json& step : steps) {
+      if (step.value("op", "") == "exit") break;
       json out = {{"step", index++}, {"op", step.value("op", "")}, {"form", backend_.form()}};
       const auto t0 = clock::now();
       try {
@@ -185,10 +191,15 @@ class Script {
     std::vector<std::int64_t> sent;
     for (int i = 0; available && i < count; ++i)
       if (auto id = c->send(request)) sent.push_back(*id);
+    if (!s.value("wait", true)) {
+      out["sent"] = sent.size();
+      left_.push_back(std::move(c));  // its endpoints stay: the call is still out
+      return;
+    }
     int replies = 0;
     json first;
     std::vector<bool> got(sent.size(), false);
-    const auto t0 = clock::now();
+    const auto t0 = clock::now();  // the replies' time, discovery not counted
     while (replies < static_cast<int>(sent.size()) && since(t0) < s.value("timeout", 30.0)) {
       for (auto& [id, reply] : c->take()) {
         for (std::size_t k = 0; k < sent.size(); ++k) {
@@ -202,6 +213,7 @@ class Script {
     }
     out["sent"] = sent.size();
     out["replies"] = replies;
+    out["reply_ms"] = 1e3 * since(t0);
     out["foreign"] = c->foreign;
     out["response"] = first;
   }
@@ -321,6 +333,7 @@ class Script {
         vars_[s.value("as", "value")] = v;
         out["got"] = true;
         out["length"] = v.is_string() ? v.get<std::string>().size() : v.dump().size();
+        if (s.value("print", false)) out["value"] = v;
         return;
       }
       pump();
@@ -383,6 +396,7 @@ class Script {
   std::map<std::string, json> vars_;
   std::map<ServiceClient*, std::vector<std::pair<std::int64_t, json>>> stray_;
   std::vector<std::unique_ptr<TopicWriter>> writers_;
+  std::vector<std::unique_ptr<ServiceClient>> left_;  // calls not waited for
 };
 
 }  // namespace mechsim::ros2::peers

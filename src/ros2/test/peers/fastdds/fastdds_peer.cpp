@@ -636,8 +636,10 @@ int main(int argc, char** argv) {
     return topics[name] = pp->create_topic(name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   };
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
-  FastBackend backend(pp, publisher, subscriber, types_);
-  peers::Script runner(backend);  // lives to the end: its writers (publish) keep their samples
+  // The script's client lives to the end (its writers keep their samples), and goes before the
+  // participant's entities.
+  auto backend = std::make_unique<FastBackend>(pp, publisher, subscriber, types_);
+  auto runner = std::make_unique<peers::Script>(*backend);
   if (!script.empty()) {
     peers::json steps;
     try {
@@ -646,7 +648,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "fastdds_peer: --script: %s\n", e.what());
       return 2;
     }
-    if (const int rc = runner.run(steps); rc != 0) return rc;
+    if (const int rc = runner->run(steps); rc != 0) return rc;
   }
   for (const Request& rq_spec : requests) {
     // As rmw_fastrtps_cpp's client: request writer and reply reader (services' default QoS); the
@@ -814,6 +816,8 @@ int main(int argc, char** argv) {
                              {"last", s.count ? s.last_sample : json(nullptr)}}.dump().c_str());
   }
   for (const Pub& p : pubs) std::printf("%s\n", json{{"topic", p.topic}, {"published", p.sent}}.dump().c_str());
+  runner.reset();
+  backend.reset();
   pp->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(pp);
   return 0;
