@@ -81,6 +81,9 @@ FieldType parse_type(const std::string& t) {
   return f;
 }
 
+// The bound of every string type (see Types::primitive).
+constexpr std::uint32_t kStringBound = 1u << 20;
+
 class Types {
  public:
   explicit Types(const std::string& distro) : defs_(definitions(distro)) {}
@@ -114,7 +117,9 @@ class Types {
     if (t == "float64") return f->create_float64_type();
     if (t == "uint8") return f->create_byte_type();  // octet: the same byte on the wire
     if (t == "bool") return f->create_bool_type();
-    if (t == "string") return f->create_string_type();
+    // ROS 2 strings are unbounded (a description in /spawn_entity's xml or /robot_description is
+    // kilobytes): DynamicData refuses to set a string past its type's bound (255 by default).
+    if (t == "string") return f->create_string_type(kStringBound);
     return get(t);
   }
   types::DynamicType_ptr element(const FieldType& t) {
@@ -368,6 +373,15 @@ json command(const std::string& kind, const std::string& values) {
 // ---- the scripted client's middleware (../common/script.hpp): rmw_fastrtps_cpp's forms
 namespace peers = mechsim::ros2::peers;
 
+// A type support whose preallocated payload size is capped: the max serialized size Fast DDS
+// computes from kStringBound would be ~100 MB per sample for a string sequence; the payloads
+// are PREALLOCATED_WITH_REALLOC (rmw_fastrtps' policy), so a larger sample still goes.
+types::DynamicPubSubType* type_support(const types::DynamicType_ptr& type) {
+  auto* support = new types::DynamicPubSubType(type);
+  support->m_typeSize = std::min<std::uint32_t>(support->m_typeSize, 64 * 1024);
+  return support;
+}
+
 fdds::DataWriterQos writer_qos(peers::PeerQos q) {
   fdds::DataWriterQos wq = fdds::DATAWRITER_QOS_DEFAULT;
   wq.reliability().kind = q.reliable ? fdds::RELIABLE_RELIABILITY_QOS : fdds::BEST_EFFORT_RELIABILITY_QOS;
@@ -395,7 +409,7 @@ class FastBackend : public peers::Backend {
 
   fdds::Topic* topic(const std::string& dds_name, const std::string& type) {
     if (auto it = topics_.find(dds_name); it != topics_.end()) return it->second;
-    fdds::TypeSupport support(new types::DynamicPubSubType(types_.get(type)));
+    fdds::TypeSupport support(type_support(types_.get(type)));
     support->auto_fill_type_object(false);
     support->auto_fill_type_information(false);
     support.register_type(pp_);
@@ -629,7 +643,7 @@ int main(int argc, char** argv) {
     const std::string name = ros_topic[0] == '/' ? "rt" + ros_topic : ros_topic;
     if (auto it = topics.find(name); it != topics.end()) return it->second;
     types::DynamicType_ptr dt = types_.get(type);
-    fdds::TypeSupport support(new types::DynamicPubSubType(dt));
+    fdds::TypeSupport support(type_support(dt));
     support->auto_fill_type_object(false);
     support->auto_fill_type_information(false);
     support.register_type(pp);
