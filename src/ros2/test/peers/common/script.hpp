@@ -17,7 +17,11 @@
 //              "last_feedback", "statuses": every status seen for it on <action>/_action/status}
 //   take       {"topic", "type", "qos": "tl"|"rel"|"be", "field", "as": VAR, "timeout", "print"} one
 //              sample; its field becomes "$VAR" in later requests and goals -> {"got", "length",
-//              "value" (with "print": true)}
+//              "value" (with "print": true)}; "reader": NAME takes from a listen's reader instead
+//              of a fresh one; "all": true takes every sample until the timeout -> {"got": count,
+//              "values"}
+//   listen     {"topic", "type", "qos", "as": NAME} a reader kept for later takes (a volatile
+//              topic's samples written after it, e.g. /parameter_events)
 //   publish    {"topic", "type", "qos", "message"} once matched (kept until the script ends)
 //   sleep      {"seconds"}
 //   vanish     {} the process ends at once, as a crash: nothing closed, nothing said
@@ -142,6 +146,8 @@ class Script {
     else if (op == "cancel") cancel(s, out);
     else if (op == "result") result(s, out);
     else if (op == "take") take(s, out);
+    else if (op == "listen")
+      readers_[s.value("as", "reader")] = backend_.reader(s.at("topic"), s.at("type"), PeerQos::parse(s.value("qos", "rel")));
     else if (op == "publish") publish(s, out);
     else if (op == "sleep") pump_for(s.value("seconds", 1.0));
     else if (op == "vanish") {
@@ -324,8 +330,27 @@ class Script {
   }
 
   void take(const json& s, json& out) {
-    auto r = backend_.reader(s.at("topic"), s.at("type"), PeerQos::parse(s.value("qos", "rel")));
+    std::unique_ptr<TopicReader> fresh;
+    TopicReader* r = nullptr;
+    if (s.contains("reader")) {
+      const auto it = readers_.find(s["reader"].get<std::string>());
+      if (it == readers_.end()) throw std::runtime_error("no reader named " + s["reader"].dump());
+      r = it->second.get();
+    } else {
+      fresh = backend_.reader(s.at("topic"), s.at("type"), PeerQos::parse(s.value("qos", "rel")));
+      r = fresh.get();
+    }
     const auto t0 = clock::now();
+    if (s.value("all", false)) {
+      out["values"] = json::array();
+      while (since(t0) < s.value("timeout", 1.0)) {
+        for (const json& m : r->take()) out["values"].push_back(s.contains("field") ? m[s["field"].get<std::string>()] : m);
+        pump();
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      }
+      out["got"] = out["values"].size();
+      return;
+    }
     out["got"] = false;
     while (since(t0) < s.value("timeout", 10.0)) {
       for (const json& m : r->take()) {
@@ -396,6 +421,7 @@ class Script {
   std::map<std::string, json> vars_;
   std::map<ServiceClient*, std::vector<std::pair<std::int64_t, json>>> stray_;
   std::vector<std::unique_ptr<TopicWriter>> writers_;
+  std::map<std::string, std::unique_ptr<TopicReader>> readers_;  // listen's
   std::vector<std::unique_ptr<ServiceClient>> left_;  // calls not waited for
 };
 

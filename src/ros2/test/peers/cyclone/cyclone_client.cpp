@@ -236,14 +236,24 @@ class CycloneBackend : public peers::Backend {
     std::vector<std::pair<std::int64_t, json>> take() override {
       std::vector<std::pair<std::int64_t, json>> out;
       for (const RawSample& s : take_all(r_)) {
-        peers::CdrIn in(s.bytes.data(), s.bytes.size());
-        const auto id = in.get<std::uint64_t>();
-        const auto seq = in.get<std::int64_t>();
+        // Every reply on the topic reaches every client's reader: those to rmw_fastrtps clients
+        // (no header: too short, or a header that is not ours) are someone else's.
+        std::uint64_t id = 0;
+        std::int64_t seq = 0;
+        std::optional<peers::CdrIn> in;
+        try {
+          in.emplace(s.bytes.data(), s.bytes.size());
+          id = in->get<std::uint64_t>();
+          seq = in->get<std::int64_t>();
+        } catch (const std::exception&) {
+          ++foreign;
+          continue;
+        }
         if (id != client_id_) {
           ++foreign;
           continue;
         }
-        out.emplace_back(seq, b_.codec_.decode(rep_, in));
+        out.emplace_back(seq, b_.codec_.decode(rep_, *in));
       }
       return out;
     }
