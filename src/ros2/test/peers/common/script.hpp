@@ -4,7 +4,9 @@
 // clients, readers, writers carrying JSON), the script says what to do, one JSON line per step.
 //
 // --script '[STEP, ...]', each STEP an object with "op":
-//   call       {"service", "type": "pkg/srv/T", "request": {...}, "count": 1, "wait": true}
+//   call       {"service", "type": "pkg/srv/T", "request": {...}, "count": 1, "wait": true,
+//              "burst": count, "interval": 0} (count requests, written `burst` at a time back
+//              to back, `interval` seconds apart)
 //              -> {"available", "sent", "replies", "foreign", "response": the first reply, "ms",
 //              "reply_ms": from the first request written to the last reply};
 //              "wait": false sends and goes on (a call the client leaves, e.g. to vanish)
@@ -193,28 +195,43 @@ class Script {
     const bool available = wait_available(*c, 10.0);
     out["available"] = available;
     const int count = s.value("count", 1);
+    const int burst = s.value("burst", count);  // requests written back to back,
+    const double interval = s.value("interval", 0.0);  // then this long taking replies
     const json request = substitute(s.value("request", json::object()));
     std::vector<std::int64_t> sent;
-    for (int i = 0; available && i < count; ++i)
-      if (auto id = c->send(request)) sent.push_back(*id);
+    std::map<std::int64_t, bool> got;
+    int replies = 0;
+    json first;
+    auto collect = [&] {
+      for (auto& [id, reply] : c->take()) {
+        const auto it = got.find(id);
+        if (it == got.end() || it->second) continue;
+        it->second = true;
+        if (replies++ == 0) first = reply;
+      }
+      pump();
+    };
+    const auto t0 = clock::now();  // the replies' time, discovery not counted
+    for (int i = 0; available && i < count; ++i) {
+      if (i > 0 && burst > 0 && i % burst == 0) {
+        const auto b0 = clock::now();
+        while (since(b0) < interval) {
+          collect();
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+      }
+      if (auto id = c->send(request)) {
+        sent.push_back(*id);
+        got[*id] = false;
+      }
+    }
     if (!s.value("wait", true)) {
       out["sent"] = sent.size();
       left_.push_back(std::move(c));  // its endpoints stay: the call is still out
       return;
     }
-    int replies = 0;
-    json first;
-    std::vector<bool> got(sent.size(), false);
-    const auto t0 = clock::now();  // the replies' time, discovery not counted
     while (replies < static_cast<int>(sent.size()) && since(t0) < s.value("timeout", 30.0)) {
-      for (auto& [id, reply] : c->take()) {
-        for (std::size_t k = 0; k < sent.size(); ++k) {
-          if (sent[k] != id || got[k]) continue;
-          got[k] = true;
-          if (replies++ == 0) first = reply;
-        }
-      }
-      pump();
+      collect();
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     out["sent"] = sent.size();
