@@ -1,7 +1,7 @@
 // ros2_controllers' actions on the PR2, called by clients of both middlewares at once: the
 // Fast DDS peer (rmw_fastrtps' forms) sends FollowJointTrajectory goals to the right arm
 // (success within the goal tolerances, a path tolerance violated, cancel, preemption, a goal
-// refused) and a GripperCommand to the right gripper, while the Cyclone DDS client
+// refused, a goal tolerance violated) and a GripperCommand to the right gripper, while the Cyclone DDS client
 // (rmw_cyclonedds' in-payload header) sends, cancels and preempts goals on the left arm, violates
 // a path tolerance there and commands the left gripper. And a
 // client vanishing mid-action and mid-service leaves nothing behind. Humble and Jazzy.
@@ -66,6 +66,10 @@ TEST_P(ActionWire, Pr2ArmsAndGripperFromBothMiddlewares) {
   json fast_path = goal(kRight, {-0.4, 0.1, 0.0, -0.4, 0.0, -0.3, 0.0}, 0.5);
   fast_path["path_tolerance"] = json::array({{{"name", "r_shoulder_pan_joint"}, {"position", 0.0005}, {"velocity", 0.0}, {"acceleration", 0.0}}});
   json bad = goal({"no_such_joint"}, {0.1}, 1.0);
+  // A goal tolerance no servo meets, and 0.1 s past the trajectory's end to meet it.
+  json tight = goal(kRight, kHome, 0.5);
+  tight["goal_tolerance"] = tolerances(kRight, 1e-6);
+  tight["goal_time_tolerance"] = duration(0.1);
   const json right = {
       send("r_arm_controller", ok, "ok"),                                             // 0
       result("ok"),                                                                   // 1 SUCCEEDED
@@ -86,6 +90,8 @@ TEST_P(ActionWire, Pr2ArmsAndGripperFromBothMiddlewares) {
       {{"op", "send_goal"}, {"action", "/pr2/r_gripper_controller/gripper_cmd"}, {"type", "control_msgs/action/GripperCommand"},
        {"goal", {{"command", {{"position", 0.06}, {"max_effort", 100.0}}}}}, {"as", "grip"}},  // 16
       result("grip"),                                                                 // 17 SUCCEEDED, reached_goal
+      send("r_arm_controller", tight, "tight"),                                       // 18
+      result("tight"),                                                                // 19 ABORTED, -5
   };
   // The left arm and gripper from Cyclone DDS at the same time.
   json left_path = goal(kLeft, {-0.4, 0.1, 0.0, -0.4, 0.0, -0.3, 0.0}, 0.5);
@@ -179,6 +185,12 @@ TEST_P(ActionWire, Pr2ArmsAndGripperFromBothMiddlewares) {
   EXPECT_TRUE(r[17]["result"]["reached_goal"].get<bool>()) << r[17];
   // reached: within the PR2 gripper's goal_threshold (0.01 m) of the goal
   EXPECT_LT(std::abs(r[17]["result"]["position"].get<double>() - 0.06), 0.0101) << r[17];
+
+  // Beyond the goal tolerances once goal_time_tolerance is over: ABORTED, GOAL_TOLERANCE_VIOLATED.
+  EXPECT_TRUE(r[18]["accepted"].get<bool>()) << r[18];
+  EXPECT_EQ(r[19]["status"], 6) << r[19] << log;
+  EXPECT_EQ(r[19]["result"]["error_code"], -5) << r[19];
+  EXPECT_EQ(r[19]["result"]["error_string"].get<std::string>().rfind("Aborted due to goal tolerance violation", 0), 0u) << r[19];
 
   // Cyclone DDS, the left arm.
   EXPECT_EQ(l[0]["form"], "rmw_cyclonedds");
