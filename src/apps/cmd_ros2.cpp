@@ -273,6 +273,15 @@ void run(const Ros2Args& args, CommandResult& result) {
               simulated, wall, wall > 0.0 ? simulated / wall : 0.0, static_cast<unsigned long long>(node.clock_messages()),
               static_cast<unsigned long long>(s.tf_messages), static_cast<unsigned long long>(s.commands),
               static_cast<unsigned long long>(s.commands_rejected));
+  const ros2::ActionStats a = node.action_stats();
+  if (a.accepted + a.rejected > 0) {
+    std::printf("mechsim ros2: action goals: %llu accepted, %llu rejected; %llu succeeded, %llu canceled, %llu aborted; "
+                "results: %llu sent, %llu dropped (client gone), %zu requests waiting; %zu goals held\n",
+                static_cast<unsigned long long>(a.accepted), static_cast<unsigned long long>(a.rejected),
+                static_cast<unsigned long long>(a.succeeded), static_cast<unsigned long long>(a.canceled),
+                static_cast<unsigned long long>(a.aborted), static_cast<unsigned long long>(a.results_sent),
+                static_cast<unsigned long long>(a.results_dropped), a.results_waiting, a.goals_held);
+  }
   std::fflush(stdout);
   node.stop();
   result.exit_code = 0;

@@ -157,6 +157,10 @@ void ControllerManagerNode::make_controller_node(const std::string& name) {
   control::Params store = bridge_.controller_params().child_or_create(name);
   ParameterServer::Options options;
   options.read_only = {"type"};
+  // ros2_controllers declare every parameter of their type at load (generate_parameter_library),
+  // so the spawner's --param-file (Humble: set_parameters after load_controller) sets declared
+  // ones; mechsim knows no type's declarations, so a loaded controller's node takes any name.
+  options.allow_undeclared = true;
   controller_parameters_[name] = std::make_unique<ParameterServer>(*node, flatten_parameters(store, {}), store, options);
   controller_nodes_[name] = std::move(node);
 }

@@ -19,6 +19,8 @@
 //   ImuState          ~/imu               sensor_msgs/msg/Imu             (imu_sensor_broadcaster; with
 //                                                                           several IMUs ~/<sensor name>)
 //   TwistState        ~/cmd_vel_out       geometry_msgs/msg/TwistStamped  (publish_limited_velocity)
+//   TrajectoryGoal    ~/follow_joint_trajectory  control_msgs/action/FollowJointTrajectory (actions.hpp)
+//   GripperGoal       ~/gripper_cmd       control_msgs/action/GripperCommand (gripper_action_controller)
 // A controller parameter <port>_topic renames a topic (relative names resolve in the
 // controller's node). Subscriptions ask for best effort, volatile, keep last 1 (every writer
 // matches: qos.hpp); publishers offer what rmw_fastrtps makes of ros2_controllers'
@@ -31,6 +33,7 @@
 #include <mechsim_ros2_msgs/tf2_msgs.hpp>
 #include <mechsim_ros2_msgs/trajectory_msgs.hpp>
 
+#include "ros2/actions.hpp"
 #include "ros2/conversions.hpp"
 #include "ros2/sim_node.hpp"
 
@@ -46,6 +49,7 @@ struct SimNode::Binding {
   std::shared_ptr<Publisher<tf2_msgs::msg::TFMessage>> odom_tf;
   std::shared_ptr<Publisher<sensor_msgs::msg::Imu>> imu;
   std::shared_ptr<Publisher<geometry_msgs::msg::TwistStamped>> twist_out;
+  ControllerAction action;  // goal ports: the action server (polled by the SimNode's poller)
   double period = 0.0;  // s (sim time) between messages; 0: every new snapshot
   double next_due = 0.0;
   std::uint64_t sequence = 0;
@@ -176,19 +180,7 @@ void SimNode::bind(const std::string& controller) {
         b->subscription = subscribe_command_impl<trajectory_msgs::msg::JointTrajectory>(
             *node, topic, bindings_mutex_, lookup, commands_, commands_rejected_,
             [](const bridge::PortRef& p, const trajectory_msgs::msg::JointTrajectory& m, std::string* e) {
-              control::JointTrajectory t;
-              t.start_time = to_seconds(m.header.stamp);
-              t.joint_names = m.joint_names;
-              t.points.reserve(m.points.size());
-              for (const auto& in : m.points) {
-                control::TrajectoryPoint& out = t.points.emplace_back();
-                out.positions = in.positions;
-                out.velocities = in.velocities;
-                out.accelerations = in.accelerations;
-                out.effort = in.effort;
-                out.time_from_start = to_seconds(in.time_from_start);
-              }
-              return bridge::write_trajectory(p, t, e);
+              return bridge::write_trajectory(p, trajectory_of(m), e);
             });
         note(topic, "trajectory_msgs/msg/JointTrajectory, subscribed");
         break;
@@ -225,11 +217,21 @@ void SimNode::bind(const std::string& controller) {
         note(topic, "geometry_msgs/msg/TwistStamped");
         break;
       }
+      case bridge::PortType::TrajectoryGoal:
+      case bridge::PortType::GripperGoal: {
+        const std::string name = topic_for(default_action_name(port));
+        bridge::SimBridge* bridge = bridge_;
+        b->action = make_controller_action(*node, name, port, [bridge] { return bridge->time(); });
+        lines.push_back(b->action.name + " (" + b->action.type + " action, controller " + controller + ")");
+        break;
+      }
       default:
-        continue;  // state topics (control_msgs), actions and services: not on ROS 2 yet
+        continue;  // state topics (control_msgs) and services: not on ROS 2 yet
     }
     made.push_back(std::move(b));
   }
+  for (const auto& b : made)
+    if (b->action.server) poller_->add(b->action.server);
   std::lock_guard<std::mutex> lock(bindings_mutex_);
   for (auto& b : made) bindings_.push_back(std::move(b));
   controller_nodes_.push_back(std::move(node));
@@ -260,10 +262,52 @@ void SimNode::unbind(const std::string& controller) {
     const std::string tag = ", controller " + controller + ")";
     std::erase_if(topic_lines_, [&](const std::string& l) { return l.size() >= tag.size() && l.ends_with(tag); });
   }
-  // The endpoints go outside the lock: a command callback may be waiting for it, and deleting its
+  // The actions' goals end (CANCELED, as ros2_controllers' deactivation) before the port goes;
+  // the endpoints go outside the lock: a command callback may be waiting for it, and deleting its
   // reader waits for the callback.
+  for (const auto& b : removed) {
+    if (!b->action.server) continue;
+    poller_->remove(b->action.server.get());
+    b->action.shutdown("controller '" + controller + "' is unloading");
+  }
   removed.clear();
   node.reset();
+}
+
+ActionStats SimNode::action_stats() const {
+  std::vector<std::function<ActionStats()>> each;
+  {
+    std::lock_guard<std::mutex> lock(bindings_mutex_);
+    for (const auto& b : bindings_)
+      if (b->action.stats) each.push_back(b->action.stats);
+  }
+  ActionStats sum;
+  for (const auto& f : each) {
+    const ActionStats a = f();
+    sum.accepted += a.accepted;
+    sum.rejected += a.rejected;
+    sum.succeeded += a.succeeded;
+    sum.canceled += a.canceled;
+    sum.aborted += a.aborted;
+    sum.results_sent += a.results_sent;
+    sum.results_dropped += a.results_dropped;
+    sum.goals_held += a.goals_held;
+    sum.results_waiting += a.results_waiting;
+  }
+  return sum;
+}
+
+void SimNode::stop_actions(const std::string& why) {
+  std::vector<ControllerAction> actions;
+  {
+    std::lock_guard<std::mutex> lock(bindings_mutex_);
+    for (const auto& b : bindings_)
+      if (b->action.server) actions.push_back(b->action);
+  }
+  for (const ControllerAction& a : actions) {
+    poller_->remove(a.server.get());
+    a.shutdown(why);
+  }
 }
 
 void SimNode::publish_controller_states(double time) {

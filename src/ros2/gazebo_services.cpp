@@ -44,7 +44,7 @@ bool is_model(const bridge::World& world, const std::string& name) {
 // A deferred server whose requests run on `worker` in order; a full queue answers `busy`.
 template <class Srv, class Run>
 std::shared_ptr<void> serve(Node& node, const std::string& name, Worker& worker, Run run) {
-  auto server = std::make_shared<std::shared_ptr<ServiceServer<Srv>>>();
+  auto server = std::make_shared<std::weak_ptr<ServiceServer<Srv>>>();  // weak: no cycle through the handler
   auto made = std::make_shared<ServiceServer<Srv>>(
       node, name,
       typename ServiceServer<Srv>::DeferredHandler([server, &worker, run](const typename Srv::Request& request, const ReplyTo& to) {
@@ -70,12 +70,11 @@ void WorldNode::advertise_services() {
   Services& s = *services_;
   Node& gz = *gazebo_node_;
   Worker& w = *worker_;
-  // gazebo_ros_init (std_srvs/srv/Empty): quick, answered at once.
+  // gazebo_ros_init (std_srvs/srv/Empty). On the worker too, though quick: a handler on Fast DDS's
+  // receive thread must not wait for the world's lock, which a delete holds while it removes the
+  // model's DDS endpoints (and that waits for the receive thread: a deadlock).
   auto empty = [&](const char* name, std::function<void()> action) {
-    s.servers.push_back(std::make_shared<ServiceServer<Empty>>(gz, name, [action](const Empty::Request&, Empty::Response&) {
-      action();
-      return true;
-    }));
+    s.servers.push_back(serve<Empty>(gz, name, w, [action](const Empty::Request&, Empty::Response&) { action(); }));
   };
   empty("/pause_physics", [this] { world_.set_paused(true); });
   empty("/unpause_physics", [this] { world_.set_paused(false); });

@@ -188,7 +188,7 @@ ParameterServer::ParameterServer(Node& node, std::map<std::string, ParameterValu
           const auto it = values_.find(n);
           d.type = it == values_.end() ? ParameterType::PARAMETER_NOT_SET : it->second.type;
           d.read_only = std::find(options_.read_only.begin(), options_.read_only.end(), n) != options_.read_only.end();
-          d.dynamic_typing = options_.allow_undeclared && it == values_.end();
+          d.dynamic_typing = options_.allow_undeclared && (it == values_.end() || dynamic_.count(n) > 0);
           res.descriptors.push_back(d);
         }
         return true;
@@ -254,7 +254,7 @@ std::string ParameterServer::check(const std::string& name, const ParameterValue
   if (it == values_.end() && !options_.allow_undeclared)
     return "parameter '" + name + "' cannot be set because it was not declared";
   if (it != values_.end() && value.type != ParameterType::PARAMETER_NOT_SET && value.type != it->second.type &&
-      !options_.allow_undeclared) {
+      dynamic_.count(name) == 0) {
     return "Wrong parameter type, parameter {" + name + "} is of type {" + parameter_type_name(it->second.type) +
            "}, setting it to {" + parameter_type_name(value.type) + "} is not allowed.";
   }
@@ -272,10 +272,12 @@ void ParameterServer::take(const std::string& name, const ParameterValue& value,
     if (it != values_.end()) {
       p.value = it->second;
       values_.erase(it);
+      dynamic_.erase(name);
       deleted.push_back(p);
     }
     return;
   }
+  if (it == values_.end()) dynamic_.insert(name);
   (it == values_.end() ? added : changed).push_back(p);
   values_[name] = value;
   if (store_) {

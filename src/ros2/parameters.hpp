@@ -17,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,9 @@ class ParameterServer {
   std::optional<control::Params> store_;
   mutable std::mutex mutex_;
   std::map<std::string, ParameterValue> values_;
+  // Names first set while undeclared (allow_undeclared): any type later, as rclcpp's implicitly
+  // declared parameters; declared ones keep their type.
+  std::set<std::string> dynamic_;
   std::unique_ptr<Publisher<rcl_interfaces::msg::ParameterEvent>> events_;
   std::vector<std::shared_ptr<void>> servers_;
   std::vector<std::string> names_;

@@ -32,6 +32,8 @@
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -108,26 +110,43 @@ class ServiceServer {
   // Replies whose client was gone (see the header).
   std::uint64_t dropped() const { return dropped_.load(); }
 
+  // Whether the client of `to` is still there: its reply reader matched (rmw_fastrtps: the
+  // reader in the request's related_sample_identity; rmw_cyclonedds: a reader carrying its
+  // clientid). A client that named no reader counts as there.
+  bool client_alive(const ReplyTo& to) const {
+    if (to.form == ClientForm::FastRtps) return to.reply_reader == Guid{} || writer_->has_matched(to.reply_reader);
+    if (to.client.empty()) return true;
+    for (const Guid& r : participant_.remote_readers_with("clientid=" + to.client + ";"))
+      if (writer_->has_matched(r)) return true;
+    return false;
+  }
+
   // Sends `response` to the client of `to` (any thread). Waits at most 100 ms for the client's
   // reply reader to be matched (a reply to a reader not matched yet is lost); a client that is
   // gone gets nothing: false, counted in dropped().
   bool reply(const ReplyTo& to, const Response& response) {
-    bool matched = false;
-    for (int i = 0; i < 10 && !matched; ++i) {
-      if (to.form == ClientForm::FastRtps) {
-        matched = to.reply_reader == Guid{} || writer_->has_matched(to.reply_reader);
-      } else {
-        if (to.client.empty()) {
-          matched = true;  // no clientid to wait for: as rmw_cyclonedds, reply at once
-          break;
-        }
-        for (const Guid& r : participant_.remote_readers_with("clientid=" + to.client + ";"))
-          matched = matched || writer_->has_matched(r);
+    // A client not matched yet gets 100 ms (its reader may still be being discovered); one known
+    // to be gone (matched before and not now, or already waited for in vain) gets no wait, so a
+    // vanished client's queued requests cost nothing.
+    const std::string key = to.form == ClientForm::FastRtps ? guid_string(to.reply_reader) : "cyclone:" + to.client;
+    bool matched = client_alive(to);
+    if (!matched && !known(gone_, key) && !known(seen_, key)) {
+      for (int i = 0; i < 10 && !matched; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        matched = client_alive(to);
       }
-      if (!matched) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
+    remember(matched ? seen_ : gone_, key);
     if (!matched) {
-      dropped_.fetch_add(1);
+      const std::uint64_t n = dropped_.fetch_add(1) + 1;
+      // At most one line a second: a vanished client may have left many requests queued.
+      const auto now = std::chrono::steady_clock::now();
+      std::lock_guard<std::mutex> lock(clients_mutex_);
+      if (now - last_drop_log_ >= std::chrono::seconds(1)) {
+        last_drop_log_ = now;
+        participant_.log(name_ + ": the reply to " + to.who() + " was dropped: the client is gone (" + std::to_string(n) +
+                         " dropped so far)");
+      }
       return false;
     }
     if (to.form == ClientForm::FastRtps) {
@@ -212,6 +231,19 @@ class ServiceServer {
   std::string name_;
   std::unique_ptr<Writer> writer_;
   std::unique_ptr<Reader> reader_;
+  bool known(const std::set<std::string>& set, const std::string& key) const {
+    std::lock_guard<std::mutex> lock(clients_mutex_);
+    return set.count(key) > 0;
+  }
+  void remember(std::set<std::string>& set, const std::string& key) {
+    std::lock_guard<std::mutex> lock(clients_mutex_);
+    if (set.size() >= 4096) set.clear();  // bounded: forgetting costs at most one wait
+    set.insert(key);
+  }
+
+  mutable std::mutex clients_mutex_;
+  std::set<std::string> seen_, gone_;  // clients' readers matched at a reply, and not matched
+  std::chrono::steady_clock::time_point last_drop_log_{};
   std::atomic<std::uint64_t> served_[2] = {0, 0};
   std::atomic<std::uint64_t> dropped_{0};
 };

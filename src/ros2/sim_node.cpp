@@ -25,6 +25,7 @@ SimNode::SimNode(Participant& participant, Outbox& outbox, bridge::SimBridge& br
 }
 
 SimNode::~SimNode() {
+  stop_actions("the model is leaving the world");
   stop();
   manager_.reset();  // its services and actions first: they call into the bindings below
   std::vector<std::string> names;

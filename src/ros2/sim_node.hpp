@@ -27,6 +27,7 @@
 #include <mechsim_ros2_msgs/std_srvs.hpp>
 
 #include "bridge/sim_bridge.hpp"
+#include "ros2/action_server.hpp"
 #include "ros2/dds_participant.hpp"
 #include "ros2/node.hpp"
 #include "ros2/outbox.hpp"
@@ -95,6 +96,11 @@ class SimNode {
   // "topic (type)" per topic the node publishes or subscribes, for the start-up log.
   std::vector<std::string> topic_lines() const;
   NodeStats stats() const;
+  // Every action server of its controllers, summed.
+  ActionStats action_stats() const;
+  // Its action servers stop polling their ports and end their goals (CANCELED, `why` logged):
+  // before the model's simulation goes (the world stopping). Idempotent.
+  void stop_actions(const std::string& why);
 
  private:
   struct Binding;
@@ -110,6 +116,9 @@ class SimNode {
   std::unique_ptr<StatePublisher> state_;
   std::unique_ptr<SensorTopics> sensors_;
 
+  // Polls the controllers' action servers (20 Hz of wall time); before the bindings, which
+  // remove their servers from it.
+  std::unique_ptr<ActionPoller> poller_ = std::make_unique<ActionPoller>();
   mutable std::mutex bindings_mutex_;
   std::vector<std::shared_ptr<Binding>> bindings_;
   std::vector<std::unique_ptr<Node>> controller_nodes_;  // under bindings_mutex_

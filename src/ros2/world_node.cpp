@@ -38,6 +38,12 @@ void WorldNode::start() {
 }
 
 void WorldNode::stop() {
+  {
+    // The actions poll their controllers' ports on a thread of their own: they stop before the
+    // world lets go of the models' simulations.
+    std::lock_guard<std::mutex> lock(nodes_mutex_);
+    for (const auto& [name, node] : nodes_) node->stop_actions("the simulation is stopping");
+  }
   world_.stop();
   std::lock_guard<std::mutex> lock(nodes_mutex_);
   nodes_.clear();
@@ -83,6 +89,24 @@ void WorldNode::set_publishing(bool on) {
 
 std::uint64_t WorldNode::clock_messages() const { return outbox_->stats().clocks; }
 
+ActionStats WorldNode::action_stats() const {
+  std::lock_guard<std::mutex> lock(nodes_mutex_);
+  ActionStats sum;
+  for (const auto& [name, node] : nodes_) {
+    const ActionStats a = node->action_stats();
+    sum.accepted += a.accepted;
+    sum.rejected += a.rejected;
+    sum.succeeded += a.succeeded;
+    sum.canceled += a.canceled;
+    sum.aborted += a.aborted;
+    sum.results_sent += a.results_sent;
+    sum.results_dropped += a.results_dropped;
+    sum.goals_held += a.goals_held;
+    sum.results_waiting += a.results_waiting;
+  }
+  return sum;
+}
+
 void WorldNode::prepare_model(const bridge::ModelInfo& info, bridge::BridgeOptions& options) {
   std::lock_guard<std::mutex> lock(nodes_mutex_);
   const auto it = pending_.find(info.name);
@@ -115,7 +139,8 @@ void WorldNode::model_added(const bridge::ModelInfo& info, bridge::SimBridge& mo
 void WorldNode::model_removing(const bridge::ModelInfo& info, bridge::SimBridge&) {
   SimNode* node = model_node(info.name);
   if (node == nullptr) return;
-  // Its outputs off, then its controllers stopped and unloaded (topics first).
+  // Its actions end, its outputs off, then its controllers stopped and unloaded (topics first).
+  node->stop_actions("the model is being deleted");
   node->stop();
   const std::size_t unloaded = node->unload_all_controllers();
   participant_->log("deleting '" + info.name + "': " + std::to_string(unloaded) + " controllers stopped and unloaded");

@@ -74,6 +74,8 @@ class WorldNode : public bridge::WorldBinding {
   // Loop thread: called after each tick (--bench-rtf measures there).
   void set_tick_hook(std::function<void(double)> hook) { tick_hook_ = std::move(hook); }
   std::uint64_t clock_messages() const;
+  // Every model's action servers, summed (the end-of-run line, tests).
+  ActionStats action_stats() const;
 
   // ---- bridge::WorldBinding
   void prepare_model(const bridge::ModelInfo& info, bridge::BridgeOptions& options) override;

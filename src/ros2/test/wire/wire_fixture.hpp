@@ -85,6 +85,36 @@ class WireTest : public ::testing::Test {
     EXPECT_TRUE(status && *status == 0) << peers_.back()->output();
     return json_lines(peers_.back()->output());
   }
+  // The scripted clients (../peers/common/script.hpp): the Fast DDS peer (rmw_fastrtps' forms)
+  // and the Cyclone DDS client (rmw_cyclonedds' forms), started with `steps`; `extra` more
+  // arguments (the Fast DDS peer's --lease).
+  Process& start_fastdds_script(const std::string& distro, const nlohmann::json& steps, const std::string& name,
+                                std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv{std::string(MECHSIM_BINARY_DIR) + "/bin/fastdds_peer", "--domain", kDomain, "--distro",
+                                  distro, "--seconds", "0", "--script", steps.dump()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    peers_.push_back(std::make_unique<Process>(argv, dir_ + "/" + name + ".log"));
+    return *peers_.back();
+  }
+  Process& start_cyclone_script(const std::string& distro, const nlohmann::json& steps, const std::string& name,
+                                std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv{std::string(MECHSIM_BINARY_DIR) + "/bin/cyclone_client", "--domain", kDomain, "--distro",
+                                  distro, "--script", steps.dump()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    peers_.push_back(std::make_unique<Process>(argv, dir_ + "/" + name + ".log",
+                                               std::map<std::string, std::string>{{"CYCLONEDDS_URI", PrivateNetwork::cyclone_uri()}}));
+    return *peers_.back();
+  }
+  // The step lines of a finished scripted client (waits at most `timeout`), in order.
+  static std::vector<nlohmann::json> steps_of(Process& p, std::chrono::seconds timeout = std::chrono::seconds(90)) {
+    const auto status = p.wait(timeout);
+    EXPECT_TRUE(status && *status == 0) << p.output();
+    std::vector<nlohmann::json> out;
+    for (const auto& l : json_lines(p.output()))
+      if (l.contains("step")) out.push_back(l);
+    return out;
+  }
+
   // The @foxglove/ros2 peer (../peers/foxglove, node); empty with `skip` set when node or its
   // packages are not installed.
   std::vector<nlohmann::json> run_foxglove(const std::string& distro, std::vector<std::string> args, std::string* skip,

@@ -164,31 +164,43 @@ TEST_P(WorldServicesWire, ControllerManagerLifecycleAndParameters) {
   EXPECT_EQ(state_of(r[18], "mast_controller")["state"], "active") << r[18];
 }
 
-// 200 calls from 4 clients at once (50 each, written back to back), every reply matched to its
-// request; /clock's simulated time per wall second while they run and before.
+// 200 calls from 4 clients at once (two Fast DDS and two Cyclone DDS clients, 50 each in bursts
+// of 10 written back to back), every reply matched to its request; /clock's simulated time per
+// wall second while they run and before.
 TEST_P(WorldServicesWire, TwoHundredConcurrentCallsFromFourClients) {
   const std::string distro = GetParam();
   auto args = ros2bot_args();
   args.insert(args.end(), {"--ros-distro", distro, "--real-time-factor", "1"});
   start_mechsim(args);
-  const auto before = run_fastdds(distro, {"--sub", "/clock=clock:rel", "--seconds", "2"}, "clock_before");
+  const auto before = run_fastdds(distro, {"--sub", "/clock=clock:rel", "--seconds", "1.6"}, "clock_before");
+  // /clock from the moment the clients start: the calls span most of its 1.6 s (each client
+  // writes its 50 requests in 5 bursts of 10, 0.3 s apart, after ~0.2 s of discovery).
+  peers_.push_back(std::make_unique<Process>(
+      std::vector<std::string>{std::string(MECHSIM_BINARY_DIR) + "/bin/fastdds_peer", "--domain", kDomain, "--distro", distro,
+                               "--sub", "/clock=clock:rel", "--seconds", "1.6"},
+      dir_ + "/clock_during.log"));
+  Process& clock_during = *peers_.back();
+  // Two Fast DDS clients (rmw_fastrtps' form) and two Cyclone DDS clients (rmw_cyclonedds' form).
   std::vector<Process*> clients;
   for (int i = 0; i < 4; ++i) {
-    std::vector<std::string> argv{std::string(MECHSIM_BINARY_DIR) + "/bin/fastdds_peer", "--domain", kDomain, "--distro",
-                                  distro, "--seconds", "0.1"};
-    const std::string name = i % 2 == 0 ? "ros2bot" : "ros2bot::base_link";
-    request(argv, "/get_entity_state", "gazebo_msgs/srv/GetEntityState", {{"name", name}, {"reference_frame", ""}}, 50);
-    peers_.push_back(std::make_unique<Process>(argv, dir_ + "/client" + std::to_string(i) + ".log"));
-    clients.push_back(peers_.back().get());
+    const std::string name = i < 2 ? "ros2bot" : "ros2bot::base_link";
+    const nlohmann::json steps = {{{"op", "call"}, {"service", "/get_entity_state"}, {"type", "gazebo_msgs/srv/GetEntityState"},
+                                   {"request", {{"name", name}, {"reference_frame", ""}}}, {"count", 50}, {"burst", 10},
+                                   {"interval", 0.3}}};
+    const std::string log = "client" + std::to_string(i);
+    clients.push_back(i % 2 == 0 ? &start_fastdds_script(distro, steps, log) : &start_cyclone_script(distro, steps, log));
   }
-  const auto during = run_fastdds(distro, {"--sub", "/clock=clock:rel", "--seconds", "2"}, "clock_during");
+  const auto clock_status = clock_during.wait(std::chrono::seconds(30));
+  EXPECT_TRUE(clock_status && *clock_status == 0) << clock_during.output();
+  const auto during = json_lines(clock_during.output());
   int correct = 0;
   for (Process* c : clients) {
     const auto status = c->wait(std::chrono::seconds(60));
     ASSERT_TRUE(status && *status == 0) << c->output();
     for (const auto& l : replies(json_lines(c->output()))) {
       // Every reply goes to every client's reply reader (Fast DDS has no directed write); each
-      // client keeps those whose related_sample_identity is one of its requests, as rmw_fastrtps'.
+      // client keeps its own: rmw_fastrtps' by related_sample_identity, rmw_cyclonedds' by the
+      // client id in the 16-byte header.
       EXPECT_EQ(l["sent"], 50) << l;
       EXPECT_EQ(l["replies"], 50) << l;
       if (l["response"]["success"].get<bool>()) correct += l["replies"].get<int>();

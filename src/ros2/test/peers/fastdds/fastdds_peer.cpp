@@ -1,8 +1,8 @@
 // A ROS 2 peer on eProsima Fast DDS (Debian's libfastrtps-dev: the library under
 // rmw_fastrtps_cpp) for mechsim's ROS 2 wire tests. Its messages are Fast DDS's own DynamicData,
-// built at run time from the official ROS 2 field lists below and serialized by Fast DDS: nothing
-// of mechsim's generated message code. Same command line and JSON-lines output as the Cyclone
-// peer (../cyclone/cyclone_peer.c):
+// built at run time from the official ROS 2 field lists (fast_types.hpp) and serialized by Fast
+// DDS: nothing of mechsim's generated message code. Same command line and JSON-lines output as
+// the Cyclone peer (../cyclone/cyclone_peer.c):
 //
 //   fastdds_peer --domain D --seconds S [--distro humble|jazzy]
 //       [--sub TOPIC=KIND[:QOS]]...   KIND: clock tf tf_static joint_state laser image camera_info
@@ -14,6 +14,9 @@
 //                                     its related_sample_identity), in order, before --call;
 //                                     prints {"service","form","available","replies","sent",
 //                                     "response" (the first reply, decoded),"ms"}
+//       [--script JSON]               a scripted client (../common/script.hpp: service calls, action
+//                                     goals, cancels, results, topics), first of all
+//       [--lease S]                   the participant's lease (Fast DDS's default: 20 s)
 //       [--call SERVICE=empty]...     call a std_srvs/srv/Empty service first, as an rmw_fastrtps_cpp
 //                                     client does (reply reader GUID as the request's
 //                                     related_sample_identity; the reply matched by its
@@ -48,329 +51,21 @@
 #include <fastrtps/types/DynamicTypeBuilderPtr.h>
 #include <nlohmann/json.hpp>
 
+#include "../common/ros2_definitions.hpp"
+#include "../common/script.hpp"
+#include "fast_backend.hpp"
+#include "fast_types.hpp"
+
 namespace fdds = eprosima::fastdds::dds;
 namespace types = eprosima::fastrtps::types;
 using nlohmann::json;
 
 namespace {
 
-// ROS 2 message fields, from the official .msg files (Humble and Jazzy have the same ones, but
-// rmw_dds_common/Gid: 24 bytes in Humble, 16 from Iron on).
-using Fields = std::vector<std::pair<std::string, std::string>>;
-std::map<std::string, Fields> definitions(const std::string& distro) {
-  return {
-      {"builtin_interfaces/Time", {{"sec", "int32"}, {"nanosec", "uint32"}}},
-      {"builtin_interfaces/Duration", {{"sec", "int32"}, {"nanosec", "uint32"}}},
-      {"rosgraph_msgs/Clock", {{"clock", "builtin_interfaces/Time"}}},
-      {"std_msgs/Header", {{"stamp", "builtin_interfaces/Time"}, {"frame_id", "string"}}},
-      {"std_msgs/String", {{"data", "string"}}},
-      {"std_msgs/MultiArrayDimension", {{"label", "string"}, {"size", "uint32"}, {"stride", "uint32"}}},
-      {"std_msgs/MultiArrayLayout", {{"dim", "std_msgs/MultiArrayDimension[]"}, {"data_offset", "uint32"}}},
-      {"std_msgs/Float64MultiArray", {{"layout", "std_msgs/MultiArrayLayout"}, {"data", "float64[]"}}},
-      {"geometry_msgs/Vector3", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}}},
-      {"geometry_msgs/Point", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}}},
-      {"geometry_msgs/Quaternion", {{"x", "float64"}, {"y", "float64"}, {"z", "float64"}, {"w", "float64"}}},
-      {"geometry_msgs/Pose", {{"position", "geometry_msgs/Point"}, {"orientation", "geometry_msgs/Quaternion"}}},
-      {"geometry_msgs/PoseWithCovariance", {{"pose", "geometry_msgs/Pose"}, {"covariance", "float64[36]"}}},
-      {"geometry_msgs/Twist", {{"linear", "geometry_msgs/Vector3"}, {"angular", "geometry_msgs/Vector3"}}},
-      {"geometry_msgs/TwistStamped", {{"header", "std_msgs/Header"}, {"twist", "geometry_msgs/Twist"}}},
-      {"geometry_msgs/TwistWithCovariance", {{"twist", "geometry_msgs/Twist"}, {"covariance", "float64[36]"}}},
-      {"geometry_msgs/Transform", {{"translation", "geometry_msgs/Vector3"}, {"rotation", "geometry_msgs/Quaternion"}}},
-      {"geometry_msgs/TransformStamped",
-       {{"header", "std_msgs/Header"}, {"child_frame_id", "string"}, {"transform", "geometry_msgs/Transform"}}},
-      {"tf2_msgs/TFMessage", {{"transforms", "geometry_msgs/TransformStamped[]"}}},
-      {"sensor_msgs/JointState",
-       {{"header", "std_msgs/Header"}, {"name", "string[]"}, {"position", "float64[]"}, {"velocity", "float64[]"},
-        {"effort", "float64[]"}}},
-      {"sensor_msgs/LaserScan",
-       {{"header", "std_msgs/Header"}, {"angle_min", "float32"}, {"angle_max", "float32"}, {"angle_increment", "float32"},
-        {"time_increment", "float32"}, {"scan_time", "float32"}, {"range_min", "float32"}, {"range_max", "float32"},
-        {"ranges", "float32[]"}, {"intensities", "float32[]"}}},
-      {"sensor_msgs/Image",
-       {{"header", "std_msgs/Header"}, {"height", "uint32"}, {"width", "uint32"}, {"encoding", "string"},
-        {"is_bigendian", "uint8"}, {"step", "uint32"}, {"data", "uint8[]"}}},
-      {"sensor_msgs/RegionOfInterest",
-       {{"x_offset", "uint32"}, {"y_offset", "uint32"}, {"height", "uint32"}, {"width", "uint32"}, {"do_rectify", "bool"}}},
-      {"sensor_msgs/CameraInfo",
-       {{"header", "std_msgs/Header"}, {"height", "uint32"}, {"width", "uint32"}, {"distortion_model", "string"},
-        {"d", "float64[]"}, {"k", "float64[9]"}, {"r", "float64[9]"}, {"p", "float64[12]"}, {"binning_x", "uint32"},
-        {"binning_y", "uint32"}, {"roi", "sensor_msgs/RegionOfInterest"}}},
-      {"sensor_msgs/Imu",
-       {{"header", "std_msgs/Header"}, {"orientation", "geometry_msgs/Quaternion"}, {"orientation_covariance", "float64[9]"},
-        {"angular_velocity", "geometry_msgs/Vector3"}, {"angular_velocity_covariance", "float64[9]"},
-        {"linear_acceleration", "geometry_msgs/Vector3"}, {"linear_acceleration_covariance", "float64[9]"}}},
-      {"nav_msgs/Odometry",
-       {{"header", "std_msgs/Header"}, {"child_frame_id", "string"}, {"pose", "geometry_msgs/PoseWithCovariance"},
-        {"twist", "geometry_msgs/TwistWithCovariance"}}},
-      {"trajectory_msgs/JointTrajectoryPoint",
-       {{"positions", "float64[]"}, {"velocities", "float64[]"}, {"accelerations", "float64[]"}, {"effort", "float64[]"},
-        {"time_from_start", "builtin_interfaces/Duration"}}},
-      {"trajectory_msgs/JointTrajectory",
-       {{"header", "std_msgs/Header"}, {"joint_names", "string[]"}, {"points", "trajectory_msgs/JointTrajectoryPoint[]"}}},
-      {"std_srvs/srv/Empty_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"std_srvs/srv/Empty_Response", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"rmw_dds_common/Gid", {{"data", distro == "humble" ? "uint8[24]" : "uint8[16]"}}},
-      // Services of issue 37, from the official definitions (gazebo_ros_pkgs ros2, ros2_control
-      // humble and jazzy, rcl_interfaces, action_msgs, control_msgs).
-      {"geometry_msgs/Pose", {{"position", "geometry_msgs/Point"}, {"orientation", "geometry_msgs/Quaternion"}}},
-      {"gazebo_msgs/EntityState",
-       {{"name", "string"}, {"pose", "geometry_msgs/Pose"}, {"twist", "geometry_msgs/Twist"}, {"reference_frame", "string"}}},
-      {"gazebo_msgs/srv/SpawnEntity_Request",
-       {{"name", "string"}, {"xml", "string"}, {"robot_namespace", "string"}, {"initial_pose", "geometry_msgs/Pose"},
-        {"reference_frame", "string"}}},
-      {"gazebo_msgs/srv/SpawnEntity_Response", {{"success", "bool"}, {"status_message", "string"}}},
-      {"gazebo_msgs/srv/DeleteEntity_Request", {{"name", "string"}}},
-      {"gazebo_msgs/srv/DeleteEntity_Response", {{"success", "bool"}, {"status_message", "string"}}},
-      {"gazebo_msgs/srv/GetEntityState_Request", {{"name", "string"}, {"reference_frame", "string"}}},
-      {"gazebo_msgs/srv/GetEntityState_Response",
-       {{"header", "std_msgs/Header"}, {"state", "gazebo_msgs/EntityState"}, {"success", "bool"}}},
-      {"gazebo_msgs/srv/SetEntityState_Request", {{"state", "gazebo_msgs/EntityState"}}},
-      {"gazebo_msgs/srv/SetEntityState_Response", {{"success", "bool"}}},
-      {"gazebo_msgs/srv/GetModelList_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"gazebo_msgs/srv/GetModelList_Response", {{"header", "std_msgs/Header"}, {"model_names", "string[]"}, {"success", "bool"}}},
-      {"controller_manager_msgs/ChainConnection", {{"name", "string"}, {"reference_interfaces", "string[]"}}},
-      {"controller_manager_msgs/ControllerState",
-       distro == "humble"
-           ? Fields{{"name", "string"}, {"state", "string"}, {"type", "string"}, {"claimed_interfaces", "string[]"},
-                    {"required_command_interfaces", "string[]"}, {"required_state_interfaces", "string[]"},
-                    {"is_chainable", "bool"}, {"is_chained", "bool"},
-                    {"chain_connections", "controller_manager_msgs/ChainConnection[]"}}
-           : Fields{{"name", "string"}, {"state", "string"}, {"type", "string"}, {"claimed_interfaces", "string[]"},
-                    {"required_command_interfaces", "string[]"}, {"required_state_interfaces", "string[]"},
-                    {"is_chainable", "bool"}, {"is_chained", "bool"}, {"exported_state_interfaces", "string[]"},
-                    {"reference_interfaces", "string[]"}, {"chain_connections", "controller_manager_msgs/ChainConnection[]"}}},
-      {"controller_manager_msgs/HardwareInterface", {{"name", "string"}, {"is_available", "bool"}, {"is_claimed", "bool"}}},
-      {"lifecycle_msgs/State", {{"id", "uint8"}, {"label", "string"}}},
-      {"controller_manager_msgs/HardwareComponentState",
-       {{"name", "string"}, {"type", "string"}, {distro == "humble" ? "class_type" : "plugin_name", "string"},
-        {"state", "lifecycle_msgs/State"}, {"command_interfaces", "controller_manager_msgs/HardwareInterface[]"},
-        {"state_interfaces", "controller_manager_msgs/HardwareInterface[]"}}},
-      {"controller_manager_msgs/srv/ListControllers_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListControllers_Response", {{"controller", "controller_manager_msgs/ControllerState[]"}}},
-      {"controller_manager_msgs/srv/ListControllerTypes_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListControllerTypes_Response", {{"types", "string[]"}, {"base_classes", "string[]"}}},
-      {"controller_manager_msgs/srv/ListHardwareInterfaces_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListHardwareInterfaces_Response",
-       {{"command_interfaces", "controller_manager_msgs/HardwareInterface[]"},
-        {"state_interfaces", "controller_manager_msgs/HardwareInterface[]"}}},
-      {"controller_manager_msgs/srv/ListHardwareComponents_Request", {{"structure_needs_at_least_one_member", "uint8"}}},
-      {"controller_manager_msgs/srv/ListHardwareComponents_Response",
-       {{"component", "controller_manager_msgs/HardwareComponentState[]"}}},
-      {"controller_manager_msgs/srv/LoadController_Request", {{"name", "string"}}},
-      {"controller_manager_msgs/srv/LoadController_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/ConfigureController_Request", {{"name", "string"}}},
-      {"controller_manager_msgs/srv/ConfigureController_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/UnloadController_Request", {{"name", "string"}}},
-      {"controller_manager_msgs/srv/UnloadController_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/ReloadControllerLibraries_Request", {{"force_kill", "bool"}}},
-      {"controller_manager_msgs/srv/ReloadControllerLibraries_Response", {{"ok", "bool"}}},
-      {"controller_manager_msgs/srv/SetHardwareComponentState_Request", {{"name", "string"}, {"target_state", "lifecycle_msgs/State"}}},
-      {"controller_manager_msgs/srv/SetHardwareComponentState_Response", {{"ok", "bool"}, {"state", "lifecycle_msgs/State"}}},
-      {"controller_manager_msgs/srv/SwitchController_Request",
-       distro == "humble"
-           ? Fields{{"activate_controllers", "string[]"}, {"deactivate_controllers", "string[]"},
-                    {"start_controllers", "string[]"}, {"stop_controllers", "string[]"}, {"strictness", "int32"},
-                    {"activate_asap", "bool"}, {"start_asap", "bool"}, {"timeout", "builtin_interfaces/Duration"}}
-           : Fields{{"activate_controllers", "string[]"}, {"deactivate_controllers", "string[]"}, {"strictness", "int32"},
-                    {"activate_asap", "bool"}, {"timeout", "builtin_interfaces/Duration"}}},
-      {"controller_manager_msgs/srv/SwitchController_Response", {{"ok", "bool"}}},
-      {"rcl_interfaces/ParameterValue",
-       {{"type", "uint8"}, {"bool_value", "bool"}, {"integer_value", "int64"}, {"double_value", "float64"},
-        {"string_value", "string"}, {"byte_array_value", "uint8[]"}, {"bool_array_value", "bool[]"},
-        {"integer_array_value", "int64[]"}, {"double_array_value", "float64[]"}, {"string_array_value", "string[]"}}},
-      {"rcl_interfaces/Parameter", {{"name", "string"}, {"value", "rcl_interfaces/ParameterValue"}}},
-      {"rcl_interfaces/SetParametersResult", {{"successful", "bool"}, {"reason", "string"}}},
-      {"rcl_interfaces/ListParametersResult", {{"names", "string[]"}, {"prefixes", "string[]"}}},
-      {"rcl_interfaces/FloatingPointRange", {{"from_value", "float64"}, {"to_value", "float64"}, {"step", "float64"}}},
-      {"rcl_interfaces/IntegerRange", {{"from_value", "int64"}, {"to_value", "int64"}, {"step", "uint64"}}},
-      {"rcl_interfaces/ParameterDescriptor",
-       {{"name", "string"}, {"type", "uint8"}, {"description", "string"}, {"additional_constraints", "string"},
-        {"read_only", "bool"}, {"dynamic_typing", "bool"}, {"floating_point_range", "rcl_interfaces/FloatingPointRange[]"},
-        {"integer_range", "rcl_interfaces/IntegerRange[]"}}},
-      {"rcl_interfaces/srv/ListParameters_Request", {{"prefixes", "string[]"}, {"depth", "uint64"}}},
-      {"rcl_interfaces/srv/ListParameters_Response", {{"result", "rcl_interfaces/ListParametersResult"}}},
-      {"rcl_interfaces/srv/GetParameters_Request", {{"names", "string[]"}}},
-      {"rcl_interfaces/srv/GetParameters_Response", {{"values", "rcl_interfaces/ParameterValue[]"}}},
-      {"rcl_interfaces/srv/SetParameters_Request", {{"parameters", "rcl_interfaces/Parameter[]"}}},
-      {"rcl_interfaces/srv/SetParameters_Response", {{"results", "rcl_interfaces/SetParametersResult[]"}}},
-      {"rcl_interfaces/srv/DescribeParameters_Request", {{"names", "string[]"}}},
-      {"rcl_interfaces/srv/DescribeParameters_Response", {{"descriptors", "rcl_interfaces/ParameterDescriptor[]"}}},
-      {"rcl_interfaces/srv/GetParameterTypes_Request", {{"names", "string[]"}}},
-      {"rcl_interfaces/srv/GetParameterTypes_Response", {{"types", "uint8[]"}}},
-      {"rmw_dds_common/NodeEntitiesInfo",
-       {{"node_namespace", "string"}, {"node_name", "string"}, {"reader_gid_seq", "rmw_dds_common/Gid[]"},
-        {"writer_gid_seq", "rmw_dds_common/Gid[]"}}},
-      {"rmw_dds_common/ParticipantEntitiesInfo",
-       {{"gid", "rmw_dds_common/Gid"}, {"node_entities_info_seq", "rmw_dds_common/NodeEntitiesInfo[]"}}},
-  };
-}
-
-struct FieldType {
-  std::string base;  // int32, float64, string, pkg/Name, ...
-  enum { Single, Array, Sequence } container = Single;
-  std::uint32_t size = 0;
-};
-
-FieldType parse_type(const std::string& t) {
-  FieldType f;
-  const auto bracket = t.find('[');
-  f.base = t.substr(0, bracket);
-  if (bracket != std::string::npos) {
-    const std::string inside = t.substr(bracket + 1, t.size() - bracket - 2);
-    f.container = inside.empty() ? FieldType::Sequence : FieldType::Array;
-    if (!inside.empty()) f.size = static_cast<std::uint32_t>(std::stoul(inside));
-  }
-  return f;
-}
-
-class Types {
- public:
-  explicit Types(const std::string& distro) : defs_(definitions(distro)) {}
-  // The DynamicType of a message ("sensor_msgs/Image"), named as rmw names it on the wire.
-  types::DynamicType_ptr get(const std::string& name) {
-    if (auto it = built_.find(name); it != built_.end()) return it->second;
-    auto* f = types::DynamicTypeBuilderFactory::get_instance();
-    types::DynamicTypeBuilder_ptr b = f->create_struct_builder();
-    // "pkg/Name" is a message (pkg::msg::dds_::Name_), "pkg/srv/Name_Request" a service's part.
-    const auto slash = name.find('/');
-    const bool srv = name.find("/srv/") != std::string::npos;
-    const bool action = name.find("/action/") != std::string::npos;
-    b->set_name(name.substr(0, slash) + (srv ? "::srv::dds_::" : action ? "::action::dds_::" : "::msg::dds_::") +
-                name.substr(name.rfind('/') + 1) + "_");
-    types::MemberId id = 0;
-    for (const auto& [field, type] : defs_.at(name)) b->add_member(id++, field, element(parse_type(type)));
-    return built_[name] = b->build();
-  }
-  const Fields& fields(const std::string& name) const { return defs_.at(name); }
-
- private:
-  types::DynamicType_ptr primitive(const std::string& t) {
-    auto* f = types::DynamicTypeBuilderFactory::get_instance();
-    if (t == "int32") return f->create_int32_type();
-    if (t == "int64") return f->create_int64_type();
-    if (t == "uint64") return f->create_uint64_type();
-    if (t == "uint16") return f->create_uint16_type();
-    if (t == "int8") return f->create_char8_type();  // one byte on the wire
-    if (t == "uint32") return f->create_uint32_type();
-    if (t == "float32") return f->create_float32_type();
-    if (t == "float64") return f->create_float64_type();
-    if (t == "uint8") return f->create_byte_type();  // octet: the same byte on the wire
-    if (t == "bool") return f->create_bool_type();
-    if (t == "string") return f->create_string_type();
-    return get(t);
-  }
-  types::DynamicType_ptr element(const FieldType& t) {
-    auto* f = types::DynamicTypeBuilderFactory::get_instance();
-    types::DynamicType_ptr e = primitive(t.base);
-    if (t.container == FieldType::Array) return f->create_array_builder(e, {t.size})->build();
-    if (t.container == FieldType::Sequence) return f->create_sequence_builder(e)->build();
-    return e;
-  }
-  std::map<std::string, Fields> defs_;
-  std::map<std::string, types::DynamicType_ptr> built_;
-};
-
-// ---- DynamicData <-> JSON, field by field along the definitions
-json read_value(Types& t, types::DynamicData* d, types::MemberId id, const std::string& base) {
-  if (base == "int32") return d->get_int32_value(id);
-  if (base == "int64") return d->get_int64_value(id);
-  if (base == "uint64") return d->get_uint64_value(id);
-  if (base == "uint16") return d->get_uint16_value(id);
-  if (base == "int8") return static_cast<int>(static_cast<signed char>(d->get_char8_value(id)));
-  if (base == "uint32") return d->get_uint32_value(id);
-  if (base == "float32") return d->get_float32_value(id);
-  if (base == "float64") return d->get_float64_value(id);
-  if (base == "uint8") return d->get_byte_value(id);
-  if (base == "bool") return d->get_bool_value(id);
-  if (base == "string") return d->get_string_value(id);
-  types::DynamicData* nested = d->loan_value(id);
-  json out = json::object();
-  types::MemberId k = 0;
-  for (const auto& [field, type] : t.fields(base)) {
-    const FieldType ft = parse_type(type);
-    if (ft.container == FieldType::Single) {
-      out[field] = read_value(t, nested, k, ft.base);
-    } else {
-      types::DynamicData* seq = nested->loan_value(k);
-      json items = json::array();
-      for (std::uint32_t i = 0; i < seq->get_item_count(); ++i) items.push_back(read_value(t, seq, i, ft.base));
-      nested->return_loaned_value(seq);
-      out[field] = items;
-    }
-    ++k;
-  }
-  d->return_loaned_value(nested);
-  return out;
-}
-
-json read_message(Types& t, types::DynamicData* d, const std::string& name) {
-  json out = json::object();
-  types::MemberId k = 0;
-  for (const auto& [field, type] : t.fields(name)) {
-    const FieldType ft = parse_type(type);
-    if (ft.container == FieldType::Single) {
-      out[field] = read_value(t, d, k, ft.base);
-    } else {
-      types::DynamicData* seq = d->loan_value(k);
-      json items = json::array();
-      for (std::uint32_t i = 0; i < seq->get_item_count(); ++i) items.push_back(read_value(t, seq, i, ft.base));
-      d->return_loaned_value(seq);
-      out[field] = items;
-    }
-    ++k;
-  }
-  return out;
-}
-
-void write_message(Types& t, types::DynamicData* d, const std::string& name, const json& v);
-
-void write_value(Types& t, types::DynamicData* d, types::MemberId id, const std::string& base, const json& v) {
-  if (base == "int32") d->set_int32_value(v.get<std::int32_t>(), id);
-  else if (base == "int64") d->set_int64_value(v.get<std::int64_t>(), id);
-  else if (base == "uint64") d->set_uint64_value(v.get<std::uint64_t>(), id);
-  else if (base == "uint16") d->set_uint16_value(v.get<std::uint16_t>(), id);
-  else if (base == "int8") d->set_char8_value(static_cast<char>(v.get<int>()), id);
-  else if (base == "uint32") d->set_uint32_value(v.get<std::uint32_t>(), id);
-  else if (base == "float32") d->set_float32_value(v.get<float>(), id);
-  else if (base == "float64") d->set_float64_value(v.get<double>(), id);
-  else if (base == "string") d->set_string_value(v.get<std::string>(), id);
-  else if (base == "bool") d->set_bool_value(v.get<bool>(), id);
-  else if (base == "uint8") d->set_byte_value(v.get<std::uint8_t>(), id);
-  else {
-    types::DynamicData* nested = d->loan_value(id);
-    write_message(t, nested, base, v);
-    d->return_loaned_value(nested);
-  }
-}
-
-void write_message(Types& t, types::DynamicData* d, const std::string& name, const json& v) {
-  types::MemberId k = 0;
-  for (const auto& [field, type] : t.fields(name)) {
-    const FieldType ft = parse_type(type);
-    if (v.contains(field)) {
-      if (ft.container == FieldType::Single) {
-        write_value(t, d, k, ft.base, v[field]);
-      } else if (ft.container == FieldType::Sequence) {
-        types::DynamicData* seq = d->loan_value(k);
-        for (const json& item : v[field]) {
-          types::MemberId index = 0;
-          if (ft.base == "float64") seq->insert_float64_value(item.get<double>(), index);
-          else if (ft.base == "string") seq->insert_string_value(item.get<std::string>(), index);
-          else if (ft.base == "int64") seq->insert_int64_value(item.get<std::int64_t>(), index);
-          else if (ft.base == "bool") seq->insert_bool_value(item.get<bool>(), index);
-          else if (ft.base == "uint8") seq->insert_byte_value(item.get<std::uint8_t>(), index);
-          else {
-            types::DynamicData* element = types::DynamicDataFactory::get_instance()->create_data(t.get(ft.base));
-            write_message(t, element, ft.base, item);
-            seq->insert_complex_value(element, index);
-          }
-        }
-        d->return_loaned_value(seq);
-      }
-    }
-    ++k;
-  }
-}
+using mechsim::ros2::peers::Fields;
+using mechsim::ros2::peers::definitions;
+using namespace mechsim::ros2::peers::fast;  // Types, DynamicData <-> JSON, FastBackend
+namespace peers = mechsim::ros2::peers;
 
 // ---- what a test checks, in the Cyclone peer's form
 json time_of(const json& t) { return {{"sec", t["sec"]}, {"nanosec", t["nanosec"]}}; }
@@ -502,6 +197,8 @@ json command(const std::string& kind, const std::string& values) {
   return json::object();
 }
 
+
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -532,6 +229,8 @@ int main(int argc, char** argv) {
     int count = 1;
   };
   std::vector<Request> requests;
+  std::string script;
+  double lease = 0.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
@@ -539,6 +238,8 @@ int main(int argc, char** argv) {
     else if (a == "--seconds" && more) seconds = std::atof(argv[++i]);
     else if (a == "--rate" && more) rate = std::atof(argv[++i]);
     else if (a == "--distro" && more) distro = argv[++i];
+    else if (a == "--script" && more) script = argv[++i];
+    else if (a == "--lease" && more) lease = std::atof(argv[++i]);
     else if (a == "--request" && more) {
       const std::string spec = argv[++i];
       const auto eq1 = spec.find('=');
@@ -590,6 +291,13 @@ int main(int argc, char** argv) {
   pq.name("fastdds_peer");
   const std::string enclave = "enclave=/;";
   pq.user_data().data_vec(std::vector<eprosima::fastrtps::rtps::octet>(enclave.begin(), enclave.end()));
+  if (lease > 0.0) {
+    // A short lease: a peer that vanishes (the tests' crash) is noticed in `lease` seconds, not
+    // Fast DDS's default 20.
+    auto& discovery = pq.wire_protocol().builtin.discovery_config;
+    discovery.leaseDuration = eprosima::fastrtps::Duration_t(lease);
+    discovery.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(lease / 4.0);
+  }
   fdds::DomainParticipant* pp = fdds::DomainParticipantFactory::get_instance()->create_participant(domain, pq);
   if (pp == nullptr) {
     std::fprintf(stderr, "fastdds_peer: no participant\n");
@@ -602,13 +310,27 @@ int main(int argc, char** argv) {
     const std::string name = ros_topic[0] == '/' ? "rt" + ros_topic : ros_topic;
     if (auto it = topics.find(name); it != topics.end()) return it->second;
     types::DynamicType_ptr dt = types_.get(type);
-    fdds::TypeSupport support(new types::DynamicPubSubType(dt));
+    fdds::TypeSupport support(type_support(dt));
     support->auto_fill_type_object(false);
     support->auto_fill_type_information(false);
     support.register_type(pp);
     return topics[name] = pp->create_topic(name, support.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   };
   auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+  // The script's client lives to the end (its writers keep their samples), and goes before the
+  // participant's entities.
+  auto backend = std::make_unique<FastBackend>(pp, publisher, subscriber, types_);
+  auto runner = std::make_unique<peers::Script>(*backend);
+  if (!script.empty()) {
+    peers::json steps;
+    try {
+      steps = peers::json::parse(script);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "fastdds_peer: --script: %s\n", e.what());
+      return 2;
+    }
+    if (const int rc = runner->run(steps); rc != 0) return rc;
+  }
   for (const Request& rq_spec : requests) {
     // As rmw_fastrtps_cpp's client: request writer and reply reader (services' default QoS); the
     // reply reader's GUID in each request's related_sample_identity; replies matched by theirs.
@@ -775,6 +497,8 @@ int main(int argc, char** argv) {
                              {"last", s.count ? s.last_sample : json(nullptr)}}.dump().c_str());
   }
   for (const Pub& p : pubs) std::printf("%s\n", json{{"topic", p.topic}, {"published", p.sent}}.dump().c_str());
+  runner.reset();
+  backend.reset();
   pp->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(pp);
   return 0;
