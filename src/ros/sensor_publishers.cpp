@@ -231,7 +231,7 @@ SensorPublishers::SensorPublishers(::ros::NodeHandle root, SimBridge& bridge)
       // no bias to learn, so, as theirs, it answers at once.
       if (const auto* imu = std::get_if<description::ImuSpec>(&spec.details); imu && !imu->service_name.empty())
         services_.push_back(root_.advertiseService<std_srvs::Empty::Request, std_srvs::Empty::Response>(
-            imu->service_name, [](std_srvs::Empty::Request&, std_srvs::Empty::Response&) { return true; }));
+            imu->service_name, +[](std_srvs::Empty::Request&, std_srvs::Empty::Response&) { return true; }));
     } else if (kind == "contact") {
       o.kind = Kind::Contacts;
       o.triggers.push_back(advertise<gazebo_msgs::ContactsState>(root_, topic, 10, o));

@@ -33,6 +33,7 @@
 #include <mechsim_ros2_msgs/humble/rmw_dds_common.hpp>
 #include <mechsim_ros2_msgs/jazzy/rmw_dds_common.hpp>
 
+#include "ros2/fastdds_types.hpp"
 #include "ros2/message_codec.hpp"
 
 namespace mechsim::ros2 {
@@ -41,128 +42,14 @@ namespace dds = eprosima::fastdds::dds;
 namespace rtps = eprosima::fastrtps::rtps;
 using eprosima::fastrtps::types::ReturnCode_t;
 
-const char* distro_name(Distro distro) { return distro == Distro::Humble ? "humble" : "jazzy"; }
-
-std::optional<Distro> parse_distro(const std::string& name) {
-  if (name == "humble") return Distro::Humble;
-  if (name == "jazzy") return Distro::Jazzy;
-  return std::nullopt;
-}
-
-std::string guid_string(const Guid& g) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%02x%02x%02x%02x.%02x%02x%02x%02x.%02x%02x%02x%02x:%02x%02x%02x%02x", g[0], g[1],
-                g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], g[14], g[15]);
-  return text;
-}
-
-ParticipantOptions options_from_environment(Distro distro) {
-  ParticipantOptions o;
-  o.distro = distro;
-  if (const char* id = std::getenv("ROS_DOMAIN_ID"); id != nullptr && *id != '\0') {
-    char* end = nullptr;
-    errno = 0;
-    const long value = std::strtol(id, &end, 10);
-    if (end == id || *end != '\0' || errno != 0 || value < 0 || value > 232) {
-      throw std::runtime_error(std::string("ROS_DOMAIN_ID '") + id +
-                               "' is not a domain id (an integer 0..232; 0..101 and 215..232 are safe for UDP ports)");
-    }
-    o.domain_id = static_cast<int>(value);
-  }
-  if (const char* only = std::getenv("ROS_LOCALHOST_ONLY"); only != nullptr && std::strcmp(only, "1") == 0) {
-    o.localhost_only = true;
-  }
-  if (const char* range = std::getenv("ROS_AUTOMATIC_DISCOVERY_RANGE"); range != nullptr && *range != '\0') {
-    const std::string r = range;
-    if (r == "LOCALHOST") {
-      o.localhost_only = true;
-    } else if (r != "SUBNET" && r != "SYSTEM_DEFAULT") {
-      throw std::runtime_error("ROS_AUTOMATIC_DISCOVERY_RANGE '" + r +
-                               "' is not supported by mechsim (LOCALHOST, SUBNET or SYSTEM_DEFAULT)");
-    }
-  }
-  return o;
-}
+using fastdds_types::CdrType;
+using fastdds_types::from_guid;
+using fastdds_types::InSample;
+using fastdds_types::policy_name;
+using fastdds_types::to_guid;
+using fastdds_types::to_identity;
 
 namespace {
-
-Guid to_guid(const rtps::GUID_t& g) {
-  Guid out{};
-  std::memcpy(out.data(), g.guidPrefix.value, 12);
-  std::memcpy(out.data() + 12, g.entityId.value, 4);
-  return out;
-}
-
-rtps::GUID_t from_guid(const Guid& g) {
-  rtps::GUID_t out;
-  std::memcpy(out.guidPrefix.value, g.data(), 12);
-  std::memcpy(out.entityId.value, g.data() + 12, 4);
-  return out;
-}
-
-SampleIdentity to_identity(const rtps::SampleIdentity& id) {
-  SampleIdentity out;
-  out.writer = to_guid(id.writer_guid());
-  out.sequence = static_cast<std::int64_t>(id.sequence_number().to64long());
-  return out;
-}
-
-const char* policy_name(dds::QosPolicyId_t id) {
-  switch (id) {
-    case dds::RELIABILITY_QOS_POLICY_ID: return "reliability";
-    case dds::DURABILITY_QOS_POLICY_ID: return "durability";
-    case dds::DEADLINE_QOS_POLICY_ID: return "deadline";
-    case dds::LIVELINESS_QOS_POLICY_ID: return "liveliness";
-    case dds::OWNERSHIP_QOS_POLICY_ID: return "ownership";
-    case dds::DESTINATIONORDER_QOS_POLICY_ID: return "destination order";
-    case dds::LATENCYBUDGET_QOS_POLICY_ID: return "latency budget";
-    case dds::PRESENTATION_QOS_POLICY_ID: return "presentation";
-    case dds::DATAREPRESENTATION_QOS_POLICY_ID: return "data representation";
-    default: return "another policy";
-  }
-}
-
-// What a serialized sample of mechsim looks like to Fast DDS: one type per DDS type name. A sample
-// written is an OutMessage (type-erased generated code); a sample read is its bytes (InSample),
-// deserialized by the subscription itself so that a malformed one is reported with its topic.
-struct InSample {
-  std::vector<std::uint8_t> bytes;
-};
-
-class CdrType final : public dds::TopicDataType {
- public:
-  explicit CdrType(const std::string& name) {
-    setName(name.c_str());
-    m_typeSize = 512;  // an initial payload size; payloads grow as samples need (realloc pools)
-    m_isGetKeyDefined = false;
-    // No XTypes type information, as rmw_fastrtps and rmw_cyclonedds announce none: matching
-    // goes by the type name.
-    auto_fill_type_object(false);
-    auto_fill_type_information(false);
-  }
-  bool serialize(void* data, rtps::SerializedPayload_t* payload) override {
-    const auto* m = static_cast<const OutMessage*>(data);
-    try {
-      payload->length = static_cast<std::uint32_t>(m->write(m->message, reinterpret_cast<char*>(payload->data), payload->max_size));
-    } catch (const std::exception&) {
-      return false;
-    }
-    payload->encapsulation = CDR_LE;
-    return true;
-  }
-  bool deserialize(rtps::SerializedPayload_t* payload, void* data) override {
-    auto* s = static_cast<InSample*>(data);
-    s->bytes.assign(payload->data, payload->data + payload->length);
-    return true;
-  }
-  std::function<std::uint32_t()> getSerializedSizeProvider(void* data) override {
-    const auto* m = static_cast<const OutMessage*>(data);
-    return [m] { return static_cast<std::uint32_t>(m->size(m->message)); };
-  }
-  void* createData() override { return new InSample(); }
-  void deleteData(void* data) override { delete static_cast<InSample*>(data); }
-  bool getKey(void*, rtps::InstanceHandle_t*, bool) override { return false; }
-};
 
 // Reliable writers announce what they hold this often (Fast DDS's default: 3 s). A peer that
 // matched the writer after its first heartbeat (discovery is not symmetric: one side may match
