@@ -26,7 +26,7 @@ bool has_node(const nlohmann::json& graph, const std::string& ns, const std::str
 TEST_P(PeerWire, FastDdsDecodesEveryTopic) {
   start_ros2bot();
   auto subs = ros2bot_subscriptions();
-  subs.insert(subs.end(), {"--seconds", "4", "--sub", "ros_discovery_info=graph"});
+  subs.insert(subs.end(), {"--seconds", "6", "--sub", "ros_discovery_info=graph"});  // as CycloneWire
   const auto lines = run_fastdds(GetParam(), subs);
   stop_mechsim();
   expect_ros2bot_topics(lines);
@@ -39,7 +39,7 @@ TEST_P(PeerWire, FastDdsDecodesEveryTopic) {
 TEST_P(PeerWire, FoxgloveDecodesEveryTopic) {
   start_ros2bot();
   auto subs = ros2bot_subscriptions();
-  subs.insert(subs.end(), {"--seconds", "5", "--sub", "ros_discovery_info=graph", "--save-png", dir_ + "/front_camera.png"});
+  subs.insert(subs.end(), {"--seconds", "6", "--sub", "ros_discovery_info=graph", "--save-png", dir_ + "/front_camera.png"});
   std::string skip;
   const auto lines = run_foxglove(GetParam(), subs, &skip);
   if (!skip.empty()) GTEST_SKIP() << skip;
