@@ -34,21 +34,22 @@ else
 fi
 cmake --build "$build" -j "${MECHSIM_JOBS:-2}" --target "${targets[@]}"
 
-shared=../shared
+shared=../shared  # absent on a machine without the shared data: its seeds are skipped (an `if`, not
+                  # `[[ ]] &&`: a false test would end the pipeline, and with it this script, under pipefail)
 # Seeds beyond the regression inputs: files each target reads in real use.
 seed() {
   local name=$1 corpus=$2
   case "$name" in
     xacro_fuzz)
       find robots -name '*.xacro' -o -name '*.urdf' 2>/dev/null | head -200
-      [[ -d $shared ]] && find "$shared/conformance/xacro" "$shared/robots" -name '*.xacro' -size -200k 2>/dev/null | head -400 ;;
+      if [[ -d $shared ]]; then find "$shared/conformance/xacro" "$shared/robots" -name '*.xacro' -size -200k 2>/dev/null | head -400; fi ;;
     urdf_fuzz | mjcf_fuzz)
       find robots -name '*.urdf' 2>/dev/null
-      [[ -d $shared ]] && find "$shared/robots/reference" -name '*.urdf' 2>/dev/null ;;
+      if [[ -d $shared ]]; then find "$shared/robots/reference" -name '*.urdf' 2>/dev/null; fi ;;
     scenario_fuzz) find robots -path '*scenarios*' -name '*.yaml' 2>/dev/null ;;
     controllers_fuzz)
       find robots -name '*.yaml' -not -path '*scenarios*' 2>/dev/null
-      [[ -d $shared ]] && find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100 ;;
+      if [[ -d $shared ]]; then find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100; fi ;;
   esac | while read -r f; do cp -f "$f" "$corpus/seed_$(basename "$(dirname "$f")")_$(basename "$f")"; done
   case "$name" in
     sweep_fuzz)
@@ -63,7 +64,7 @@ seed() {
     xmlrpc_fuzz)
       # The controller YAMLs as the parameter server returns them: an XML-RPC <value>.
       { find robots -name '*.yaml' -not -path '*scenarios*' -not -path '*sweeps*' 2>/dev/null
-        [[ -d $shared ]] && find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100; } |
+        if [[ -d $shared ]]; then find "$shared/robots" -path '*config*' -name '*.yaml' 2>/dev/null | head -100; fi; } |
         while read -r f; do
           /usr/bin/python3 -c 'import sys, yaml, xmlrpc.client
 v = yaml.safe_load(open(sys.argv[1]))
