@@ -313,7 +313,6 @@ void Simulation::build_robot(control::Params controller_params) {
   startup_times_.sensors = timer.lap();
 }
 
-
 Simulation::~Simulation() = default;
 
 void Simulation::add_reflected_inertia_for_safety_limits() {
