@@ -89,6 +89,18 @@ struct ActionStats {
   std::uint64_t results_dropped = 0;  // get_result requests whose client was gone
   std::size_t goals_held = 0;         // goals not expired yet (active or ended)
   std::size_t results_waiting = 0;    // get_result requests waiting for their goal
+  ActionStats& operator+=(const ActionStats& o) {  // several servers' (a model's, the world's)
+    accepted += o.accepted;
+    rejected += o.rejected;
+    succeeded += o.succeeded;
+    canceled += o.canceled;
+    aborted += o.aborted;
+    results_sent += o.results_sent;
+    results_dropped += o.results_dropped;
+    goals_held += o.goals_held;
+    results_waiting += o.results_waiting;
+    return *this;
+  }
 };
 
 // What the poller polls.

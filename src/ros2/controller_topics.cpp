@@ -282,18 +282,7 @@ ActionStats SimNode::action_stats() const {
       if (b->action.stats) each.push_back(b->action.stats);
   }
   ActionStats sum;
-  for (const auto& f : each) {
-    const ActionStats a = f();
-    sum.accepted += a.accepted;
-    sum.rejected += a.rejected;
-    sum.succeeded += a.succeeded;
-    sum.canceled += a.canceled;
-    sum.aborted += a.aborted;
-    sum.results_sent += a.results_sent;
-    sum.results_dropped += a.results_dropped;
-    sum.goals_held += a.goals_held;
-    sum.results_waiting += a.results_waiting;
-  }
+  for (const auto& f : each) sum += f();
   return sum;
 }
 

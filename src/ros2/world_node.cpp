@@ -92,18 +92,7 @@ std::uint64_t WorldNode::clock_messages() const { return outbox_->stats().clocks
 ActionStats WorldNode::action_stats() const {
   std::lock_guard<std::mutex> lock(nodes_mutex_);
   ActionStats sum;
-  for (const auto& [name, node] : nodes_) {
-    const ActionStats a = node->action_stats();
-    sum.accepted += a.accepted;
-    sum.rejected += a.rejected;
-    sum.succeeded += a.succeeded;
-    sum.canceled += a.canceled;
-    sum.aborted += a.aborted;
-    sum.results_sent += a.results_sent;
-    sum.results_dropped += a.results_dropped;
-    sum.goals_held += a.goals_held;
-    sum.results_waiting += a.results_waiting;
-  }
+  for (const auto& [name, node] : nodes_) sum += node->action_stats();
   return sum;
 }
 
