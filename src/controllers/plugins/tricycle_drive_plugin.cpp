@@ -100,17 +100,10 @@ void TricycleDrivePlugin::starting(double time) {
 
 void TricycleDrivePlugin::publish_odometry(double time) noexcept {
   odom_.publish_from_rt([&](OdometrySnapshot& o) {
-    if (!encoder_) {
+    if (encoder_)
+      fill_encoder_odometry(o, encoder_odometry_, time);
+    else
       fill_world_odometry(o, *base_, time);
-      return;
-    }
-    o.stamp = time;
-    o.x = encoder_odometry_.pose.x;
-    o.y = encoder_odometry_.pose.y;
-    o.yaw = std::remainder(encoder_odometry_.pose.yaw, 2.0 * M_PI);
-    o.linear = {encoder_odometry_.linear, 0.0, 0.0};
-    o.angular = {0.0, 0.0, encoder_odometry_.angular};
-    o.valid = true;
   });
 }
 

@@ -38,4 +38,14 @@ OdometrySnapshot plugin_odometry_prototype(const std::string& frame_id, const st
   return o;
 }
 
+void fill_encoder_odometry(OdometrySnapshot& o, const EncoderOdometry& e, double time) noexcept {
+  o.stamp = time;
+  o.x = e.pose.x;
+  o.y = e.pose.y;
+  o.yaw = std::remainder(e.pose.yaw, 2.0 * M_PI);
+  o.linear = {e.linear, 0.0, 0.0};
+  o.angular = {0.0, 0.0, e.angular};
+  o.valid = true;
+}
+
 }  // namespace mechsim::control

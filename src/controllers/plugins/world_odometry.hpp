@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+#include "controllers/drive/diff_drive_kinematics.hpp"  // EncoderOdometry
 #include "controllers/drive/rover_drive_ports.hpp"  // OdometrySnapshot
 #include "mechanism/base_state.hpp"
 
@@ -18,6 +19,10 @@ double yaw_of(const description::Quat& q) noexcept;
 // Fills `o` with the base's world pose (position with z, attitude) and twist: linear.x/y the
 // world velocity rotated by -yaw, angular.z the world angular velocity's z. in_world is set.
 void fill_world_odometry(OdometrySnapshot& o, const mechanism::BaseState& base, double time) noexcept;
+
+// Fills `o` with the wheels' odometry (odometrySource "encoder" of the diff and tricycle drives):
+// the integrated planar pose, yaw wrapped to (-pi, pi], the body twist along x and about z.
+void fill_encoder_odometry(OdometrySnapshot& o, const EncoderOdometry& e, double time) noexcept;
 
 // A prototype snapshot with frames and a pose covariance diagonal (x, y, z, roll, pitch, yaw) and a
 // twist one (zeros when not given).
